@@ -133,10 +133,10 @@ def _choose_domain(coeffs: Sequence[sp.Expr], params: Sequence[sp.Symbol]):
     """An exact sympy domain for ``coeffs`` (QQ, QQ<theta>, K[params] or K(params))."""
     if not params:
         dom, _ = construct_domain(list(coeffs), extension=True)
-        if dom.is_EX or dom.is_EXRAW:
-            bad = next((c for c in coeffs if not c.is_algebraic), coeffs[0])
+        if dom.is_EX or dom.is_EXRAW or dom.is_PolynomialRing or dom.is_FractionField:
+            bad = next((c for c in coeffs if c.is_algebraic is not True), coeffs[0])
             raise AnalysisError(f"coefficient {sp.sstr(bad)} is not an exact algebraic number")
-        return dom
+        return sp.QQ if dom.is_ZZ else dom
     # collect the numeric (algebraic) constants that multiply monomials in the parameters
     numeric: list[sp.Expr] = []
     polynomial = True
@@ -152,7 +152,7 @@ def _choose_domain(coeffs: Sequence[sp.Expr], params: Sequence[sp.Symbol]):
                     f"coefficient {sp.sstr(c)} is not a rational function of the parameters "
                     f"{', '.join(p.name for p in params)}") from None
     ground, _ = construct_domain(numeric or [sp.Integer(1)], extension=True)
-    if ground.is_EX or ground.is_EXRAW:
+    if ground.is_EX or ground.is_EXRAW or ground.is_PolynomialRing or ground.is_FractionField:
         bad = next((c for c in numeric if not c.is_algebraic), numeric[0])
         raise AnalysisError(f"constant {sp.sstr(bad)} in a coefficient is not an exact algebraic number")
     if ground.is_ZZ:
@@ -310,14 +310,15 @@ class LaurentSymbol:
                 raise AnalysisError(f"cannot read the symbol {expr!r}") from None
         expr = sp.expand(sp.sympify(expr))
         num, den = sp.fraction(sp.together(expr))
-        den_poly = sp.Poly(den, Z) if den.has(Z) else None
-        shift = 0
-        if den_poly is not None:
-            if len(den_poly.terms()) != 1:
-                raise AnalysisError("the symbol must be a Laurent polynomial in z "
-                                    "(only powers of z may divide)")
-            shift = -den_poly.monoms()[0][0]
-            num = num / den_poly.coeffs()[0]
+        try:
+            den_poly = sp.Poly(den, Z)
+        except PolynomialError:
+            raise AnalysisError("the symbol must be a Laurent polynomial in z") from None
+        if len(den_poly.terms()) != 1:
+            raise AnalysisError("the symbol must be a Laurent polynomial in z "
+                                "(only powers of z may divide)")
+        shift = -den_poly.monoms()[0][0]
+        num = num / den_poly.coeffs()[0]
         num = sp.expand(num)
         try:
             p = sp.Poly(num, Z)
@@ -562,7 +563,7 @@ class LaurentSymbol:
         return f"LaurentSymbol([{coeffs}], start={self.start}, domain={self.domain})"
 
     def __str__(self) -> str:
-        return sp.sstr(self.expr(), order="none") if not self.is_zero else "0"
+        return self.pretty()
 
     def pretty(self) -> str:
         """Plain text ``a(z) = ...`` in increasing powers of z."""
@@ -570,7 +571,7 @@ class LaurentSymbol:
         for i, c in self.items():
             if c == 0:
                 continue
-            cs = sp.sstr(sp.factor_terms(c))
+            cs = sp.sstr(c)
             if isinstance(c, sp.Add):
                 cs = f"({cs})"
             zp = "" if i == 0 else ("z" if i == 1 else f"z^{i}" if i > 0 else f"z^({i})")

@@ -1,0 +1,18 @@
+"""The catalogue of named binary subdivision schemes.
+
+``get(slug)`` returns a :class:`~schemes.catalogue.SchemeEntry` (symbol, parameters, source,
+notes); ``names()`` lists the slugs and ``entries()`` the entries. Classic schemes are in
+:mod:`schemes.classic`, each paper's schemes (and later its claims) in a module of its own.
+
+Examples
+--------
+>>> import schemes
+>>> schemes.get("chaikin").symbol.mask
+(1/4, 3/4, 3/4, 1/4)
+>>> len(schemes.names()) == len(schemes.entries())
+True
+"""
+
+from .catalogue import SchemeEntry, entries, get, names
+
+__all__ = ["SchemeEntry", "entries", "get", "names"]

@@ -1,0 +1,106 @@
+"""Classic binary schemes: B-splines of degree 1..7, Chaikin, the Dyn–Levin–Gregory 4-point
+scheme.
+
+Examples
+--------
+>>> from schemes import get
+>>> get("bspline-2").symbol                 # centred: z^(-1) (1+z)^3 / 4
+LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-1, domain=QQ)
+>>> get("chaikin").symbol                   # the classical rules' indexing: one step to the left
+LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
+>>> print(get("four-point").stencils)
+f[2i]   = 1 f[i]
+f[2i+1] = -w f[i-1] + (w + 1/2) f[i] + (w + 1/2) f[i+1] - w f[i+2]
+
+References
+----------
+C. de Boor, *A Practical Guide to Splines*, Springer 1978 (rev. 2001).
+J. M. Lane, R. F. Riesenfeld, *A theoretical development for the computer generation and display
+of piecewise polynomial surfaces*, IEEE TPAMI 2 (1980) 35-46.
+G. M. Chaikin, *An algorithm for high-speed curve generation*, Computer Graphics and Image
+Processing 3 (1974) 346-349.
+N. Dyn, D. Levin, J. A. Gregory, *A 4-point interpolatory subdivision scheme for curve design*,
+Computer Aided Geometric Design 4 (1987) 257-268.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from analysis.symbol import LaurentSymbol, Rules, Z
+
+from .catalogue import SchemeEntry
+
+#: Degrees of the catalogued B-spline schemes.
+BSPLINE_DEGREES = range(1, 8)
+
+_ORDINAL = {1: "linear", 2: "quadratic", 3: "cubic", 4: "quartic", 5: "quintic", 6: "sextic",
+            7: "septic"}
+
+
+def bspline_symbol(d: int) -> LaurentSymbol:
+    """The centred degree-``d`` B-spline symbol ``(1+z)^(d+1) / (2^d z^floor((d+1)/2))``.
+
+    >>> bspline_symbol(1)
+    LaurentSymbol([1/2, 1, 1/2], start=-1, domain=QQ)
+    """
+    if d < 0:
+        raise ValueError("the degree of a B-spline is non-negative")
+    return LaurentSymbol.from_expr((1 + Z)**(d + 1) / (2**d * Z**((d + 1) // 2)))
+
+
+def _bspline_entry(d: int) -> SchemeEntry:
+    aliases = {1: ("linear-bspline",), 3: ("cubic-bspline",)}.get(d, ())
+    return SchemeEntry(
+        slug=f"bspline-{d}",
+        title=f"{_ORDINAL[d].capitalize()} B-spline (degree {d})",
+        symbol=bspline_symbol(d),
+        params=(),
+        source=("Lane & Riesenfeld, IEEE TPAMI 2 (1980) 35-46; "
+                "de Boor, A Practical Guide to Splines"),
+        notes=(f"a(z) = (1+z)^{d + 1} / (2^{d} z^{(d + 1) // 2}), computed, not typed. "
+               + ("Even degree: the mask has odd length and the centring puts the symmetry centre "
+                  "at c = start+end = 1; schemes indexed like the paper rules "
+                  "f[2i] = ... f[i] + ... "
+                  "f[i+1] (e.g. 'chaikin') are this symbol times z^-1."
+                  if d % 2 == 0 else "Odd degree: symmetric about 0 (a_i = a_-i).")),
+        aliases=aliases,
+    )
+
+
+_W = sp.Symbol("w")
+_HALF = sp.Rational(1, 2)
+_FOUR_POINT_RULES = Rules(even=(sp.Integer(1),), even_first=0,
+                          odd=(-_W, _HALF + _W, _HALF + _W, -_W), odd_first=-1)
+
+#: The classic entries, in catalogue order.
+ENTRIES: tuple[SchemeEntry, ...] = tuple(_bspline_entry(d) for d in BSPLINE_DEGREES) + (
+    SchemeEntry(
+        slug="chaikin",
+        title="Chaikin's corner cutting",
+        symbol=LaurentSymbol.from_mask([sp.Rational(1, 4), sp.Rational(3, 4), sp.Rational(3, 4),
+                                        sp.Rational(1, 4)], start=-2),
+        params=(),
+        source="G. M. Chaikin, Computer Graphics and Image Processing 3 (1974) 346-349",
+        notes=("Rules f[2i] = 3/4 f[i] + 1/4 f[i+1], f[2i+1] = 1/4 f[i] + 3/4 f[i+1] (start -2). "
+               "The same scheme as 'bspline-2' up to the index shift z^-1 "
+               "(the B-spline entries are "
+               "centred with z^floor((d+1)/2)); this indexing is the one of seed 003 rule (1) "
+               "at omega = 0."),
+        stencils=Rules(even=(sp.Rational(3, 4), sp.Rational(1, 4)), even_first=0,
+                       odd=(sp.Rational(1, 4), sp.Rational(3, 4)), odd_first=0),
+    ),
+    SchemeEntry(
+        slug="four-point",
+        title="Dyn-Levin-Gregory interpolatory 4-point scheme",
+        symbol=LaurentSymbol.from_rules(_FOUR_POINT_RULES.even, _FOUR_POINT_RULES.odd,
+                                        even_first=0, odd_first=-1),
+        params=(_W,),
+        source=("N. Dyn, D. Levin, J. A. Gregory, A 4-point interpolatory subdivision scheme for "
+                "curve design, Computer Aided Geometric Design 4 (1987) 257-268"),
+        notes=("Tension w; w = 1/16 reproduces cubics (the Deslauriers-Dubuc scheme); "
+               "w = 0 is the linear B-spline."),
+        defaults={"w": sp.Rational(1, 16)},
+        stencils=_FOUR_POINT_RULES,
+    ),
+)
