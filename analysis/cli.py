@@ -401,7 +401,12 @@ def cmd_list(args) -> None:
 # entry point
 # --------------------------------------------------------------------------------------------
 
-def build_parser() -> argparse.ArgumentParser:
+#: Modules that add sub-commands: each defines ``register(subparsers)`` and uses the helpers above
+#: (``scheme_from_args``, ``_add_scheme_args``, ``_emit``). Listed here once they are complete.
+COMMAND_MODULES: tuple[str, ...] = ()
+
+
+def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
     p = _Parser(prog="subdiv", description="Exact and certified analysis of binary subdivision schemes. "
                 "Convention: (S_a f)_i = sum_j a_{i-2j} f_j, a(z) = sum_i a_i z^i.")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
@@ -447,11 +452,16 @@ def build_parser() -> argparse.ArgumentParser:
     s = sub.add_parser("list", help="the catalogue of named schemes")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_list)
+
+    import importlib
+
+    for name in (*COMMAND_MODULES, *extra_modules):
+        importlib.import_module(name).register(sub)
     return p
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    parser = build_parser()
+def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()) -> int:
+    parser = build_parser(extra_modules)
     try:
         args = parser.parse_args(argv)
         args.func(args)
