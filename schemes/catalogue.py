@@ -26,7 +26,7 @@ True
 >>> get("four-piont")
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown scheme 'four-piont'; did you mean: four-point?
+analysis.result.AnalysisError: unknown scheme 'four-piont'; did you mean: dual-four-point, four-point?
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ import importlib
 import re
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Mapping
+from typing import Callable, Mapping
 
 import sympy as sp
 
@@ -45,7 +45,12 @@ from analysis.symbol import LaurentSymbol, Rules, parse_coefficient
 
 #: Modules that define catalogue entries, each with a module-level ``ENTRIES`` tuple, in the
 #: order in which :func:`names` lists them.
-ENTRY_MODULES = ("schemes.classic", "schemes.seed003", "schemes.seed004")
+ENTRY_MODULES = ("schemes.classic", "schemes.seed003", "schemes.seed004", "schemes.interpolatory",
+                 "schemes.wavelets")
+# A module may also define ``NUMERIC_ENTRIES`` (:class:`NumericSchemeEntry`: masks known only as
+# certified enclosures, or not symmetric, e.g. Daubechies) and ``ALIASES`` (``alias -> slug`` for
+# entries defined elsewhere). Numeric entries are found by :func:`get`; :func:`names` and
+# :func:`entries` list them only with ``numeric=True``.
 
 _SLUG = re.compile(r"^[a-z0-9]+(?:-[a-z0-9]+)*$")
 
@@ -144,11 +149,123 @@ class SchemeEntry:
         return self.symbol_at(**dict(self.defaults))
 
 
+@dataclass(frozen=True)
+class NumericSchemeEntry:
+    """A named scheme whose mask is known as certified enclosures (Arb balls), not exactly.
+
+    Used for masks with irrational coefficients in number fields too large for exact work
+    (Daubechies' D6 ... D40; :mod:`schemes.wavelets`). Duck-compatible with
+    :class:`SchemeEntry` where that makes sense (``slug``, ``title``, ``source``, ``notes``,
+    ``aliases``, ``params == ()``, ``defaults``, ``stencils``); :attr:`symbol` is the exact symbol
+    when one is known and otherwise a one-line :class:`AnalysisError` pointing to
+    :meth:`enclosure`.
+
+    Attributes
+    ----------
+    start, length : int
+        The mask is ``a_start, ..., a_{start+length-1}``.
+    enclosure : callable
+        ``enclosure(prec) -> list[flint.arb]``: real balls, radius ``< 2^-prec``, each containing
+        the true coefficient (``a(1) = 2`` normalisation).
+    exact_symbol : LaurentSymbol or None
+        The exact symbol when known (then it lies in the balls).
+    sum_rules : int or None
+        The number of ``(1+z)/2`` factors of the symbol, when known by construction.
+
+    Examples
+    --------
+    >>> e = get("daubechies-6")
+    >>> e.has_exact_symbol, e.support, e.sum_rules
+    (False, (0, 5), 3)
+    >>> e.enclosure(64)[0]                          # a ball, not a float
+    [0.470467207784164 +/- ...]
+    >>> e.symbol
+    Traceback (most recent call last):
+    ...
+    analysis.result.AnalysisError: scheme 'daubechies-6' has no exact symbol; use .enclosure(prec) (Arb balls), .mask_mpmath(dps) or .mask_float()
+    """
+
+    slug: str
+    title: str
+    source: str
+    start: int
+    length: int
+    enclosure: Callable = field(repr=False, compare=False)
+    notes: str = ""
+    aliases: tuple = ()
+    exact_symbol: LaurentSymbol | None = None
+    sum_rules: int | None = None
+
+    params = ()
+    stencils = None
+
+    def __post_init__(self) -> None:
+        if not _SLUG.match(self.slug):
+            raise ValueError(f"slug {self.slug!r} is not kebab-case")
+        for a in self.aliases:
+            if not _SLUG.match(a):
+                raise ValueError(f"alias {a!r} of {self.slug!r} is not kebab-case")
+        object.__setattr__(self, "aliases", tuple(self.aliases))
+        if self.exact_symbol is not None and self.exact_symbol.support != self.support:
+            raise ValueError(f"{self.slug}: exact symbol support {self.exact_symbol.support} "
+                             f"differs from {self.support}")
+
+    @property
+    def defaults(self) -> Mapping[str, sp.Expr]:
+        return MappingProxyType({})
+
+    @property
+    def param_names(self) -> tuple[str, ...]:
+        return ()
+
+    @property
+    def support(self) -> tuple[int, int]:
+        return (self.start, self.start + self.length - 1)
+
+    @property
+    def has_exact_symbol(self) -> bool:
+        return self.exact_symbol is not None
+
+    @property
+    def symbol(self) -> LaurentSymbol:
+        """The exact symbol, or a one-line :class:`AnalysisError` if there is none."""
+        if self.exact_symbol is None:
+            raise AnalysisError(f"scheme {self.slug!r} has no exact symbol; use .enclosure(prec) "
+                                "(Arb balls), .mask_mpmath(dps) or .mask_float()")
+        return self.exact_symbol
+
+    def symbol_at(self, **values) -> LaurentSymbol:
+        if values:
+            raise AnalysisError(f"scheme {self.slug!r} has no parameter "
+                                f"{', '.join(sorted(values))} (its parameters: none)")
+        return self.symbol
+
+    def default_symbol(self) -> LaurentSymbol:
+        return self.symbol
+
+    def mask_float(self) -> list[float]:
+        """float64 values: midpoints of balls of radius ``< 2^-60`` (within one ulp)."""
+        return [float(b.mid()) for b in self.enclosure(60)]
+
+    def mask_mpmath(self, dps: int = 50) -> list:
+        """mpmath ``mpf`` values accurate to about ``dps`` digits (exact ball midpoints)."""
+        import mpmath
+
+        prec = int(dps * 3.33) + 20
+        out = []
+        with mpmath.workprec(prec + 64):
+            for b in self.enclosure(prec):
+                man, exp = b.mid().man_exp()
+                out.append(mpmath.ldexp(mpmath.mpf(int(man)), int(exp)))
+        return out
+
+
 # --------------------------------------------------------------------------------------------
 # the registry
 # --------------------------------------------------------------------------------------------
 
 _REGISTRY: dict[str, SchemeEntry] | None = None
+_NUMERIC: dict[str, NumericSchemeEntry] = {}
 _ALIASES: dict[str, str] = {}
 
 
@@ -156,46 +273,75 @@ def _registry() -> dict[str, SchemeEntry]:
     global _REGISTRY
     if _REGISTRY is None:
         reg: dict[str, SchemeEntry] = {}
+        numeric: dict[str, NumericSchemeEntry] = {}
         aliases: dict[str, str] = {}
+        extra: dict[str, str] = {}
         for modname in ENTRY_MODULES:
-            for e in importlib.import_module(modname).ENTRIES:
-                if e.slug in reg or e.slug in aliases:
+            module = importlib.import_module(modname)
+            for e in tuple(module.ENTRIES) + tuple(getattr(module, "NUMERIC_ENTRIES", ())):
+                if e.slug in reg or e.slug in numeric or e.slug in aliases:
                     raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {modname}")
-                reg[e.slug] = e
+                (numeric if isinstance(e, NumericSchemeEntry) else reg)[e.slug] = e
                 for a in e.aliases:
                     if a in reg or a in aliases:
                         raise RuntimeError(f"alias {a!r} of {e.slug!r} is already taken")
                     aliases[a] = e.slug
-        clash = set(aliases) & set(reg)
+            for a, target in dict(getattr(module, "ALIASES", {})).items():
+                if not _SLUG.match(a) or a in extra:
+                    raise RuntimeError(f"bad or duplicate alias {a!r} in {modname}")
+                extra[a] = target
+        for a, target in extra.items():
+            if target not in reg and target not in numeric:
+                raise RuntimeError(f"alias {a!r} points to unknown scheme {target!r}")
+            if a in aliases:
+                raise RuntimeError(f"alias {a!r} of {target!r} is already taken")
+            aliases[a] = target
+        clash = set(aliases) & (set(reg) | set(numeric))
         if clash:
             raise RuntimeError(f"aliases shadow slugs: {sorted(clash)}")
         _ALIASES.clear()
         _ALIASES.update(aliases)
+        _NUMERIC.clear()
+        _NUMERIC.update(numeric)
         _REGISTRY = reg
     return _REGISTRY
 
 
-def names(*, aliases: bool = False) -> list[str]:
+def names(*, aliases: bool = False, numeric: bool = False) -> list[str]:
     """The slugs of all entries, in catalogue order (with ``aliases=True`` also the aliases).
+
+    With ``numeric=True`` the :class:`NumericSchemeEntry` slugs (Daubechies) follow the exact
+    entries; aliases of numeric entries are listed only then.
 
     >>> "four-point" in names() and "chaikin" in names()
     True
     >>> "cubic-bspline" in names(), "cubic-bspline" in names(aliases=True)
     (False, True)
+    >>> "daubechies-4" in names(), "daubechies-4" in names(numeric=True)
+    (False, True)
     """
-    out = list(_registry())
+    reg = _registry()
+    out = list(reg)
+    if numeric:
+        out += list(_NUMERIC)
     if aliases:
-        out += list(_ALIASES)
+        out += [a for a, t in _ALIASES.items() if numeric or t in reg]
     return out
 
 
-def entries() -> list[SchemeEntry]:
-    """All entries, in catalogue order.
+def entries(*, numeric: bool = False) -> list:
+    """All entries with an exact symbol, in catalogue order (``numeric=True``: then the
+    :class:`NumericSchemeEntry` ones).
 
     >>> all(e.symbol(1) == 2 for e in entries())
     True
+    >>> all(sum(e.enclosure(53)).contains(2) for e in entries(numeric=True)[len(entries()):])
+    True
     """
-    return list(_registry().values())
+    out: list = list(_registry().values())
+    if numeric:
+        out += list(_NUMERIC.values())
+    return out
 
 
 def get(slug: str) -> SchemeEntry:
@@ -214,9 +360,12 @@ def get(slug: str) -> SchemeEntry:
     key = str(slug).strip().lower()
     if key in reg:
         return reg[key]
+    if key in _NUMERIC:
+        return _NUMERIC[key]
     if key in _ALIASES:
-        return reg[_ALIASES[key]]
-    candidates = list(reg) + list(_ALIASES)
+        target = _ALIASES[key]
+        return reg[target] if target in reg else _NUMERIC[target]
+    candidates = list(reg) + list(_NUMERIC) + list(_ALIASES)
     close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
     if not close:
         close = [c for c in candidates if key and (key in c or c in key)][:5]

@@ -61,3 +61,69 @@ ENTRIES: tuple[SchemeEntry, ...] = (
         stencils=RULE_1,
     ),
 )
+
+
+# --------------------------------------------------------------------------------------------
+# the level-dependent forms (2), (3) and their normalizations (4), (5)
+# --------------------------------------------------------------------------------------------
+
+from analysis.levels import H, N, LevelDependentScheme  # noqa: E402
+
+#: the angle parameter of the trigonometric/hyperbolic forms (positive)
+ALPHA = sp.Symbol("alpha", positive=True)
+
+_SOURCE = ("W. us Salam, S. S. Siddiqi, K. Rehan, Alexandria Engineering Journal (2016), "
+           "doi:10.1016/j.aej.2016.07.002, seed 003")
+
+#: beta_i^n as printed (trigonometric form (2)), functions of the level n.
+BETA = (-7 * OMEGA,
+        sp.sin(3 * ALPHA / 2 ** (N + 2)) / sp.sin(ALPHA / 2 ** N) + 9 * OMEGA,
+        sp.sin(ALPHA / 2 ** (N + 2)) / sp.sin(ALPHA / 2 ** N) + 3 * OMEGA,
+        -5 * OMEGA)
+#: gamma_i^n as printed (hyperbolic form (3)).
+GAMMA = (-7 * OMEGA,
+         sp.sinh(3 * ALPHA / 2 ** (N + 2)) / sp.sinh(ALPHA / 2 ** N) + 9 * OMEGA,
+         sp.sinh(ALPHA / 2 ** (N + 2)) / sp.sinh(ALPHA / 2 ** N) + 3 * OMEGA,
+         -5 * OMEGA)
+
+
+def _form(coeffs, slug, title, eq) -> LevelDependentScheme:
+    b0, b1, b2, b3 = coeffs
+    return LevelDependentScheme.from_rules(
+        even=[b0, b1, b2, b3], odd=[b3, b2, b1, b0], first=-1, params=(ALPHA, OMEGA), slug=slug,
+        title=title, source=f"{_SOURCE}, rule ({eq})",
+        notes="stencils on f_{i-1..i+2} (first offset -1), as rule (1); h = 2^-n",
+        defaults={"alpha": sp.pi / 5, "omega": sp.Rational(1, 100)})
+
+
+#: Scheme (2): the trigonometric form.
+TRIGONOMETRIC = _form(BETA, "seed003-trigonometric", "trigonometric Chaikin perturbation", 2)
+#: Scheme (3): the hyperbolic form.
+HYPERBOLIC = _form(GAMMA, "seed003-hyperbolic", "hyperbolic Chaikin perturbation", 3)
+#: The stencil sums as the paper prints them (Section 4): beta^n = c(a/2^{n+2})/c(a/2^{n+1}),
+#: gamma^n = c'(a/2^{n+2})/c'(a/2^{n+1}). Proven equal to the sums of (2), (3) in
+#: ``tests/test_bounds.py`` (analysis.bounds.check_identity), so (4), (5) divide by them.
+BETA_SUM = sp.cos(ALPHA / 2 ** (N + 2)) / sp.cos(ALPHA / 2 ** (N + 1))
+GAMMA_SUM = sp.cosh(ALPHA / 2 ** (N + 2)) / sp.cosh(ALPHA / 2 ** (N + 1))
+
+
+def _normalized(form: LevelDependentScheme, total, slug, eq) -> LevelDependentScheme:
+    return LevelDependentScheme(tuple(c / total for c in form.mask), form.start, form.params,
+                                slug=slug, title=f"normalized {form.title}",
+                                source=f"{_SOURCE}, rule ({eq})",
+                                notes="rule (" + str(eq - 2) + ") divided by its stencil sum",
+                                defaults=form.defaults)
+
+
+#: Scheme (4): (2) divided by its stencil sum.
+TRIGONOMETRIC_NORMALIZED = _normalized(TRIGONOMETRIC, BETA_SUM, "seed003-trigonometric-normalized", 4)
+#: Scheme (5): (3) divided by its stencil sum.
+HYPERBOLIC_NORMALIZED = _normalized(HYPERBOLIC, GAMMA_SUM, "seed003-hyperbolic-normalized", 5)
+
+#: The level-dependent schemes of the paper, by slug.
+LEVEL_ENTRIES: dict[str, LevelDependentScheme] = {
+    "seed003-trigonometric": TRIGONOMETRIC,
+    "seed003-hyperbolic": HYPERBOLIC,
+    "seed003-trigonometric-normalized": TRIGONOMETRIC_NORMALIZED,
+    "seed003-hyperbolic-normalized": HYPERBOLIC_NORMALIZED,
+}

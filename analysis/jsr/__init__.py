@@ -1,0 +1,556 @@
+"""Joint spectral radius (JSR) of a finite family of real square matrices, with certificates.
+
+``JSR(A_0, ..., A_{k-1}) = lim_L max_{|w| = L} ||A_{w_1} ... A_{w_L}||^(1/L)``. For a binary
+subdivision scheme with difference mask ``c`` and transition matrices ``T_0, T_1``, the Hölder
+exponent is ``alpha = k - log2 JSR(T_0, T_1)`` (see ``DESIGN.md``).
+
+Main entry point: :func:`jsr_bounds` returns a :class:`~analysis.result.Result` with a rigorous
+interval ``[lower, upper]`` (sympy Rationals), a status, the witness product and polytope, and
+provenance.
+
+Examples
+--------
+The classic pair whose JSR is the golden ratio, attained by ``A_0 A_1`` (length 2):
+
+>>> r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], budget_seconds=5)
+>>> r.status, r.witness["product"], r.witness["length"], r.witness["closed"]
+('certified', (0, 1), 2, True)
+>>> import sympy as sp
+>>> phi = (1 + sp.sqrt(5)) / 2
+>>> bool(r.lower <= phi <= r.upper), float(r.upper / r.lower - 1) < 1e-12
+(True, True)
+
+Float input gives the same numbers but the status ``numerical`` (the floats are taken as the
+binary rationals they are only with ``floats_exact=True``):
+
+>>> import numpy as np
+>>> jsr_bounds([np.array([[0.5, 0.25], [0.0, 0.5]])]).status
+'numerical'
+>>> jsr_bounds([np.array([[0.5, 0.25], [0.0, 0.5]])], floats_exact=True).status
+'certified'
+
+Algorithm (``method="auto"``)
+-----------------------------
+1. Exact reductions: duplicates are removed; a single matrix has ``JSR = rho``; a common
+   block-triangular structure (strongly connected components of the union of the sparsity
+   patterns, as in Mejstrik 2020) splits the family into diagonal blocks with
+   ``JSR = max_b JSR(block_b)``; an exactly commuting family has ``JSR = max_i rho(A_i)``.
+2. Lower bound: a Gripenberg-type branch and bound for spectrum-maximizing products
+   (:func:`analysis.jsr._search.smp_search`); the best word ``w`` gives
+   ``JSR >= rho(P_w)^(1/|w|)``, certified from isolated roots of the exact characteristic
+   polynomial (FLINT) or Arb eigenvalue enclosures.
+3. Upper bound: the invariant polytope algorithm (Guglielmi–Protasov 2013; Mejstrik 2020),
+   real symmetric case, started from the leading eigenvectors of every candidate product within
+   ``1e-9`` of the best (several s.m.p.s; complex leading eigenvalues enter through the real and
+   imaginary parts of their eigenvectors). Restarts when a vertex path reveals a better product.
+4. Certificate: every membership ``A_i v_j / r in absconv(V)`` is re-checked exactly
+   (:func:`analysis.jsr._polytope.certify_polytope`), giving ``JSR <= r * c`` rigorously.
+5. If the polytope does not close: the same algorithm for ``A_i / (r (1 + eps))`` with
+   decreasing ``eps`` (a certified ``upper <= rho (1 + eps) c``), and always the rigorous
+   norm bound ``max_{|w|=l} ||P_w||^(1/l)`` in a balanced basis, in Arb ball arithmetic.
+
+``method="polytope"`` skips step 1's structural shortcuts (not the single-matrix case);
+``method="norms"`` is the textbook method: exhaustive products up to ``max_length``.
+
+References
+----------
+G.-C. Rota, G. Strang, *A note on the joint spectral radius*, Indag. Math. 22 (1960) 379-381.
+G. Gripenberg, *Computing the joint spectral radius*, Linear Algebra Appl. 234 (1996) 43-60.
+N. Guglielmi, V. Yu. Protasov, *Exact computation of joint spectral characteristics of linear
+operators*, Found. Comput. Math. 13 (2013) 37-97.
+T. Mejstrik, *Algorithm 1011: Improved invariant polytope algorithm and applications*, ACM Trans.
+Math. Softw. 46(3) (2020) 29.
+R. Jungers, *The joint spectral radius: theory and applications*, LNCIS 385, Springer 2009.
+"""
+
+from __future__ import annotations
+
+import itertools
+import math
+import time
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Sequence
+
+import numpy as np
+import sympy as sp
+from flint import arb, arb_mat, fmpq, fmpq_mat
+
+from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
+from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_expression,
+                     parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
+from ._polytope import build_polytope, certify_polytope, leading_is_real, leading_roots
+from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
+
+__all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
+
+METHODS = ("auto", "polytope", "norms")
+
+
+@dataclass
+class _Bounds:
+    """Internal: rigorous bounds for the exact family ``F`` (``upper`` may be ``None``)."""
+
+    lower: Fraction
+    upper: Fraction | None
+    word: tuple[int, ...]
+    rho_product: tuple[Fraction, Fraction]
+    method: str
+    arithmetic: str
+    witness: dict = field(default_factory=dict)
+    notes: list[str] = field(default_factory=list)
+
+
+def _time_left(deadline: float) -> float:
+    return deadline - time.perf_counter()
+
+
+def _lower_from_word(F: Family, word: Sequence[int]) -> tuple[Fraction, tuple[Fraction, Fraction]]:
+    lo, hi = rho_enclosure(F, word)
+    return root_lower(lo, len(word)), (lo, hi)
+
+
+def _rho_word(mats: Sequence[np.ndarray], word: Sequence[int]) -> float:
+    """Float ``rho(P_w)^(1/|w|)`` of the canonical rotation of ``w`` (deterministic)."""
+    w = canonical_word(word)
+    P = np.eye(mats[0].shape[0])
+    for i in w:
+        P = P @ mats[i]
+    return float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(w))
+
+
+# --------------------------------------------------------------------------------------------
+# rigorous norm bounds (textbook, in a balanced basis, Arb)
+# --------------------------------------------------------------------------------------------
+
+def _balanced_arb(F: Family) -> list[arb_mat]:
+    """Arb enclosures of ``R A_i R^{-1}`` for a dyadic ``R`` near the sum-of-squares transform."""
+    R, _ = balancing_transform(F.floats)
+    n = F.n
+    Rq = fmpq_mat([[fmpq(*Fraction(float(x)).as_integer_ratio()) for x in row] for row in R])
+    try:
+        Rinv = Rq.inv()
+    except ZeroDivisionError:  # pragma: no cover - R is positive definite
+        Rq = fmpq_mat([[1 if a == b else 0 for b in range(n)] for a in range(n)])
+        Rinv = Rq
+    with arb_precision():
+        Ra, Ria = arb_mat(Rq), arb_mat(Rinv)
+        return [Ra * F.arb(i) * Ria for i in range(F.k)]
+
+
+def _inf_norm_upper(M: arb_mat) -> Fraction:
+    n = M.nrows()
+    with arb_precision():
+        best = Fraction(0)
+        for a in range(n):
+            s = arb(0)
+            for b in range(M.ncols()):
+                s += abs(M[a, b])
+            best = max(best, arb_to_fraction_bounds(s)[1])
+    return best
+
+
+def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
+                        max_products: int = 1 << 14) -> tuple[Fraction, int]:
+    """``min_{l <= L} max_{|w| = l} ||P_w||^(1/l)`` (rigorous, Arb) in a balanced basis; returns
+    ``(bound, l)``. Stops at the time ``deadline`` or when ``k^l`` exceeds ``max_products``, but
+    always completes ``l = 1``."""
+    B = _balanced_arb(F)
+    best = root_upper(max(_inf_norm_upper(M) for M in B), 1)
+    best_l = 1
+    level = B
+    with arb_precision():
+        for l in range(2, max_length + 1):
+            if len(level) * F.k > max_products or _time_left(deadline) <= 0:
+                break
+            new, mx = [], Fraction(0)
+            for P in level:
+                for M in B:
+                    Q = P * M
+                    new.append(Q)
+                    mx = max(mx, _inf_norm_upper(Q))
+                if _time_left(deadline) <= 0:
+                    break
+            else:
+                u = root_upper(mx, l)
+                if u < best:
+                    best, best_l = u, l
+                level = new
+                continue
+            break
+    return best, best_l
+
+
+# --------------------------------------------------------------------------------------------
+# the solvers
+# --------------------------------------------------------------------------------------------
+
+def _arith(F: Family) -> str:
+    return ("exact rational (FLINT fmpq)" if F.exact_q is not None
+            else "Arb ball arithmetic enclosing the exact entries")
+
+
+def _single(F: Family, i: int) -> _Bounds:
+    lo, hi = rho_enclosure(F, (i,))
+    return _Bounds(lo, hi, (i,), (lo, hi), "spectral radius (single matrix)", _arith(F),
+                   {"closed": True, "polytope_vertices": 0})
+
+
+def _blocks(F: Family) -> list[list[int]]:
+    """Strongly connected components of the union sparsity graph (exact zero tests)."""
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    n = F.n
+    adj = np.zeros((n, n), dtype=int)
+    for i in range(F.k):
+        for a in range(n):
+            for b in range(n):
+                if a != b and not F.is_zero_entry(i, a, b):
+                    adj[a, b] = 1
+    nc, labels = connected_components(csr_matrix(adj), directed=True, connection="strong")
+    return [sorted(np.nonzero(labels == c)[0].tolist()) for c in range(nc)]
+
+
+def _commuting(F: Family) -> bool:
+    if F.exact_q is None:
+        return False
+    for i, j in itertools.combinations(range(F.k), 2):
+        if F.exact_q[i] * F.exact_q[j] != F.exact_q[j] * F.exact_q[i]:
+            return False
+    return True
+
+
+def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap: float,
+           max_vertices: int) -> _Bounds:
+    k = F.k
+    if k == 1:
+        return _single(F, 0)
+    if method == "auto":
+        blocks = _blocks(F) if F.n > 1 else [[0]]
+        if len(blocks) > 1:
+            return _solve_blocks(F, blocks, method=method, max_length=max_length,
+                                 deadline=deadline, rel_gap=rel_gap, max_vertices=max_vertices)
+        if _commuting(F):
+            parts = [_single(F, i) for i in range(k)]
+            best = max(parts, key=lambda b: b.lower)
+            up = max(b.upper for b in parts)
+            return _Bounds(best.lower, up, best.word, best.rho_product,
+                           "commuting family: JSR = max_i rho(A_i)", _arith(F),
+                           {"closed": True, "polytope_vertices": 0})
+    if method == "norms":
+        return _solve_norms(F, max_length=max_length, deadline=deadline)
+    return _solve_polytope(F, max_length=max_length, deadline=deadline, rel_gap=rel_gap,
+                           max_vertices=max_vertices)
+
+
+def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
+    parts = []
+    t_total = max(_time_left(kw["deadline"]), 0.0)
+    weights = [len(b) ** 2 for b in blocks]
+    t0 = time.perf_counter()
+    spent = 0.0
+    for b, wgt in zip(blocks, weights):
+        share = t_total * wgt / sum(weights)
+        sub = F.subfamily(b)
+        kw2 = dict(kw, deadline=time.perf_counter() + share + max(0.0, t_total - spent - share) * 0.0)
+        bb = _solve(sub, **kw2)
+        spent = time.perf_counter() - t0
+        parts.append((b, bb))
+    best_b, best = max(parts, key=lambda p: p[1].lower)
+    uppers = [p[1].upper for p in parts]
+    up = None if any(u is None for u in uppers) else max(uppers)
+    wit = dict(best.witness)
+    wit["blocks"] = [{"indices": b, "lower": bb.lower, "upper": bb.upper, "method": bb.method}
+                     for b, bb in parts]
+    notes = [f"block {b}: {nt}" for b, bb in parts for nt in bb.notes]
+    # rho of the witness product for the whole family: max over the blocks (block triangular)
+    rp = _lower_from_word(F, best.word)[1]
+    return _Bounds(best.lower, up, best.word, rp,
+                   "block-triangular reduction (common invariant coordinate subspaces); "
+                   f"diagonal blocks of sizes {[len(b) for b in blocks]}, JSR = max over blocks",
+                   _arith(F), wit, notes)
+
+
+def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
+    L = max_length
+    while F.k ** L > (1 << 16) and L > 1:
+        L -= 1
+    bf = brute_force_bounds(F.floats, L)
+    word = bf["lower_word"]
+    lower, rp = _lower_from_word(F, word)
+    up, up_l = rigorous_norm_upper(F, max_length, deadline)
+    return _Bounds(lower, up, word, rp, "norms of all products (textbook brute force)",
+                   _arith(F), {"closed": False, "polytope_vertices": 0, "norm_length": up_l,
+                               "products_enumerated_to": L})
+
+
+def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: float,
+                    max_vertices: int) -> _Bounds:
+    t_start = time.perf_counter()
+    total = max(deadline - t_start, 0.05)
+    mats = F.floats
+    notes: list[str] = []
+    sr = smp_search(mats, max_length, deadline=t_start + 0.25 * total)
+    cands = list(sr.candidates)
+    word = sr.best_word
+    witness: dict[str, Any] = {"search": {"levels": sr.levels_done,
+                                          "products_evaluated": sr.products_evaluated,
+                                          "exhaustive_to_length": sr.exhaustive_to,
+                                          "seconds": round(sr.seconds, 4)},
+                               "candidates": [c[1] for c in cands]}
+    lower, rp = _lower_from_word(F, word)
+
+    if sr.best_rho <= 0 or lower == 0:
+        return _solve_zero(F, word, lower, rp, witness, max_length, deadline)
+
+    upper: Fraction | None = None
+    cert_info: dict[str, Any] = {}
+    st = None
+    restarts = 0
+    while True:
+        # a complex leading eigenvalue rotates the root: the real polytope closes exactly only
+        # for a rational rotation, so the exact attempt gets less time
+        real_lead = all(leading_is_real(mats, w) for _, w in cands)
+        poly_deadline = time.perf_counter() + (0.5 if real_lead else 0.15) * _time_left(deadline)
+        # values recomputed from the words alone, so that the scale (hence the certificate)
+        # does not depend on how a candidate was found
+        cands = [(_rho_word(mats, w), w) for _, w in cands]
+        rho_f = max(c[0] for c in cands)
+        r = Fraction(rho_f)
+        roots = []
+        for _, w in cands:
+            roots.extend(leading_roots(mats, w, rho_f))
+        st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
+                            max_vertices=max_vertices)
+        if st.better_word is not None and restarts < 6:
+            restarts += 1
+            bw = canonical_word(st.better_word)
+            notes.append(f"polytope found a better product {bw} (rho^(1/L) ~ {st.better_rho:.15g}); "
+                         "restarted")
+            nl, nrp = _lower_from_word(F, bw)
+            if nl > lower:
+                lower, rp, word = nl, nrp, bw
+            cands = [(st.better_rho, bw)]
+            continue
+        break
+    witness.update({"polytope_vertices": len(st.V), "closed": st.closed,
+                    "lp_calls": st.lp_calls, "restarts": restarts,
+                    "leading_eigenvalue_real": real_lead,
+                    "stop_reason": st.stop_reason})
+    if st.closed:
+        cert = certify_polytope(F, r, st)
+        if cert is not None:
+            upper = cert.upper
+            cert_info = {"scale_r": r, "certified_norm_bound": cert.bound,
+                         "basis_inverse_norm": cert.basis_inverse_norm,
+                         "certificate_arithmetic": cert.arithmetic,
+                         "polytope_vertex_roots": sorted(set(st.root_of)),
+                         "vertices": [v.tolist() for v in st.V] if len(st.V) <= 300 else None}
+        else:
+            notes.append("the closed float polytope could not be certified (singular basis)")
+
+    def gap_ok(u: Fraction | None) -> bool:
+        return u is not None and lower > 0 and u <= lower * (1 + Fraction(rel_gap))
+
+    # relaxed polytopes: A_i / (r (1 + eps)) contract, so the tree closes for eps > 0
+    relaxed: dict[str, Any] = {}
+    method = "invariant polytope (Guglielmi-Protasov), certified"
+    if not gap_ok(upper):
+        rho_f = float(r)
+        for eps in sorted({e for e in (1e-2, 1e-4, rel_gap / 4) if e >= rel_gap / 4},
+                          reverse=True):
+            if _time_left(deadline) <= 0.02 * total:
+                break
+            re = r * (1 + Fraction(eps))
+            roots = []
+            for _, w in cands:
+                roots.extend(leading_roots(mats, w, rho_f))
+            t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
+            st2 = build_polytope(mats, float(re), roots, deadline=t_eps,
+                                 max_vertices=max_vertices, check_better=False)
+            if not st2.closed:
+                relaxed = {"eps_failed": eps, "vertices": len(st2.V), "stop": st2.stop_reason}
+                break
+            c2 = certify_polytope(F, re, st2)
+            if c2 is None:
+                break
+            if upper is None or c2.upper < upper:
+                upper = c2.upper
+                relaxed = {"eps": eps, "vertices": len(st2.V), "certified_norm_bound": c2.bound}
+                method = (f"relaxed invariant polytope for A_i / (rho (1 + {eps:g})), certified "
+                          "(the exact polytope did not close)")
+            if gap_ok(upper):
+                break
+        if relaxed:
+            witness["relaxed_polytope"] = relaxed
+    if not gap_ok(upper):
+        nu, nl_ = rigorous_norm_upper(F, max_length, max(deadline, time.perf_counter() + 0.05))
+        if upper is None or nu < upper:
+            upper = nu
+            method = "norms of products in a balanced basis (polytope inconclusive)"
+            witness["norm_length"] = nl_
+    witness.update(cert_info)
+    return _Bounds(lower, upper, word, rp, method, _arith(F), witness, notes)
+
+
+def _solve_zero(F: Family, word, lower, rp, witness, max_length, deadline) -> _Bounds:
+    """Best product has spectral radius 0: the family may be jointly nilpotent."""
+    n, k = F.n, F.k
+    if k ** n <= 1 << 14:
+        zero = True
+        for w in itertools.product(range(k), repeat=n):
+            if F.exact_q is not None:
+                P = F.product_q(w)
+                if any(P[a, b] != 0 for a in range(n) for b in range(n)):
+                    zero = False
+                    break
+            else:
+                zero = False
+                break
+        if zero:
+            witness.update({"closed": True, "polytope_vertices": 0})
+            return _Bounds(Fraction(0), Fraction(0), word, rp,
+                           f"jointly nilpotent: every product of length n = {n} vanishes (exact)",
+                           _arith(F), witness)
+    up, l = rigorous_norm_upper(F, max_length, deadline)
+    witness.update({"closed": False, "polytope_vertices": 0, "norm_length": l})
+    return _Bounds(lower, up, word, rp, "norms of products (no product with rho > 0 found)",
+                   _arith(F), witness)
+
+
+# --------------------------------------------------------------------------------------------
+# public API
+# --------------------------------------------------------------------------------------------
+
+def _q(x: Fraction | None) -> sp.Rational | None:
+    return None if x is None else sp.Rational(x.numerator, x.denominator)
+
+
+def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 10.0,
+               method: str = "auto", rel_gap: float = 1e-6, floats_exact: bool = False,
+               max_vertices: int = 1500) -> Result:
+    """Rigorous bounds ``lower <= JSR(A_0, ..., A_{k-1}) <= upper`` (see the module docstring).
+
+    Parameters
+    ----------
+    matrices
+        A sequence of square matrices of one size: sympy matrices, nested lists (ints,
+        ``Fraction``, decimal strings such as ``"0.25"``, sympy numbers such as ``sqrt(3)/4``),
+        numpy arrays or FLINT ``fmpq_mat``. Exact entries are used exactly.
+    max_length
+        Longest product examined by the s.m.p. search and by the norm bounds.
+    budget_seconds
+        Wall-clock budget (soft: the certificate of a closed polytope always completes).
+    method
+        ``"auto"`` (all reductions, search, invariant polytope), ``"polytope"`` (no structural
+        shortcuts), ``"norms"`` (the textbook exhaustive method).
+    rel_gap
+        Target ``upper / lower - 1``: the status is *certified* only when it is reached.
+    floats_exact
+        Read float entries as the binary rationals they are and certify for those (status
+        *certified* is then possible for float input; provenance says so).
+    max_vertices
+        Vertex budget of the invariant polytope.
+
+    Returns
+    -------
+    Result
+        ``lower``/``upper`` sympy Rationals (dyadic, rounded outward); ``value`` only when they
+        coincide. ``status``: *certified* (rigorous and ``upper/lower - 1 <= rel_gap``),
+        *numerical* (float input, tight), *inconclusive* (otherwise: the bounds are still
+        rigorous for exact input; ``provenance["message"]`` says what would settle it).
+        ``witness``: ``product`` (word ``w``, meaning ``A_{w_1} A_{w_2} ... A_{w_L}``),
+        ``length``, ``rho_product`` (enclosure of ``rho(P_w)``), ``polytope_vertices``,
+        ``closed``, ``certified_norm_bound``, ``scale_r``, ``vertices`` (the dyadic vertex
+        coordinates of the certified polytope when at most 300), and search statistics.
+
+    Examples
+    --------
+    >>> r = jsr_bounds([[[2, 0], [0, 1]], [[1, 0], [0, 3]]])    # commuting: max rho = 3
+    >>> r.value, r.status
+    (3, 'certified')
+    >>> r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], method="norms", max_length=6)
+    >>> r.status, float(r.lower) > 1.618, float(r.upper) > 1.62
+    ('inconclusive', True, True)
+    """
+    if method not in METHODS:
+        raise AnalysisError(f"unknown method {method!r}; expected one of {METHODS}")
+    if not (isinstance(max_length, int) and max_length >= 1):
+        raise AnalysisError("max_length must be a positive integer")
+    if not budget_seconds > 0:
+        raise AnalysisError("budget_seconds must be positive")
+    t0 = time.perf_counter()
+    deadline = t0 + float(budget_seconds)
+    F = parse_family(matrices)
+    # exact duplicates
+    members: list[int] = []
+    for i in range(F.k):
+        if not any(F.equal(i, j) for j in members):
+            members.append(i)
+    G = F.subfamily(range(F.n), members) if len(members) < F.k else F
+    b = _solve(G, method=method, max_length=max_length, deadline=deadline, rel_gap=rel_gap,
+               max_vertices=max_vertices)
+    word = tuple(members[i] for i in b.word)
+
+    lower = round_down(b.lower)
+    upper = round_up(b.upper) if b.upper is not None else None
+    if upper is not None and upper < lower:   # cannot happen for rigorous bounds
+        raise ArithmeticError(f"JSR bounds crossed: {lower} > {upper}")
+    rigorous = F.kind != "float" or floats_exact
+    if upper is None:
+        tight = False
+    elif lower == upper:
+        tight = True
+    else:
+        tight = lower > 0 and upper <= lower * (1 + Fraction(rel_gap))
+    if tight:
+        status = CERTIFIED if rigorous else NUMERICAL
+    else:
+        status = INCONCLUSIVE
+    witness: dict[str, Any] = {
+        "product": word, "length": len(word),
+        "rho_product": {"lower": _q(round_down(b.rho_product[0])),
+                        "upper": _q(round_up(b.rho_product[1]))},
+        "polytope_vertices": b.witness.get("polytope_vertices", 0),
+        "closed": bool(b.witness.get("closed", False)),
+    }
+    for key, val in b.witness.items():
+        if key in witness:
+            continue
+        if isinstance(val, Fraction):
+            val = _q(val)
+        if key == "blocks":
+            val = [{**d, "lower": _q(d["lower"]), "upper": _q(d["upper"])} for d in val]
+        if key == "candidates":
+            val = [tuple(members[i] for i in w) for w in val]
+        witness[key] = val
+    if status == CERTIFIED and F.exact_q is not None and F.kind == "rational":
+        expr = exact_rho_expression(F, word)
+        if expr is not None:
+            witness["rho_product_root_exact"] = expr
+    gap = None if (upper is None or lower == 0) else float(upper / lower - 1)
+    arithmetic = b.arithmetic
+    if F.kind == "float":
+        arithmetic += ("; float inputs read as exact binary rationals" if floats_exact else
+                       "; float inputs read as exact binary rationals, but they approximate the"
+                       " intended matrices, so the status is at most numerical")
+    prov: dict[str, Any] = {
+        "method": b.method, "arithmetic": arithmetic, "input_kind": F.kind,
+        "max_length": max_length, "budget_seconds": budget_seconds, "rel_gap_target": rel_gap,
+        "relative_gap": gap, "seconds": round(time.perf_counter() - t0, 4),
+        "duplicates_removed": F.k - len(members),
+    }
+    if b.notes:
+        prov["notes"] = b.notes
+    if status == INCONCLUSIVE:
+        prov["message"] = (
+            f"upper/lower - 1 = {gap:.3g} > {rel_gap:g}: the invariant polytope did not close "
+            f"({b.witness.get('stop_reason', 'not attempted')}). A larger budget_seconds or "
+            "max_vertices, a longer max_length (a better s.m.p. candidate), or an exact s.m.p. "
+            "analysis (several leading products, a complex leading eigenvalue, a defective "
+            "or reducible family) would settle it." if gap is not None else
+            "no rigorous upper bound within the budget")
+    value = _q(lower) if (upper is not None and lower == upper) else None
+    return Result(value=value, status=status, lower=_q(lower), upper=_q(upper),
+                  witness=witness, provenance=prov)

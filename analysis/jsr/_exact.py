@@ -1,0 +1,404 @@
+"""Input parsing and rigorous arithmetic for the JSR engine.
+
+A family of matrices is read once into a :class:`Family` that keeps
+
+* ``floats`` — float64 images, used by every search (never by a certificate);
+* ``kind`` — ``"rational"`` (every entry in QQ: certificates use exact FLINT ``fmpq``
+  arithmetic), ``"real"`` (exact real numbers such as ``sqrt(3)``: certificates use Arb balls
+  that enclose the exact entries), or ``"float"`` (at least one Python/numpy float: the float is
+  read as the binary rational it represents, and certificates are exact for *those* rationals);
+* ``exact_q`` — ``fmpq_mat`` images (kinds ``rational`` and ``float``);
+* ``exact_sym`` — sympy matrices (kind ``real``), enclosed by :func:`arb_matrix` on demand.
+
+Rigorous helpers: :func:`rho_enclosure` (the spectral radius of an exact or ball matrix, from
+isolated roots of the exact characteristic polynomial or Arb eigenvalue enclosures),
+:func:`root_lower` / :func:`root_upper` (rigorous L-th roots of rationals), and dyadic rounding.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Any, Iterator, Sequence
+
+import numpy as np
+import sympy as sp
+import flint
+from flint import acb_mat, arb, arb_mat, fmpq, fmpq_mat, fmpz
+
+from ..result import AnalysisError
+
+#: Working precision (bits) of every Arb computation in this package.
+ARB_PREC = 192
+
+
+@contextlib.contextmanager
+def arb_precision(bits: int = ARB_PREC) -> Iterator[None]:
+    """Temporarily set FLINT's global real/complex precision (restored on exit)."""
+    old = flint.ctx.prec
+    flint.ctx.prec = bits
+    try:
+        yield
+    finally:
+        flint.ctx.prec = old
+
+
+# --------------------------------------------------------------------------------------------
+# numbers
+# --------------------------------------------------------------------------------------------
+
+def arb_to_fraction_bounds(x: arb) -> tuple[Fraction, Fraction]:
+    """Exact dyadic ``(lo, hi)`` with ``lo <= every point of x <= hi``."""
+    if not x.is_finite():
+        raise ArithmeticError("non-finite ball")
+    lo_m, lo_e = x.lower().man_exp()
+    hi_m, hi_e = x.upper().man_exp()
+    return _dyadic(int(lo_m), int(lo_e)), _dyadic(int(hi_m), int(hi_e))
+
+
+def _dyadic(m: int, e: int) -> Fraction:
+    return Fraction(m * 2 ** e) if e >= 0 else Fraction(m, 2 ** (-e))
+
+
+def fraction_to_arb(q: Fraction) -> arb:
+    return arb(fmpq(q.numerator, q.denominator))
+
+
+def round_down(x: Fraction, bits: int = 96) -> Fraction:
+    """The largest dyadic ``<= x`` with about ``bits`` significant bits (``x >= 0``)."""
+    if x <= 0:
+        return Fraction(math.floor(x * 2 ** bits), 2 ** bits) if x < 0 else Fraction(0)
+    e = x.numerator.bit_length() - x.denominator.bit_length() - bits
+    return Fraction(math.floor(x / Fraction(2) ** e)) * Fraction(2) ** e
+
+
+def round_up(x: Fraction, bits: int = 96) -> Fraction:
+    """The smallest dyadic ``>= x`` with about ``bits`` significant bits (``x >= 0``)."""
+    if x <= 0:
+        return Fraction(math.ceil(x * 2 ** bits), 2 ** bits)
+    e = x.numerator.bit_length() - x.denominator.bit_length() - bits
+    return Fraction(math.ceil(x / Fraction(2) ** e)) * Fraction(2) ** e
+
+
+def root_lower(x: Fraction, L: int) -> Fraction:
+    """A rational ``q <= x**(1/L)`` (rigorous, tight to ~ARB_PREC bits); ``x >= 0``."""
+    if x <= 0:
+        return Fraction(0)
+    if L == 1:
+        return x
+    with arb_precision():
+        lo, _ = arb_to_fraction_bounds(fraction_to_arb(x).root(L))
+    return max(lo, Fraction(0))
+
+
+def root_upper(x: Fraction, L: int) -> Fraction:
+    """A rational ``q >= x**(1/L)`` (rigorous); ``x >= 0``."""
+    if x <= 0:
+        return Fraction(0)
+    if L == 1:
+        return x
+    with arb_precision():
+        _, hi = arb_to_fraction_bounds(fraction_to_arb(x).root(L))
+    return hi
+
+
+# --------------------------------------------------------------------------------------------
+# sympy expressions -> Arb balls
+# --------------------------------------------------------------------------------------------
+
+class NoEnclosure(ValueError):
+    """An exact real expression that :func:`sympy_to_arb` cannot enclose rigorously."""
+
+
+_ARB_FUNCS = {"sin", "cos", "tan", "exp", "log", "atan", "asin", "acos", "sinh", "cosh", "tanh"}
+
+
+def sympy_to_arb(e: sp.Expr) -> arb:
+    """A rigorous Arb ball containing the real number ``e`` (numbers, +, *, powers, pi, E, sqrt,
+    and the elementary functions in ``_ARB_FUNCS``)."""
+    if e.is_Rational:
+        return arb(fmpq(int(e.p), int(e.q)))
+    if e is sp.pi:
+        return arb.pi()
+    if e is sp.E:
+        return arb.const_e()
+    if e.is_Add:
+        out = arb(0)
+        for t in e.args:
+            out += sympy_to_arb(t)
+        return out
+    if e.is_Mul:
+        out = arb(1)
+        for t in e.args:
+            out *= sympy_to_arb(t)
+        return out
+    if e.is_Pow:
+        b, x = e.args
+        bb = sympy_to_arb(b)
+        if x.is_Integer:
+            n = int(x)
+            return bb ** n if n >= 0 else 1 / (bb ** (-n))
+        if x.is_Rational:
+            if not bb > 0:
+                raise NoEnclosure(f"cannot enclose {e}")
+            r = bb.root(int(x.q))
+            p = int(x.p)
+            return r ** p if p >= 0 else 1 / (r ** (-p))
+        if not bb > 0:
+            raise NoEnclosure(f"cannot enclose {e}")
+        return (bb.log() * sympy_to_arb(x)).exp()
+    if isinstance(e, sp.Function) and e.func.__name__ in _ARB_FUNCS and len(e.args) == 1:
+        return getattr(sympy_to_arb(e.args[0]), e.func.__name__)()
+    raise NoEnclosure(f"cannot enclose {e}")
+
+
+# --------------------------------------------------------------------------------------------
+# families
+# --------------------------------------------------------------------------------------------
+
+@dataclass
+class Family:
+    """A parsed family of ``k`` real ``n x n`` matrices (see module docstring)."""
+
+    floats: list[np.ndarray]
+    kind: str
+    exact_q: list[fmpq_mat] | None = None
+    exact_sym: list[sp.Matrix] | None = None
+    _arb_cache: dict = field(default_factory=dict)
+
+    @property
+    def n(self) -> int:
+        return self.floats[0].shape[0]
+
+    @property
+    def k(self) -> int:
+        return len(self.floats)
+
+    def arb(self, i: int) -> arb_mat:
+        """Arb enclosure of matrix ``i`` at :data:`ARB_PREC` (exact entries stay exact)."""
+        key = (i, flint.ctx.prec)
+        if key not in self._arb_cache:
+            with arb_precision():
+                if self.exact_q is not None:
+                    m = arb_mat(self.exact_q[i])
+                else:
+                    M = self.exact_sym[i]
+                    m = arb_mat(self.n, self.n, [sympy_to_arb(M[r, c])
+                                                 for r in range(self.n) for c in range(self.n)])
+            self._arb_cache[key] = m
+        return self._arb_cache[key]
+
+    def subfamily(self, rows: Sequence[int], members: Sequence[int] | None = None) -> "Family":
+        """The principal submatrices on index set ``rows`` (a diagonal block), for ``members``."""
+        members = list(range(self.k)) if members is None else list(members)
+        idx = list(rows)
+        fl = [self.floats[i][np.ix_(idx, idx)].copy() for i in members]
+        q = sym = None
+        if self.exact_q is not None:
+            q = [fmpq_mat([[self.exact_q[i][r, c] for c in idx] for r in idx]) for i in members]
+        if self.exact_sym is not None:
+            sym = [self.exact_sym[i].extract(idx, idx) for i in members]
+        return Family(fl, self.kind, q, sym)
+
+    def is_zero_entry(self, i: int, r: int, c: int) -> bool:
+        """Exact test ``A_i[r, c] == 0``."""
+        if self.exact_q is not None:
+            return self.exact_q[i][r, c] == 0
+        return bool(sp.simplify(self.exact_sym[i][r, c]) == 0)
+
+    def equal(self, i: int, j: int) -> bool:
+        """Exact test ``A_i == A_j``."""
+        if self.exact_q is not None:
+            return self.exact_q[i] == self.exact_q[j]
+        return bool((self.exact_sym[i] - self.exact_sym[j]).applyfunc(sp.simplify).is_zero_matrix)
+
+    def product_q(self, word: Sequence[int]) -> fmpq_mat:
+        P = self.exact_q[word[0]]
+        for i in word[1:]:
+            P = P * self.exact_q[i]
+        return P
+
+    def product_arb(self, word: Sequence[int]) -> arb_mat:
+        with arb_precision():
+            P = self.arb(word[0])
+            for i in word[1:]:
+                P = P * self.arb(i)
+        return P
+
+
+def _entry(x: Any) -> tuple[str, Any]:
+    """Classify one entry: ('q', Fraction) | ('f', Fraction of a float) | ('r', sympy real)."""
+    if isinstance(x, (bool, np.bool_)):
+        raise AnalysisError(f"matrix entry {x!r} is a boolean, not a number")
+    if isinstance(x, (int, np.integer)):
+        return "q", Fraction(int(x))
+    if isinstance(x, Fraction):
+        return "q", x
+    if isinstance(x, fmpq):
+        return "q", Fraction(int(x.p), int(x.q))
+    if isinstance(x, fmpz):
+        return "q", Fraction(int(x))
+    if isinstance(x, (float, np.floating)):
+        if not math.isfinite(float(x)):
+            raise AnalysisError(f"matrix entry {x!r} is not finite")
+        return "f", Fraction(float(x))
+    if isinstance(x, str):
+        from ..symbol import parse_coefficient
+        x = parse_coefficient(x)
+    if isinstance(x, sp.Basic):
+        x = sp.sympify(x)
+        if x.free_symbols:
+            raise AnalysisError(f"matrix entry {x} has free symbols {sorted(map(str, x.free_symbols))}; "
+                                "substitute parameter values first")
+        if x.is_Rational:
+            return "q", Fraction(int(x.p), int(x.q))
+        if isinstance(x, sp.Float):
+            return "f", Fraction(float(x))
+        if x.is_real is False or not x.is_number:
+            raise AnalysisError(f"matrix entry {x} is not a real number")
+        return "r", x
+    raise AnalysisError(f"matrix entry {x!r} of type {type(x).__name__} is not a number")
+
+
+def _rows(M: Any) -> list[list[Any]]:
+    if isinstance(M, fmpq_mat):
+        return [[M[r, c] for c in range(M.ncols())] for r in range(M.nrows())]
+    if isinstance(M, sp.MatrixBase):
+        return [list(M.row(r)) for r in range(M.rows)]
+    if isinstance(M, np.ndarray):
+        if M.ndim != 2:
+            raise AnalysisError(f"expected a 2-d matrix, got an array of shape {M.shape}")
+        return [list(row) for row in M]
+    try:
+        rows = [list(r) for r in M]
+    except TypeError:
+        raise AnalysisError(f"cannot read a matrix from {type(M).__name__}") from None
+    return rows
+
+
+def parse_family(matrices: Any) -> Family:
+    """Read a family of square matrices (numpy arrays, sympy matrices, nested lists of ints,
+    Fractions, decimal strings, sympy numbers or floats, FLINT ``fmpq_mat``).
+
+    >>> F = parse_family([[[1, 1], [0, 1]], [["1/2", 0], [1, 1]]])
+    >>> F.kind, F.k, F.n
+    ('rational', 2, 2)
+    >>> parse_family([np.eye(2)]).kind
+    'float'
+    >>> parse_family([sp.Matrix([[sp.sqrt(3)]])]).kind
+    'real'
+    """
+    if isinstance(matrices, np.ndarray) and matrices.ndim == 3:
+        matrices = list(matrices)
+    if isinstance(matrices, (np.ndarray, sp.MatrixBase, fmpq_mat)):
+        raise AnalysisError("expected a sequence of matrices, got a single matrix; wrap it in a list")
+    try:
+        mats = list(matrices)
+    except TypeError:
+        raise AnalysisError("expected a sequence of matrices") from None
+    if not mats:
+        raise AnalysisError("the family of matrices is empty")
+    parsed: list[list[list[tuple[str, Any]]]] = []
+    n = None
+    for idx, M in enumerate(mats):
+        rows = _rows(M)
+        if n is None:
+            n = len(rows)
+        if n == 0:
+            raise AnalysisError("matrices must be at least 1 x 1")
+        if len(rows) != n or any(len(r) != n for r in rows):
+            raise AnalysisError(f"matrix {idx} is not square of the common size {n} x {n}")
+        parsed.append([[_entry(x) for x in r] for r in rows])
+    kinds = {t for P in parsed for r in P for (t, _) in r}
+    kind = "real" if "r" in kinds else ("float" if "f" in kinds else "rational")
+    floats: list[np.ndarray] = []
+    for P in parsed:
+        floats.append(np.array([[float(v) if t != "r" else float(sp.N(v, 30)) for (t, v) in r]
+                                for r in P], dtype=float))
+    for i, Mf in enumerate(floats):
+        if not np.all(np.isfinite(Mf)):
+            raise AnalysisError(f"matrix {i} has entries too large for float64")
+    if kind == "real":
+        sym = [sp.Matrix([[sp.Rational(v.numerator, v.denominator) if t != "r" else v
+                           for (t, v) in r] for r in P]) for P in parsed]
+        return Family(floats, kind, None, sym)
+    q = [fmpq_mat([[fmpq(v.numerator, v.denominator) for (_, v) in r] for r in P]) for P in parsed]
+    return Family(floats, kind, q, None)
+
+
+# --------------------------------------------------------------------------------------------
+# spectral radius enclosures
+# --------------------------------------------------------------------------------------------
+
+def rho_enclosure_q(P: fmpq_mat) -> tuple[Fraction, Fraction]:
+    """Rigorous ``(lo, hi)`` for the spectral radius of an exact rational matrix: roots of the
+    exact characteristic polynomial isolated by FLINT (``fmpz_poly.complex_roots``)."""
+    cp = P.charpoly().numer()
+    with arb_precision():
+        roots = cp.complex_roots()
+        lo = hi = Fraction(0)
+        for z, _mult in roots:
+            a = abs(z)
+            l, h = arb_to_fraction_bounds(a)
+            lo, hi = max(lo, l), max(hi, h)
+    return max(lo, Fraction(0)), hi
+
+
+def rho_enclosure_arb(P: arb_mat) -> tuple[Fraction, Fraction]:
+    """Rigorous ``(lo, hi)`` for the spectral radius of any matrix in the ball ``P``.
+
+    Arb eigenvalue enclosures (``acb_mat.eig``, clustered for multiple eigenvalues); if those
+    fail, the crude but rigorous ``|det P|^(1/n) <= rho(P) <= ||P||_inf``.
+    """
+    n = P.nrows()
+    with arb_precision():
+        try:
+            ev = acb_mat(P).eig(multiple=True)
+            lo = hi = Fraction(0)
+            for z in ev:
+                l, h = arb_to_fraction_bounds(abs(z))
+                lo, hi = max(lo, l), max(hi, h)
+            return max(lo, Fraction(0)), hi
+        except (ValueError, ArithmeticError):
+            pass
+        d_lo, _ = arb_to_fraction_bounds(abs(P.det()))
+        hi = max(arb_to_fraction_bounds(sum((abs(P[r, c]) for c in range(n)), arb(0)))[1]
+                 for r in range(n))
+    return root_lower(max(d_lo, Fraction(0)), n), hi
+
+
+def rho_enclosure(F: Family, word: Sequence[int]) -> tuple[Fraction, Fraction]:
+    """Rigorous enclosure of ``rho(A_{w1} A_{w2} ... A_{wL})`` for the exact family ``F``."""
+    if F.exact_q is not None:
+        return rho_enclosure_q(F.product_q(word))
+    return rho_enclosure_arb(F.product_arb(word))
+
+
+def exact_rho_expression(F: Family, word: Sequence[int]) -> sp.Expr | None:
+    """For rational families and small sizes: the exact algebraic number ``rho(P_w)^(1/L)`` as a
+    sympy expression (radicals when the factor has degree <= 2, else a ``CRootOf``); else None."""
+    if F.exact_q is None or F.n > 6:
+        return None
+    try:
+        P = F.product_q(word)
+        M = sp.Matrix([[sp.Rational(int(P[r, c].p), int(P[r, c].q)) for c in range(F.n)]
+                       for r in range(F.n)])
+        x = sp.Symbol("x")
+        best, best_abs = None, -1.0
+        for fac, _m in sp.factor_list(M.charpoly(x).as_expr(), x)[1]:
+            d = sp.degree(fac, x)
+            roots = sp.roots(sp.Poly(fac, x)) if d <= 2 else {sp.CRootOf(fac, i): 1 for i in range(d)}
+            for z in roots:
+                a = abs(complex(sp.N(z, 30)))
+                if a > best_abs * (1 + 1e-12):
+                    best, best_abs = z, a
+        if best is None:
+            return None
+        e = sp.Abs(best) if not best.is_real else (best if best_abs >= 0 and complex(sp.N(best)).real >= 0 else -best)
+        L = len(word)
+        out = e if L == 1 else e ** sp.Rational(1, L)
+        return sp.nsimplify(out) if sp.count_ops(out) < 12 and sp.nsimplify(out).equals(out) else out
+    except Exception:  # pragma: no cover - an optional nicety, never essential
+        return None

@@ -1,0 +1,420 @@
+"""The invariant polytope algorithm (real, symmetric case) and its rigorous certificate.
+
+Float phase (:func:`build_polytope`)
+------------------------------------
+Given the family scaled by a rational ``r`` close to the candidate value ``rho(P_w)^(1/L)``,
+``B_i = A_i / r``, and *roots* (the leading eigenvectors of the candidate products; for a
+complex leading eigenvalue its real and imaginary parts), the vertex set ``V`` starts with the
+roots and grows as in Guglielmi–Protasov (2013): every image ``B_i v`` of a new vertex ``v`` is
+tested for membership in the absolutely convex hull ``absconv(V)`` by the linear program
+
+    min ||lambda||_1  subject to  V lambda = x          (HiGHS via scipy.optimize.linprog),
+
+whose value is the Minkowski norm ``||x||_P``. Images with ``||x||_P <= 1 + tol`` are inside and
+their coefficient vector is kept (the certificate needs it); the others become new vertices. The
+polytope *closes* when every vertex has all ``k`` images inside. If ``V`` closes without spanning
+``R^n`` (a common invariant subspace), orthonormal complement vectors are added as extra roots.
+A vertex whose path ``B_{i_d} ... B_{i_1}`` has ``rho > 1`` reveals a better product than the
+candidate; the caller restarts with it (Mejstrik 2020 uses the same idea).
+
+Cheap tests avoid most LPs: ``||x||_2 > max_j ||v_j||_2`` proves ``x`` outside, and
+``||B^{-1} x||_1 <= 1`` for a basis ``B`` of vertices proves it inside (with coefficients).
+Every LP solution is *polished*: the coefficients on its support are recomputed by least squares,
+so the float residual is ~1e-16 instead of HiGHS's 1e-7 feasibility tolerance.
+
+Certificate (:func:`certify_polytope`)
+--------------------------------------
+Vertices are rounded to dyadic rationals when created and coefficients are rounded to multiples
+of ``2^-60``; so the polytope ``P = absconv(V)`` is an exactly known rational object. For every
+vertex ``v_j`` and matrix ``i``, with float coefficients ``lambda``:
+
+    ||B_i v_j||_P <= ||lambda||_1 + ||B^{-1}||_1 * ||B_i v_j - V lambda||_1,
+
+where ``B`` is a basis of vertices and the right side is evaluated **exactly** (integers and
+rationals; for irrational inputs in Arb ball arithmetic enclosing the exact entries). Hence
+``||A_i||_P <= r * c`` with ``c = max_{i,j}`` of these bounds and ``JSR <= r * c``, a rigorous
+upper bound whether or not the float phase closed (if it did, ``c = 1 + O(1e-13)``).
+
+References
+----------
+N. Guglielmi, V. Yu. Protasov, *Exact computation of joint spectral characteristics of linear
+operators*, Found. Comput. Math. 13 (2013) 37-97.
+T. Mejstrik, *Algorithm 1011: Improved invariant polytope algorithm and applications*, ACM Trans.
+Math. Softw. 46(3) (2020) 29.
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass, field
+from fractions import Fraction
+from typing import Sequence
+
+import numpy as np
+import scipy.linalg
+from scipy.optimize import linprog
+from flint import arb, arb_mat, fmpq_mat, fmpz, fmpz_mat
+
+from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
+
+#: mantissa bits kept when a float vertex is rounded to a dyadic rational
+VERTEX_BITS = 52
+#: coefficients are multiples of 2^-COEF_BITS
+COEF_BITS = 60
+
+
+def _round_vertex(x: np.ndarray) -> tuple[np.ndarray, int]:
+    """Round ``x`` to ``m * 2^-s`` (integers ``m``) with ~VERTEX_BITS bits; returns (float, s)."""
+    amax = float(np.max(np.abs(x)))
+    if amax == 0.0:
+        return x * 0.0, 0
+    e = int(np.floor(np.log2(amax)))
+    s = VERTEX_BITS - e
+    m = np.round(np.ldexp(x, s))
+    return np.ldexp(m, -s), s
+
+
+@dataclass
+class PolytopeState:
+    """Float vertices (exact dyadics), their path words and the coefficient representations."""
+
+    n: int
+    k: int
+    V: list[np.ndarray] = field(default_factory=list)
+    shifts: list[int] = field(default_factory=list)       # v_j = integer vector * 2^-shift_j
+    root_of: list[int] = field(default_factory=list)
+    path: list[tuple[int, ...]] = field(default_factory=list)
+    reps: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
+    closed: bool = False
+    better_word: tuple[int, ...] | None = None
+    better_rho: float = 0.0
+    lp_calls: int = 0
+    stop_reason: str = ""
+    max_norm_seen: float = 0.0
+
+    def matrix(self) -> np.ndarray:
+        return np.array(self.V).T if self.V else np.zeros((self.n, 0))
+
+
+class _Member:
+    """Membership oracle for absconv(V) with cheap pre-tests (see module docstring)."""
+
+    def __init__(self, st: PolytopeState):
+        self.st = st
+        self._basis: tuple[np.ndarray, np.ndarray] | None = None
+        self._basis_m = -1
+        self._r2 = 0.0
+        self._Y = np.zeros((0, st.n))     # functionals y with |<y, v_j>| <= 1 for all vertices
+        self.shortcuts = True             # False: always return a representation if one exists
+
+    def refresh(self) -> None:
+        st = self.st
+        m = len(st.V)
+        self._r2 = max((float(v @ v) for v in st.V), default=0.0)
+        if len(self._Y) and m:
+            ok = np.abs(self._Y @ st.V[-1]) <= 1.0
+            self._Y = self._Y[ok]
+        if m >= st.n and m != self._basis_m:
+            Vm = st.matrix()
+            _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+            idx = np.sort(piv[: st.n])
+            Bm = Vm[:, idx]
+            if np.linalg.matrix_rank(Bm) == st.n and np.linalg.cond(Bm) < 1e12:
+                self._basis = (idx, np.linalg.inv(Bm))
+            else:
+                self._basis = None
+            self._basis_m = m
+
+    def norm(self, x: np.ndarray) -> tuple[float, np.ndarray | None, np.ndarray | None]:
+        """``(||x||_P, support, coefficients)``; ``inf`` (and no representation) when ``x`` is
+        outside ``span(V)`` or certainly outside ``P``."""
+        st = self.st
+        xx = float(x @ x)
+        if self.shortcuts and xx > self._r2 * (1 + 1e-9):
+            return np.inf, None, None
+        if self.shortcuts and len(self._Y) and float(np.max(np.abs(self._Y @ x))) > 1 + 1e-9:
+            return np.inf, None, None              # a supporting functional separates x
+        if self._basis is not None:
+            idx, Binv = self._basis
+            lam = Binv @ x
+            s = float(np.sum(np.abs(lam)))
+            if s <= 1.0:
+                return s, idx, lam
+        Vm = st.matrix()
+        m = Vm.shape[1]
+        if m > 6 * st.n and self.shortcuts:
+            # a small LP over the vertices best aligned with x: inside it means inside P
+            cos = np.abs(x @ Vm) / np.maximum(np.linalg.norm(Vm, axis=0), 1e-300)
+            sub = np.argsort(-cos)[: 3 * st.n]
+            if self._basis is not None:
+                sub = np.union1d(sub, self._basis[0])
+            out = self._lp(Vm[:, sub], x)
+            if out is not None and out[0] <= 1.0:
+                nx, supp, lam = self._polish(Vm, x, sub[out[1]], out[2])
+                if nx <= 1.0:
+                    return nx, supp, lam
+        out = self._lp(Vm, x, keep_dual=True)
+        if out is None:
+            return np.inf, None, None
+        return self._polish(Vm, x, out[1], out[2])
+
+    def _lp(self, Vm: np.ndarray, x: np.ndarray, keep_dual: bool = False):
+        m = Vm.shape[1]
+        self.st.lp_calls += 1
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            res = linprog(np.ones(2 * m), A_eq=np.hstack([Vm, -Vm]), b_eq=x, bounds=(0, None),
+                          method="highs")
+        if res.status != 0 or res.x is None:
+            return None
+        if keep_dual and res.fun > 1.0:
+            y = np.asarray(res.eqlin.marginals, dtype=float)
+            if y.shape == (self.st.n,) and np.all(np.isfinite(y)):
+                y = y / max(1.0, float(np.max(np.abs(y @ Vm))))
+                self._Y = np.vstack([self._Y, y[None, :]])[-200:]
+        lam = res.x[:m] - res.x[m:]
+        supp = np.nonzero(np.abs(lam) > 1e-15 * max(1.0, float(np.max(np.abs(lam)))))[0]
+        return float(res.fun), supp, lam[supp]
+
+    def _polish(self, Vm: np.ndarray, x: np.ndarray, supp: np.ndarray, lam0: np.ndarray):
+        m = Vm.shape[1]
+        lam = np.zeros(m)
+        lam[supp] = lam0
+        if len(supp) == 0:
+            return 0.0, np.array([0]), np.array([0.0])
+        sol, *_ = np.linalg.lstsq(Vm[:, supp], x, rcond=None)
+        if np.linalg.norm(Vm[:, supp] @ sol - x, 1) <= np.linalg.norm(Vm[:, supp] @ lam[supp] - x, 1):
+            lam_s = sol
+        else:
+            lam_s = lam[supp]
+        res = x - Vm[:, supp] @ lam_s
+        if self._basis is not None and np.any(res):
+            # absorb what is left (HiGHS is feasible only to ~1e-9) through the basis
+            idx, Binv = self._basis
+            full = np.zeros(m)
+            full[supp] = lam_s
+            full[idx] += Binv @ res
+            supp = np.nonzero(full)[0]
+            lam_s = full[supp]
+        return float(np.sum(np.abs(lam_s))), supp, lam_s
+
+
+def leading_roots(mats: Sequence[np.ndarray], word: Sequence[int], r: float,
+                  rel: float = 1e-8) -> list[np.ndarray]:
+    """Real roots for the candidate ``word``: leading eigenvectors of ``P_w / r^L`` (real parts
+    and imaginary parts for complex ones), normalised to unit max-norm."""
+    P = np.eye(mats[0].shape[0])
+    for i in word:
+        P = P @ (mats[i] / r)
+    w, U = np.linalg.eig(P)
+    top = float(np.max(np.abs(w)))
+    out: list[np.ndarray] = []
+    for lam, u in zip(w, U.T):
+        if abs(lam) < top * (1 - rel):
+            continue
+        parts = [u.real] if abs(lam.imag) <= 1e-12 * top else [u.real, u.imag]
+        for p in parts:
+            a = float(np.max(np.abs(p)))
+            if a > 1e-12:
+                p = p / a
+                p = p * np.sign(p[np.argmax(np.abs(p))])
+                out.append(p)
+    return out
+
+
+def leading_is_real(mats: Sequence[np.ndarray], word: Sequence[int], rel: float = 1e-8) -> bool:
+    """Whether every eigenvalue of maximal modulus of ``P_w`` is real (float test)."""
+    P = np.eye(mats[0].shape[0])
+    for i in word:
+        P = P @ mats[i]
+    w = np.linalg.eigvals(P)
+    top = float(np.max(np.abs(w)))
+    return bool(np.all(np.abs(w[np.abs(w) >= top * (1 - rel)].imag) <= 1e-9 * max(top, 1e-300)))
+
+
+def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndarray], *,
+                   deadline: float, max_vertices: int = 1500, tol: float = 1e-11,
+                   check_better: bool = True) -> PolytopeState:
+    """The float phase of the invariant polytope algorithm (see module docstring)."""
+    n, k = mats[0].shape[0], len(mats)
+    B = [np.asarray(A, dtype=float) / r for A in mats]
+    st = PolytopeState(n, k)
+    mem = _Member(st)
+
+    def add(x: np.ndarray, root: int, path: tuple[int, ...]) -> int:
+        v, s = _round_vertex(x)
+        st.V.append(v)
+        st.shifts.append(s)
+        st.root_of.append(root)
+        st.path.append(path)
+        mem.refresh()
+        return len(st.V) - 1
+
+    frontier: list[int] = []
+    root_list = [np.asarray(x, dtype=float) for x in roots]
+    ri = 0
+    while True:
+        for x in root_list:
+            nx, _, _ = mem.norm(x)
+            if nx > 1 + tol:
+                frontier.append(add(x, ri, ()))
+            ri += 1
+        root_list = []
+        while frontier:
+            new: list[int] = []
+            for j in frontier:
+                for i in range(k):
+                    if time.perf_counter() > deadline:
+                        st.stop_reason = "time budget exhausted"
+                        return st
+                    x = B[i] @ st.V[j]
+                    nx, supp, lam = mem.norm(x)
+                    if nx <= 1 + tol:
+                        st.reps[(i, j)] = (supp, lam)
+                        continue
+                    path = st.path[j] + (i,)
+                    if check_better and np.isfinite(nx) and nx > 1 + 1e-9:
+                        P = np.eye(n)
+                        for t in path:               # P = B_{i_d} ... B_{i_1}
+                            P = B[t] @ P
+                        rho = float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(path))
+                        if rho > 1 + 1e-10:
+                            st.better_word = tuple(reversed(path))
+                            st.better_rho = rho * r
+                            st.stop_reason = "found a product with larger spectral radius"
+                            return st
+                    if len(st.V) >= max_vertices:
+                        st.stop_reason = f"vertex budget ({max_vertices}) exhausted"
+                        return st
+                    if np.isfinite(nx):
+                        st.max_norm_seen = max(st.max_norm_seen, nx)
+                    jn = add(x, st.root_of[j], path)
+                    st.reps[(i, j)] = (np.array([jn]), np.array([1.0]))
+                    new.append(jn)
+            frontier = new
+        # closed in float; make sure the polytope is a body
+        Vm = st.matrix()
+        rank = np.linalg.matrix_rank(Vm) if Vm.shape[1] else 0
+        if rank == n:
+            st.closed = True
+            st.stop_reason = "closed"
+            return st
+        U, _, _ = np.linalg.svd(Vm if Vm.shape[1] else np.zeros((n, 1)))
+        comp = U[:, rank:]
+        scale = max((float(np.max(np.abs(v))) for v in st.V), default=1.0)
+        root_list = [c / np.max(np.abs(c)) * scale for c in comp.T]
+
+
+def complete_reps(mats: Sequence[np.ndarray], r: float, st: PolytopeState, *,
+                  deadline: float) -> bool:
+    """For an unclosed polytope: representations of the missing images (norms may exceed 1), so
+    that :func:`certify_polytope` can still bound ``||A_i||_P``. False if ``V`` does not span or
+    time runs out."""
+    if not st.V or np.linalg.matrix_rank(st.matrix()) < st.n:
+        return False
+    B = [np.asarray(A, dtype=float) / r for A in mats]
+    mem = _Member(st)
+    mem.refresh()
+    mem.shortcuts = False  # we need coefficients for every image, inside or not
+    for j in range(len(st.V)):
+        for i in range(st.k):
+            if (i, j) in st.reps:
+                continue
+            if time.perf_counter() > deadline:
+                return False
+            nx, supp, lam = mem.norm(B[i] @ st.V[j])
+            if supp is None:
+                return False
+            st.reps[(i, j)] = (supp, lam)
+    return True
+
+
+@dataclass
+class Certificate:
+    bound: Fraction            # c with ||A_i / r||_P <= c for all i (rigorous)
+    upper: Fraction            # r * c >= JSR
+    basis_inverse_norm: Fraction
+    arithmetic: str
+    worst: tuple[int, int]
+
+
+def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate | None:
+    """Rigorous bound ``JSR <= r * max_{i,j} ||A_i v_j / r||_P`` from the float representations
+    (see module docstring); ``None`` if representations are missing or the basis is singular."""
+    n, k, m = st.n, st.k, len(st.V)
+    if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
+        return None
+    S = max(st.shifts)
+    # V = Vint / 2^S exactly
+    Vint = [[int(np.ldexp(st.V[j][a], S)) for j in range(m)] for a in range(n)]
+    for j in range(m):   # sanity: exactness of the dyadic representation
+        for a in range(n):
+            if np.ldexp(float(Vint[a][j]), -S) != st.V[j][a]:
+                raise ArithmeticError("vertex is not the dyadic it claims to be")
+    Vz = fmpz_mat(Vint)
+    # basis and ||B^{-1}||_1, exactly
+    Vm = st.matrix()
+    _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+    idx = sorted(int(p) for p in piv[:n])
+    Bq = fmpq_mat([[Vint[a][j] for j in idx] for a in range(n)])
+    try:
+        Binv = Bq.inv()
+    except ZeroDivisionError:
+        return None
+    C = max(sum(abs(Fraction(int(Binv[a, b].p), int(Binv[a, b].q))) for a in range(n))
+            for b in range(n)) * 2 ** S
+    T = COEF_BITS
+    best = Fraction(-1)
+    worst = (0, 0)
+    p, q = r.numerator, r.denominator
+    if F.exact_q is not None:
+        arithmetic = "exact rational (FLINT fmpz/fmpq)"
+        for i in range(k):
+            N, D = F.exact_q[i].numer_denom()
+            D = int(D)
+            W = N * Vz                                   # A_i V = W / (D 2^S)
+            for j in range(m):
+                supp, lam = st.reps[(i, j)]
+                lint = [int(round(float(np.ldexp(c, T)))) for c in lam]
+                comb = [0] * n
+                for s_, c in zip(supp, lint):
+                    if c:
+                        s_ = int(s_)
+                        for a in range(n):
+                            comb[a] += c * Vint[a][s_]
+                # residual numerator over den = p D 2^(S+T)
+                res_abs = 0
+                for a in range(n):
+                    res_abs += abs(q * int(W[a, j]) * 2 ** T - p * D * comb[a])
+                den = p * D * 2 ** (S + T)
+                bnd = Fraction(sum(abs(c) for c in lint), 2 ** T) + C * Fraction(res_abs, den)
+                if bnd > best:
+                    best, worst = bnd, (i, j)
+    else:
+        arithmetic = "Arb ball arithmetic enclosing the exact entries"
+        with arb_precision():
+            two_S = arb(2) ** S
+            Vb = arb_mat(n, m, [arb(Vint[a][j]) / two_S for a in range(n) for j in range(m)])
+            rb = fraction_to_arb(r)
+            Cb = fraction_to_arb(C)
+            for i in range(k):
+                W = (F.arb(i) * Vb) * (1 / rb)
+                for j in range(m):
+                    supp, lam = st.reps[(i, j)]
+                    lint = [int(round(float(np.ldexp(c, T)))) for c in lam]
+                    comb = [0] * n
+                    for s_, c in zip(supp, lint):
+                        if c:
+                            s_ = int(s_)
+                            for a in range(n):
+                                comb[a] += c * Vint[a][s_]
+                    den = arb(2) ** (S + T)
+                    res = arb(0)
+                    for a in range(n):
+                        res += abs(W[a, j] - arb(comb[a]) / den)
+                    tot = arb(fmpz(sum(abs(c) for c in lint))) / arb(2) ** T + Cb * res
+                    _, hi = arb_to_fraction_bounds(tot)
+                    if hi > best:
+                        best, worst = hi, (i, j)
+    return Certificate(best, r * best, C, arithmetic, worst)

@@ -1,0 +1,89 @@
+"""Level-dependent schemes: exponential B-splines, and the registry of all level-dependent entries.
+
+Exponential B-spline schemes (Dyn–Levin; Romani) generate ``{1, e^{tx}, e^{-tx}}`` (``v > 1``) or
+``{1, cos tx, sin tx}`` (``t -> i t``, ``v < 1``), with ``v_n = cosh(t/2^{n+1})`` resp.
+``cos(t/2^{n+1})``:
+
+* degree 2 (Chaikin-like): ``a^n(z) = (1+z)(1 + 2 v_n z + z^2) / (2 (1 + v_n)) z^-2``,
+* degree 3 (cubic):       ``a^n(z) = (1+z)^2 (1 + 2 v_n z + z^2) / (4 (1 + v_n)) z^-2``.
+
+The limits are Chaikin's scheme and the cubic B-spline.
+
+Examples
+--------
+>>> e = get("exp-chaikin-trig")
+>>> e.limit()
+LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
+>>> sorted(names())[:3]
+['exp-chaikin-hyp', 'exp-chaikin-trig', 'exp-cubic-hyp']
+
+References
+----------
+N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*, J. Math.
+Anal. Appl. 193 (1995) 594-621.
+L. Romani, *From approximating subdivision schemes for exponential splines to high-performance
+interpolating algorithms*, J. Comput. Appl. Math. 224 (2009) 383-396.
+"""
+
+from __future__ import annotations
+
+import difflib
+
+import sympy as sp
+
+from analysis.levels import H, LevelDependentScheme
+from analysis.result import AnalysisError
+
+#: the frequency / tension parameter
+T = sp.Symbol("t", positive=True)
+_Z = sp.Symbol("z")
+
+
+def _from_symbol(expr, slug, title, v) -> LevelDependentScheme:
+    num = sp.Poly(sp.expand(expr * _Z ** 2), _Z)
+    coeffs = [sp.simplify(c) for c in reversed(num.all_coeffs())]
+    return LevelDependentScheme(tuple(coeffs), -2, (T,), slug=slug, title=title,
+                                source="exponential B-spline (Dyn-Levin 1995; Romani 2009)",
+                                notes=f"v_n = {v.subs(H, 2 ** -sp.Symbol('n'))}",
+                                defaults={"t": 1})
+
+
+def _chaikin(v):
+    return (1 + _Z) * (1 + 2 * v * _Z + _Z ** 2) / (2 * (1 + v)) / _Z ** 2
+
+
+def _cubic(v):
+    return (1 + _Z) ** 2 * (1 + 2 * v * _Z + _Z ** 2) / (4 * (1 + v)) / _Z ** 2
+
+
+_VH = sp.cosh(T * H / 2)
+_VT = sp.cos(T * H / 2)
+
+EXP_CHAIKIN_HYP = _from_symbol(_chaikin(_VH), "exp-chaikin-hyp", "hyperbolic exponential Chaikin", _VH)
+EXP_CHAIKIN_TRIG = _from_symbol(_chaikin(_VT), "exp-chaikin-trig", "trigonometric exponential Chaikin", _VT)
+EXP_CUBIC_HYP = _from_symbol(_cubic(_VH), "exp-cubic-hyp", "hyperbolic exponential cubic B-spline", _VH)
+EXP_CUBIC_TRIG = _from_symbol(_cubic(_VT), "exp-cubic-trig", "trigonometric exponential cubic B-spline", _VT)
+
+ENTRIES = {e.slug: e for e in (EXP_CHAIKIN_HYP, EXP_CHAIKIN_TRIG, EXP_CUBIC_HYP, EXP_CUBIC_TRIG)}
+
+
+def _registry() -> dict[str, LevelDependentScheme]:
+    from . import seed003
+
+    return {**ENTRIES, **seed003.LEVEL_ENTRIES}
+
+
+def names() -> list[str]:
+    """Slugs of all level-dependent schemes."""
+    return list(_registry())
+
+
+def get(slug: str) -> LevelDependentScheme:
+    """The level-dependent scheme named ``slug`` (one-line AnalysisError when unknown)."""
+    reg = _registry()
+    key = str(slug).strip().lower()
+    if key in reg:
+        return reg[key]
+    close = difflib.get_close_matches(key, list(reg), n=4, cutoff=0.5)
+    hint = f"; did you mean: {', '.join(close)}?" if close else f"; known: {', '.join(reg)}"
+    raise AnalysisError(f"unknown level-dependent scheme {slug!r}{hint}")
