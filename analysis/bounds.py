@@ -75,7 +75,9 @@ def _bisect(box: dict) -> list[dict]:
     if k is None:
         return []
     lo, hi = box[k]
-    m = sp.nsimplify((lo + hi) / 2) if False else (lo + hi) / 2
+    m = (lo + hi) / 2
+    if bool(lo > 0) and bool(hi > 2 * lo):  # geometric bisection: the relative width matters
+        m = sp.Rational(str(sp.N(sp.sqrt(lo * hi), 15)))
     a, b = dict(box), dict(box)
     a[k], b[k] = (lo, m), (m, hi)
     return [a, b]
@@ -94,9 +96,27 @@ def _interval(b) -> tuple:
 
 def _check_D(D: sp.Expr, box: dict, n0: int, strict: bool, N: int, max_depth: int, pieces: int) -> dict:
     """Decide D(h_n, p) > 0 (strict) or >= 0 for n >= n0, p in box."""
+    Dorig, D = D, entire_form(D)
+    done = n0
+    result = None
+    for NN in sorted({max(n0, x) for x in (4, 8, N)}):
+        result = _levels(D, box, done, NN, strict, max_depth)
+        if result["verdict"] == "refuted":
+            return result
+        done = NN
+        tail = _tail(Dorig, box, NN, strict, pieces)
+        if tail["verdict"] == "refuted":
+            return tail
+        if tail["verdict"] == "proven" and not result["unproven"]:
+            return {"verdict": "proven", "worst": result["worst"], "tail": tail}
+    return {"verdict": "unknown", "worst": result["worst"], "unproven": result["unproven"][:5],
+            "tail": tail}
+
+
+def _levels(D, box, n_from, n_to, strict, max_depth) -> dict:
     worst = None
     unproven = []
-    for n in range(n0, max(N, n0 + 1)):
+    for n in range(n_from, n_to):
         prec = 64 + 2 * n + 32
         stack = [(box, 0)]
         while stack:
@@ -117,13 +137,7 @@ def _check_D(D: sp.Expr, box: dict, n0: int, strict: bool, N: int, max_depth: in
             else:
                 unproven.append({"n": n, "box": b})
                 break
-    # n >= N: Taylor model in h
-    tail = _tail(D, box, max(N, n0), strict, pieces)
-    if tail["verdict"] == "refuted":
-        return tail
-    if unproven or tail["verdict"] != "proven":
-        return {"verdict": "unknown", "worst": worst, "unproven": unproven[:5], "tail": tail}
-    return {"verdict": "proven", "worst": worst, "tail": tail}
+    return {"verdict": "levels", "worst": worst, "unproven": unproven}
 
 
 def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
@@ -136,13 +150,16 @@ def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
         q = s.order()
     except AnalysisError:
         q = None
+    box = {k: v for k, v in box.items() if k in {p.name for p in params}}
     boxed = [k for k, v in box.items() if isinstance(v, tuple)]
     subs = [box]
     if boxed and pieces > 1:
         from .series import _split
 
         subs = _split(box, pieces)
-    for b in subs:
+    stack = [(b, 0) for b in subs]
+    while stack:
+        b, depth = stack.pop()
         with workprec(128):
             hN = flint.arb(2) ** (-N)
             env = {k: _to_ball(v, False) for k, v in b.items()}
@@ -152,8 +169,11 @@ def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
                     continue
                 return {"verdict": "unknown", "method": "stationary"}
             try:
-                mdl = taylor_models(s, b)[0]
+                mdl = taylor_models(s, b, J=q + 3)[0]
             except AnalysisError:
+                if depth < 4 and _bisect(b):
+                    stack.extend((c, depth + 1) for c in _bisect(b))
+                    continue
                 return {"verdict": "unknown", "method": "no Taylor model on this box"}
             A = mdl.abs_upper_over(q, hN) * hN ** q
             if d0 > A:
@@ -167,13 +187,16 @@ def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
                     # D(h) < 0 for all small h: find a certified counterexample level
                     pt = _mid(b)
                     for n in range(N, N + 200, 7):
-                        ep = _enc(D, pt, n, 64 + 2 * n + 64)
+                        ep = _enc(entire_form(D), pt, n, 64 + 2 * n + 64)
                         if ep < 0:
                             return {"verdict": "refuted", "counterexample": {
                                 "n": n, "point": pt, "g_minus_f": ball_to_interval(ep)}}
             elif d0 < 0:
                 return {"verdict": "refuted", "counterexample": {"n": "oo (limit)", "point": b,
                                                                  "g_minus_f": ball_to_interval(d0)}}
+            if depth < 4 and _bisect(b):
+                stack.extend((c, depth + 1) for c in _bisect(b))
+                continue
             return {"verdict": "unknown", "method": "Taylor model too weak on a sub-box", "box": b}
     return {"verdict": "proven", "N": N, "order": q,
             "method": ("Taylor model in h: leading coefficient > remainder" if sp.simplify(D0) == 0
@@ -181,7 +204,7 @@ def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
 
 
 def check_inequality(lhs, rhs, n0: int = 0, box: Mapping[str, Any] | None = None, *,
-                     strict: bool = False, N: int = 12, max_depth: int = 6, pieces: int = 4,
+                     strict: bool = False, N: int = 12, max_depth: int = 10, pieces: int = 8,
                      claim: str = "") -> Result:
     """Prove ``lhs <= rhs`` (``<`` with ``strict``) for all integers ``n >= n0`` and the box.
 
@@ -203,7 +226,6 @@ def check_inequality(lhs, rhs, n0: int = 0, box: Mapping[str, Any] | None = None
     parts = [R - L.args[0], R + L.args[0]] if isinstance(L, sp.Abs) else [R - L]
     outs = []
     for D in parts:
-        D = entire_form(sp.sympify(D))
         outs.append(_check_D(D, bx, n0, strict, N, max_depth, pieces))
     rel = "<" if strict else "<="
     stmt = f"{sp.sstr(lhs)} {rel} {sp.sstr(rhs)} for n >= {n0}"

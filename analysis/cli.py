@@ -390,7 +390,7 @@ def cmd_list(args) -> None:
     import schemes
 
     rows = []
-    for e in schemes.entries():
+    for e in schemes.entries(numeric=args.numeric):
         rows.append({"slug": e.slug, "title": e.title, "params": [p.name for p in e.params], "source": e.source})
     text = "\n".join(f"{r['slug']:28s} {('(' + ', '.join(r['params']) + ') ') if r['params'] else ''}{r['title']}"
                      for r in rows)
@@ -403,7 +403,7 @@ def cmd_list(args) -> None:
 
 #: Modules that add sub-commands: each defines ``register(subparsers)`` and uses the helpers above
 #: (``scheme_from_args``, ``_add_scheme_args``, ``_emit``). Listed here once they are complete.
-COMMAND_MODULES: tuple[str, ...] = ()
+COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity",)
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
@@ -451,6 +451,7 @@ def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
 
     s = sub.add_parser("list", help="the catalogue of named schemes")
     s.add_argument("--json", action="store_true")
+    s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
     s.set_defaults(func=cmd_list)
 
     import importlib
@@ -471,6 +472,12 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
     except KeyboardInterrupt:
         print("subdiv: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # e.g. `subdiv symbol ... | head`
+        try:
+            sys.stdout = open(os.devnull, "w")
+        except OSError:  # pragma: no cover
+            pass
+        return 0
     except Exception as exc:  # never a traceback for users; SUBDIV_DEBUG=1 shows it
         if os.environ.get("SUBDIV_DEBUG"):
             raise

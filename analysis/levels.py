@@ -210,6 +210,12 @@ def _ball(e: sp.Expr, env, cx: bool):
         v = _ball(e.args[0], env, cx)
         return abs(v)
     name = type(e).__name__
+    if name == "sinc" and not cx and e.args[0].has(sp.I):
+        # real sinc(i v) = sinh(v)/v, even and increasing in |v|: enclose by its values at the ends
+        v = _ball(sp.expand(e.args[0] / sp.I), env, False)
+        lo, hi = flint.arb(v.abs_lower()), flint.arb(v.abs_upper())
+        f = [flint.arb(1) if x == 0 else x.sinh() / x for x in (lo, hi)]
+        return f[0].union(f[1])
     if name in _FUNCS and len(e.args) == 1:
         return getattr(_ball(e.args[0], env, cx), _FUNCS[name])()
     raise AnalysisError(f"cannot evaluate {name} in ball arithmetic")

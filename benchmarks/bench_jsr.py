@@ -48,10 +48,11 @@ def families(quick: bool) -> list[tuple[str, list, str]]:
         ("golden pair", [[[1, 1], [0, 1]], [[1, 0], [1, 1]]], "rational"),
         ("D4, k=0 (Q(sqrt3))", difference_pair(d4, 0, 0), "real"),
         ("DD 4-point, k=2", difference_pair(dd4, -3, 2), "rational"),
-        ("DD 4-point, k=1", difference_pair(dd4, -3, 1), "rational"),
+        ("DD 4-point, k=1 (defective)", difference_pair(dd4, -3, 1), "rational"),
         ("DD 6-point, k=3", difference_pair(dd6, -5, 3), "rational"),
-        ("DD 6-point, k=1", difference_pair(dd6, -5, 1), "rational"),
-        ("DD 8-point, k=1", difference_pair(dd8, -7, 1), "rational"),
+        ("DD 6-point, k=1 (defective)", difference_pair(dd6, -5, 1), "rational"),
+        ("DD 8-point, k=5", difference_pair(dd8, -7, 5), "rational"),
+        ("DD 8-point, k=3", difference_pair(dd8, -7, 3), "rational"),
     ]
     rng = np.random.default_rng(2024)
     for n in ([4, 8] if quick else [4, 6, 8, 10, 12]):

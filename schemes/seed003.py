@@ -127,3 +127,58 @@ LEVEL_ENTRIES: dict[str, LevelDependentScheme] = {
     "seed003-trigonometric-normalized": TRIGONOMETRIC_NORMALIZED,
     "seed003-hyperbolic-normalized": HYPERBOLIC_NORMALIZED,
 }
+
+
+# --------------------------------------------------------------------------------------------
+# the paper's lemma inequalities and identities, as printed (checked in tests/test_bounds.py)
+# --------------------------------------------------------------------------------------------
+
+_X = ALPHA / 2 ** N  # the paper's alpha/2^n
+_C, _CH = sp.cos(_X), sp.cosh(_X)
+_Q = sp.Rational(1, 4)
+
+#: Lemma 3.1 (n > 0, 0 < alpha < pi/3), items (ii), (iii), (vi), (vii), each split into its two
+#: inequalities ``lhs <= rhs`` (strict where printed ``<``/``>``): id -> (lhs, rhs, strict).
+#: Items (i), (iv), (v), (viii) are the definitions beta_0 = -7 omega etc. (identities).
+LEMMA_3_1 = {
+    "003:Lemma3.1(ii)-lower": (3 * _Q + 9 * OMEGA, BETA[1], False),
+    "003:Lemma3.1(ii)-upper": (BETA[1], 3 * _Q / _C + 9 * OMEGA, False),
+    "003:Lemma3.1(iii)-lower": (_Q + 3 * OMEGA, BETA[2], False),
+    "003:Lemma3.1(iii)-upper": (BETA[2], _Q / _CH + 3 * OMEGA, False),  # printed with c'
+    "003:Lemma3.1(vi)-upper": (GAMMA[1], 3 * _Q + 9 * OMEGA, False),
+    "003:Lemma3.1(vi)-lower": (3 * _Q / _CH + 9 * OMEGA, GAMMA[1], True),
+    "003:Lemma3.1(vii)-upper": (GAMMA[2], _Q + 3 * OMEGA, False),
+    "003:Lemma3.1(vii)-lower": (_Q / _C + 3 * OMEGA, GAMMA[2], True),  # printed with c
+}
+#: Lemma 3.1 with c and c' exchanged in (iii) and (vii) (our correction).
+LEMMA_3_1_CORRECTED = {
+    "003:Lemma3.1(iii)-upper-corrected": (BETA[2], _Q / _C + 3 * OMEGA, False),
+    "003:Lemma3.1(vii)-lower-corrected": (_Q / _CH + 3 * OMEGA, GAMMA[2], True),
+}
+
+_H2 = 1 / sp.Integer(4) ** N
+#: Lemma 3.2 with C1 = 3 alpha^2/(8 cos alpha) as proven in the paper; C2..C4 are not given in the
+#: paper ("constants independent of n"): we check the constants the paper's method gives,
+#: C2 = alpha^2/(8 cos alpha), C3 = 3 alpha^2/8, C4 = alpha^2/8. id -> (lhs, rhs, strict).
+LEMMA_3_2 = {
+    "003:Lemma3.2(ii)": (sp.Abs(BETA[1] - 3 * _Q - 9 * OMEGA), 3 * ALPHA ** 2 / (8 * sp.cos(ALPHA)) * _H2, False),
+    "003:Lemma3.2(iii)": (sp.Abs(BETA[2] - _Q - 3 * OMEGA), ALPHA ** 2 / (8 * sp.cos(ALPHA)) * _H2, False),
+    "003:Lemma3.2(vi)": (sp.Abs(GAMMA[1] - 3 * _Q - 9 * OMEGA), 3 * ALPHA ** 2 / 8 * _H2, True),
+    "003:Lemma3.2(vii)": (sp.Abs(GAMMA[2] - _Q - 3 * OMEGA), ALPHA ** 2 / 8 * _H2, True),
+}
+
+_Zs = sp.Symbol("z")
+
+
+def lemma_3_3_e(coeffs) -> sp.Expr:
+    """The paper's e^n(z) of Lemma 3.3 / Corollary 3.1, as printed, from (b0, b1, b2, b3)."""
+    b0, b1, b2, b3 = coeffs
+    z = _Zs
+    return 2 * (b3 * z ** -4 + (b0 - b3) * z ** -3 - (b0 - b2 - b3) * z ** -2
+                + (b0 - b2 + b1 - b3) * z ** -1 + (-b0 + b3 + b2) + (b0 - b3) * z + b3 * z ** 2)
+
+
+#: Lemma 3.4's d(z) as printed.
+LEMMA_3_4_D = 2 * (5 * OMEGA * _Zs ** -4 + 2 * OMEGA * _Zs ** -3 - _Q * (1 + 20 * OMEGA) * _Zs ** -2
+                   + sp.Rational(1, 2) * (-1 - 8 * OMEGA) * _Zs ** -1 + _Q * (-1 - 20 * OMEGA)
+                   + 2 * OMEGA * _Zs + 5 * OMEGA * _Zs ** 2)

@@ -248,14 +248,11 @@ def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
     parts = []
     t_total = max(_time_left(kw["deadline"]), 0.0)
     weights = [len(b) ** 2 for b in blocks]
-    t0 = time.perf_counter()
-    spent = 0.0
     for b, wgt in zip(blocks, weights):
         share = t_total * wgt / sum(weights)
         sub = F.subfamily(b)
-        kw2 = dict(kw, deadline=time.perf_counter() + share + max(0.0, t_total - spent - share) * 0.0)
+        kw2 = dict(kw, deadline=time.perf_counter() + share)
         bb = _solve(sub, **kw2)
-        spent = time.perf_counter() - t0
         parts.append((b, bb))
     best_b, best = max(parts, key=lambda p: p[1].lower)
     uppers = [p[1].upper for p in parts]

@@ -1,0 +1,123 @@
+"""``subdiv holder`` and ``subdiv range``: certified Hölder exponents and C^k parameter ranges.
+
+Examples
+--------
+::
+
+    subdiv holder --scheme four-point --param w=1/16
+    subdiv holder --scheme dfh-chaikin-perturbation --param omega=1/50 --C 2
+    subdiv range --scheme dfh-chaikin-perturbation --C 2 --within=-1/20,1/20 --figure alpha.png
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .cli import _add_scheme_args, _emit, _int_arg, _parse_within, scheme_from_args
+from .result import AnalysisError
+
+
+def _fmt(x) -> str:
+    return "?" if x is None else f"{float(x):.10f}"
+
+
+def cmd_holder(args) -> None:
+    from .regularity import holder_exponent, smoothness, sobolev_exponent
+
+    a, label = scheme_from_args(args)
+    budget = float(args.budget)
+    h = holder_exponent(a, budget_seconds=budget)
+    lines = [f"scheme: {label}   (domain {a.domain})"]
+    if h.value is not None:
+        lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
+    else:
+        lines.append(f"Hölder exponent alpha in [{_fmt(h.lower)}, {_fmt(h.upper)}]   [{h.status}]")
+    w = h.witness
+    prod = w.get("product")
+    if prod:
+        lines.append(f"  c(z) = 2^{w['k']} a(z)/(1+z)^{w['k'] + 1};  spectrum-maximizing product T_{''.join(map(str, prod))}"
+                     + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
+    if "message" in h.provenance:
+        lines.append(f"  {h.provenance['message']}")
+    data = {"scheme": label, "alpha": h.to_json()}
+    if args.C is not None:
+        j = _int_arg(args.C, "--C")
+        s = smoothness(a, j, budget_seconds=budget)
+        verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
+        lines.append(f"{verdict}   [{s.status}] — {s.witness.get('reason')}")
+        data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason")}
+    if args.sobolev:
+        s2 = sobolev_exponent(a)
+        lines.append(f"L2-Sobolev exponent s_2 in [{_fmt(s2.lower)}, {_fmt(s2.upper)}]   [{s2.status}; "
+                     f"valid for stable shifts]")
+        data["sobolev"] = s2.to_json()
+    _emit(args, data, "\n".join(lines))
+
+
+def cmd_range(args) -> None:
+    from .regularity import alpha_curve, ck_parameter_set
+
+    a, label = scheme_from_args(args)
+    j = _int_arg(args.C, "--C")
+    within = _parse_within(args.within)
+    if not all(w.is_finite for w in within):
+        raise AnalysisError("--within needs finite bounds for a parameter range, e.g. -1/20,1/20")
+    grid = _int_arg(args.grid, "--grid")
+    if grid < 2 or grid > 400:
+        raise AnalysisError("--grid must be between 2 and 400")
+    try:
+        tol = float(args.tol)
+    except ValueError:
+        raise AnalysisError(f"--tol must be a number, not {args.tol!r}") from None
+    r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
+                         budget_seconds=float(args.budget))
+    p = r.witness["parameter"]
+    lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
+             f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
+    if not r.value:
+        lines.append("  nowhere on the grid")
+    for run in r.value:
+        def end(b, which):
+            if "open_end" in b:
+                return f"~{sp.sstr(b['open_end'])} (grid end)"
+            if "exact" in b:
+                return f"{sp.sstr(b['exact'])} ~ {b['exact_float']:.12g} [exact]"
+            lo, hi = b["bracket"]
+            return f"in [{float(lo):.12g}, {float(hi):.12g}]"
+        lines.append(f"  C^{j} from {end(run['left'], 'left')} to {end(run['right'], 'right')}")
+    for b in r.witness["boundaries"]:
+        lo, hi = b["bracket"]
+        lines.append(f"  boundary: certified C^{j} at {sp.sstr(b.get('certified_C^j_at'))}, certified not C^{j} at "
+                     f"{sp.sstr(b.get('certified_not_C^j_at'))} ({b.get('how', b['status'])})")
+    if r.witness["undecided"]:
+        lines.append("  undecided grid points: " + ", ".join(sp.sstr(x) for x in r.witness["undecided"]))
+    lines.append("  (between grid points the set is sampled, not proven)")
+    data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
+    if args.figure:
+        curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget_seconds=float(args.budget))
+        from .plots import plot_alpha_curve
+
+        plot_alpha_curve(curve, args.figure, j=j, boundaries=r.witness["boundaries"], label=label)
+        lines.append(f"figure written to {args.figure}")
+        data["figure"] = args.figure
+    _emit(args, data, "\n".join(lines))
+
+
+def register(sub) -> None:
+    s = sub.add_parser("holder", help="certified Hölder exponent (joint spectral radius), C^k verdict, Sobolev exponent")
+    _add_scheme_args(s)
+    s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
+    s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
+    s.add_argument("--budget", default="20", help="seconds for the joint spectral radius (default 20)")
+    s.set_defaults(func=cmd_holder)
+
+    s = sub.add_parser("range", help="where a one-parameter family is C^k: boundaries certified on both sides")
+    _add_scheme_args(s)
+    s.add_argument("--C", metavar="K", required=True, help="smoothness order k")
+    s.add_argument("--param-name", metavar="NAME", help="the free parameter (default: the only one)")
+    s.add_argument("--within", metavar="LOW,HIGH", required=True, help="finite parameter interval (use --within=-1,1)")
+    s.add_argument("--grid", default="16", help="number of grid cells (default 16)")
+    s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
+    s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
+    s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
+    s.set_defaults(func=cmd_range)
