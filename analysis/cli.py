@@ -403,7 +403,8 @@ def cmd_list(args) -> None:
 
 #: Modules that add sub-commands: each defines ``register(subparsers)`` and uses the helpers above
 #: (``scheme_from_args``, ``_add_scheme_args``, ``_emit``). Listed here once they are complete.
-COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity",)
+COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity", "analysis.cli_asymptotic", "analysis.cli_nonuniform",
+                                     "analysis.cli_report")
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
@@ -456,7 +457,7 @@ def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
 
     import importlib
 
-    for name in (*COMMAND_MODULES, *extra_modules):
+    for name in dict.fromkeys((*COMMAND_MODULES, *extra_modules)):  # each module once
         importlib.import_module(name).register(sub)
     return p
 

@@ -196,7 +196,7 @@ def markdown(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, s
         for fig in v.figures:
             if fig.name in figures:
                 L += ["", f"![{fig.title}](figures/{figures[fig.name]})"]
-        L += ["", f"*Reproduce:* `{c.command}`", "", f"*Evaluated in {ev.seconds:.2f} s.*" if False else "", ""]
+        L += ["", f"*Reproduce:* `{c.command}`", ""]
     return "\n".join(L).replace("\n\n\n", "\n\n")
 
 

@@ -252,6 +252,24 @@ def register_regularity_hook(fn: Callable[[LaurentSymbol, int], Result | None]) 
         REGULARITY_HOOKS.append(fn)
 
 
+def _holder_hook(a: LaurentSymbol, m: int) -> Result | None:
+    """The JSR-based verdict of :func:`analysis.regularity.smoothness` (certified C^m or not)."""
+    if not a.is_numeric:
+        return None
+    from .regularity import smoothness
+
+    r = smoothness(a, m)
+    if r.value is None:
+        return None
+    return Result(value=r.value, status=r.status,
+                  witness={"smooth": r.value, "test": "Hölder exponent (joint spectral radius)",
+                           "reason": r.witness.get("reason")},
+                  provenance=r.provenance)
+
+
+register_regularity_hook(_holder_hook)
+
+
 def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                           box: tuple[str, Any, Any] | None = None) -> Result:
     """Certify that the stationary scheme ``S_a`` is C^m (Dyn–Levin norm test, then the hooks).
@@ -295,7 +313,7 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                                   provenance={"method": "exact norm set (analysis.normset)"})
     for hook in REGULARITY_HOOKS:
         res = hook(a, m)
-        if res is not None and res.is_certified and res.witness.get("smooth"):
+        if res is not None and res.is_certified and res.witness.get("smooth") is not None:
             return res
     return Result(value=None, status=INCONCLUSIVE,
                   witness={"smooth": None, "reason": f"norm test failed for L <= {L_max}; "

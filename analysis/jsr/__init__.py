@@ -20,6 +20,9 @@ The classic pair whose JSR is the golden ratio, attained by ``A_0 A_1`` (length 
 >>> bool(r.lower <= phi <= r.upper), float(r.upper / r.lower - 1) < 1e-12
 (True, True)
 
+Entries may be ``flint.arb`` balls (uncertain reals, e.g. a mask known only by certified
+enclosures): the bounds then hold for every family inside the balls (see :func:`jsr_bounds`).
+
 Float input gives the same numbers but the status ``numerical`` (the floats are taken as the
 binary rationals they are only with ``floats_exact=True``):
 
@@ -186,6 +189,9 @@ def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
 # --------------------------------------------------------------------------------------------
 
 def _arith(F: Family) -> str:
+    if F.kind == "ball":
+        return ("Arb ball arithmetic over the input balls (the bounds hold for every family of "
+                "real matrices with entries in the balls)")
     return ("exact rational (FLINT fmpq)" if F.exact_q is not None
             else "Arb ball arithmetic enclosing the exact entries")
 
@@ -213,6 +219,8 @@ def _blocks(F: Family) -> list[list[int]]:
 
 
 def _commuting(F: Family) -> bool:
+    if F.n == 1:                       # 1 x 1 matrices commute, whatever the entries
+        return True
     if F.exact_q is None:
         return False
     for i, j in itertools.combinations(range(F.k), 2):
@@ -434,7 +442,11 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
     matrices
         A sequence of square matrices of one size: sympy matrices, nested lists (ints,
         ``Fraction``, decimal strings such as ``"0.25"``, sympy numbers such as ``sqrt(3)/4``),
-        numpy arrays or FLINT ``fmpq_mat``. Exact entries are used exactly.
+        numpy arrays or FLINT ``fmpq_mat``. Exact entries are used exactly. Entries may also be
+        ``flint.arb`` balls (nested lists or ``flint.arb_mat``): each ball is an *uncertain*
+        real number, and the bounds are then valid for **every** family whose entries lie in
+        the balls (lower: the lower end of the ball enclosure of ``rho(P_w)``; upper: the
+        polytope or norm certificate evaluated in ball arithmetic over the balls).
     max_length
         Longest product examined by the s.m.p. search and by the norm bounds.
     budget_seconds
@@ -470,6 +482,17 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
     >>> r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], method="norms", max_length=6)
     >>> r.status, float(r.lower) > 1.618, float(r.upper) > 1.62
     ('inconclusive', True, True)
+
+    Uncertain entries as Arb balls (here ``1 +/- 2^-100``): the interval covers the JSR of every
+    family inside the balls, and it is still tight:
+
+    >>> from flint import arb
+    >>> one = arb(1, arb(2) ** -100)
+    >>> r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget_seconds=5)
+    >>> import sympy as sp
+    >>> phi = (1 + sp.sqrt(5)) / 2
+    >>> r.status, r.provenance["input_kind"], bool(r.lower <= phi <= r.upper)
+    ('certified', 'ball', True)
     """
     if method not in METHODS:
         raise AnalysisError(f"unknown method {method!r}; expected one of {METHODS}")
@@ -538,6 +561,9 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
         "relative_gap": gap, "seconds": round(time.perf_counter() - t0, 4),
         "duplicates_removed": F.k - len(members),
     }
+    if F.kind == "ball":
+        prov["input_max_radius"] = _q(round_up(F.max_radius()))
+        prov["valid_for"] = "every family of real matrices whose entries lie in the input balls"
     if b.notes:
         prov["notes"] = b.notes
     if status == INCONCLUSIVE:

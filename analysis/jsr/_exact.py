@@ -6,9 +6,13 @@ A family of matrices is read once into a :class:`Family` that keeps
 * ``kind`` — ``"rational"`` (every entry in QQ: certificates use exact FLINT ``fmpq``
   arithmetic), ``"real"`` (exact real numbers such as ``sqrt(3)``: certificates use Arb balls
   that enclose the exact entries), or ``"float"`` (at least one Python/numpy float: the float is
-  read as the binary rational it represents, and certificates are exact for *those* rationals);
+  read as the binary rational it represents, and certificates are exact for *those* rationals),
+  or ``"ball"`` (at least one ``flint.arb`` entry: each ball stands for an *uncertain* real
+  number, and every certificate is evaluated in Arb ball arithmetic over the balls, so it holds
+  for **every** family of real matrices whose entries lie in the balls);
 * ``exact_q`` — ``fmpq_mat`` images (kinds ``rational`` and ``float``);
-* ``exact_sym`` — sympy matrices (kind ``real``), enclosed by :func:`arb_matrix` on demand.
+* ``exact_sym`` — sympy matrices (kind ``real``), enclosed by :func:`arb_matrix` on demand;
+* ``balls`` — ``arb_mat`` images (kind ``ball``; exact and sympy entries enclosed).
 
 Rigorous helpers: :func:`rho_enclosure` (the spectral radius of an exact or ball matrix, from
 isolated roots of the exact characteristic polynomial or Arb eigenvalue enclosures),
@@ -166,6 +170,7 @@ class Family:
     kind: str
     exact_q: list[fmpq_mat] | None = None
     exact_sym: list[sp.Matrix] | None = None
+    balls: list[arb_mat] | None = None
     _arb_cache: dict = field(default_factory=dict)
 
     @property
@@ -178,6 +183,8 @@ class Family:
 
     def arb(self, i: int) -> arb_mat:
         """Arb enclosure of matrix ``i`` at :data:`ARB_PREC` (exact entries stay exact)."""
+        if self.balls is not None:
+            return self.balls[i]
         key = (i, flint.ctx.prec)
         if key not in self._arb_cache:
             with arb_precision():
@@ -200,18 +207,39 @@ class Family:
             q = [fmpq_mat([[self.exact_q[i][r, c] for c in idx] for r in idx]) for i in members]
         if self.exact_sym is not None:
             sym = [self.exact_sym[i].extract(idx, idx) for i in members]
-        return Family(fl, self.kind, q, sym)
+        balls = None
+        if self.balls is not None:
+            balls = [arb_mat(len(idx), len(idx), [self.balls[i][r, c] for r in idx for c in idx])
+                     for i in members]
+        return Family(fl, self.kind, q, sym, balls)
+
+    def max_radius(self) -> Fraction:
+        """The largest radius of an entry ball (0 unless the kind is ``ball``)."""
+        if self.balls is None:
+            return Fraction(0)
+        out = Fraction(0)
+        for M in self.balls:
+            for r in range(M.nrows()):
+                for c in range(M.ncols()):
+                    out = max(out, arb_to_fraction_bounds(arb(M[r, c].rad()))[1])
+        return out
 
     def is_zero_entry(self, i: int, r: int, c: int) -> bool:
         """Exact test ``A_i[r, c] == 0``."""
         if self.exact_q is not None:
             return self.exact_q[i][r, c] == 0
+        if self.balls is not None:      # zero for every matrix in the ball only if exactly 0
+            return bool(self.balls[i][r, c].is_zero())
         return bool(sp.simplify(self.exact_sym[i][r, c]) == 0)
 
     def equal(self, i: int, j: int) -> bool:
         """Exact test ``A_i == A_j``."""
         if self.exact_q is not None:
             return self.exact_q[i] == self.exact_q[j]
+        if self.balls is not None:      # equal as uncertain matrices only if both are exact
+            A, B = self.balls[i], self.balls[j]
+            return all(A[r, c].is_exact() and B[r, c].is_exact() and A[r, c].mid() == B[r, c].mid()
+                       for r in range(self.n) for c in range(self.n))
         return bool((self.exact_sym[i] - self.exact_sym[j]).applyfunc(sp.simplify).is_zero_matrix)
 
     def product_q(self, word: Sequence[int]) -> fmpq_mat:
@@ -229,7 +257,15 @@ class Family:
 
 
 def _entry(x: Any) -> tuple[str, Any]:
-    """Classify one entry: ('q', Fraction) | ('f', Fraction of a float) | ('r', sympy real)."""
+    """Classify one entry: ('q', Fraction) | ('f', Fraction of a float) | ('r', sympy real) |
+    ('b', flint.arb ball)."""
+    if isinstance(x, arb):
+        if not x.is_finite():
+            raise AnalysisError(f"matrix entry {x!r} is not a finite ball")
+        if x.is_exact():
+            m, e = x.mid().man_exp()
+            return "q", _dyadic(int(m), int(e))
+        return "b", x
     if isinstance(x, (bool, np.bool_)):
         raise AnalysisError(f"matrix entry {x!r} is a boolean, not a number")
     if isinstance(x, (int, np.integer)):
@@ -289,6 +325,8 @@ def parse_family(matrices: Any) -> Family:
     'float'
     >>> parse_family([sp.Matrix([[sp.sqrt(3)]])]).kind
     'real'
+    >>> parse_family([[[flint.arb(1) / 3]]]).kind          # an uncertain entry: a ball
+    'ball'
     """
     if isinstance(matrices, np.ndarray) and matrices.ndim == 3:
         matrices = list(matrices)
@@ -312,14 +350,40 @@ def parse_family(matrices: Any) -> Family:
             raise AnalysisError(f"matrix {idx} is not square of the common size {n} x {n}")
         parsed.append([[_entry(x) for x in r] for r in rows])
     kinds = {t for P in parsed for r in P for (t, _) in r}
-    kind = "real" if "r" in kinds else ("float" if "f" in kinds else "rational")
+    kind = ("ball" if "b" in kinds else "real" if "r" in kinds else
+            "float" if "f" in kinds else "rational")
+
+    def _fl(t: str, v: Any) -> float:
+        if t == "r":
+            return float(sp.N(v, 30))
+        if t == "b":
+            return float(v.mid())
+        return float(v)
+
     floats: list[np.ndarray] = []
     for P in parsed:
-        floats.append(np.array([[float(v) if t != "r" else float(sp.N(v, 30)) for (t, v) in r]
-                                for r in P], dtype=float))
+        floats.append(np.array([[_fl(t, v) for (t, v) in r] for r in P], dtype=float))
     for i, Mf in enumerate(floats):
         if not np.all(np.isfinite(Mf)):
             raise AnalysisError(f"matrix {i} has entries too large for float64")
+    if kind == "ball":
+        if "f" in kinds:
+            raise AnalysisError("a family mixes float entries with Arb balls: give the uncertain "
+                                "entries as balls and the known ones exactly")
+        balls = []
+        with arb_precision():
+            for P in parsed:
+                vals = []
+                for r in P:
+                    for (t, v) in r:
+                        if t == "b":
+                            vals.append(v)
+                        elif t == "r":
+                            vals.append(sympy_to_arb(v))
+                        else:
+                            vals.append(fraction_to_arb(v))
+                balls.append(arb_mat(n, n, vals))
+        return Family(floats, kind, None, None, balls)
     if kind == "real":
         sym = [sp.Matrix([[sp.Rational(v.numerator, v.denominator) if t != "r" else v
                            for (t, v) in r] for r in P]) for P in parsed]

@@ -1,0 +1,70 @@
+"""Tests of analysis.bounds on seed 003's lemmas and identities (verdicts computed, not typed in)."""
+
+from __future__ import annotations
+
+import pytest
+import sympy as sp
+
+from analysis.bounds import check_identity, check_inequality
+from analysis.levels import N
+from schemes import seed003 as S
+
+BOX = {"alpha": ("1/100", "pi/3"), "omega": "1/100"}
+
+
+def _box_for(lhs, rhs):
+    names = {s.name for s in (sp.sympify(lhs).free_symbols | sp.sympify(rhs).free_symbols)}
+    return {k: v for k, v in BOX.items() if k in names}
+
+
+@pytest.mark.parametrize("cid", list(S.LEMMA_3_1), ids=list(S.LEMMA_3_1))
+def test_lemma_3_1_items(cid):
+    lhs, rhs, strict = S.LEMMA_3_1[cid]
+    r = check_inequality(lhs, rhs, 1, _box_for(lhs, rhs), strict=strict, claim=cid)
+    # (iii) upper and (vii) lower use c and c' the wrong way round: false for every alpha > 0
+    expected = "refuted" if cid in ("003:Lemma3.1(iii)-upper", "003:Lemma3.1(vii)-lower") else "certified"
+    assert r.status == expected, r.witness
+    if expected == "refuted":
+        assert r.witness["counterexample"]["n"] >= 1
+
+
+@pytest.mark.parametrize("cid", list(S.LEMMA_3_1_CORRECTED), ids=list(S.LEMMA_3_1_CORRECTED))
+def test_lemma_3_1_corrected(cid):
+    lhs, rhs, strict = S.LEMMA_3_1_CORRECTED[cid]
+    assert check_inequality(lhs, rhs, 1, _box_for(lhs, rhs), strict=strict).status == "certified"
+
+
+@pytest.mark.parametrize("cid", ["003:Lemma3.2(ii)", "003:Lemma3.2(vi)"], ids=["ii", "vi"])
+def test_lemma_3_2(cid):
+    lhs, rhs, strict = S.LEMMA_3_2[cid]
+    assert check_inequality(lhs, rhs, 0, _box_for(lhs, rhs), strict=strict).status == "certified"
+
+
+def test_too_small_constant_is_refuted():
+    """C = 7 alpha^2/128 * 0.9 is below the sharp asymptotic constant: refuted at some level."""
+    lhs = sp.Abs(S.BETA[1] - sp.Rational(3, 4) - 9 * S.OMEGA)
+    rhs = sp.Rational(9, 10) * sp.Rational(7, 128) * S.ALPHA ** 2 / 4 ** N
+    r = check_inequality(lhs, rhs, 0, {"alpha": 1, "omega": "1/100"})
+    assert r.status == "refuted"
+
+
+@pytest.mark.parametrize("form, total", [(S.TRIGONOMETRIC, S.BETA_SUM), (S.HYPERBOLIC, S.GAMMA_SUM)],
+                         ids=["beta-sum", "gamma-sum"])
+def test_normalization_sums_are_proven(form, total):
+    assert check_identity(form.stencil_sum(), total).status == "certified"
+
+
+@pytest.mark.parametrize("coeffs, form", [(S.BETA, S.TRIGONOMETRIC), (S.GAMMA, S.HYPERBOLIC)],
+                         ids=["lemma-3.3", "corollary-3.1"])
+def test_lemma_3_3_factorization_proven(coeffs, form):
+    z = sp.Symbol("z")
+    e = S.lemma_3_3_e(coeffs)
+    assert check_identity(form.symbol_expr(), (1 + z) / 2 * e).status == "certified"
+
+
+def test_lemma_3_4_d_is_refuted_and_minus_d_is_the_limit():
+    z = sp.Symbol("z")
+    e = S.TRIGONOMETRIC.difference(1).limit().expr()
+    assert check_identity(S.LEMMA_3_4_D, e).status == "refuted"
+    assert check_identity(S.LEMMA_3_4_D, -e).status == "certified"
+    assert S.LEMMA_3_4_D.subs(z, 1) == -2
