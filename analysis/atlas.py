@@ -457,7 +457,10 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
 
     mask, start, pnames = _payload(symbol)
     samples: dict[tuple[int, int], dict] = {}
-    generic_k = _generic_k(symbol)
+    # an axis with one point is a fixed value: 'generic' refers to the sampled set
+    fixed = {p: lo for p, n, lo in ((p1, n1, lo1), (p2, n2, lo2)) if n == 1}
+    region = symbol.subs(fixed) if fixed else symbol
+    generic_k = _generic_k(region)
 
     def tasks_for(keys):
         out = []
@@ -523,7 +526,7 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
                                   sp.Rational(0) if N2 == 0 else (hi2 - lo2) / N2)},
         "counts": {"samples": len(rows), "certified": certified, "inconclusive": len(rows) - certified,
                    "per_level": per_level, "refined_cells": refined_cells, "verdicts": tallies},
-        "exceptional": _exceptional(symbol),
+        "exceptional": _exceptional(region),
         "generic_k": generic_k,
         "exceptional_samples": sum(1 for r in rows if r["exceptional"]),
         "seconds": round(wall, 3),

@@ -403,8 +403,8 @@ def cmd_list(args) -> None:
 
 #: Modules that add sub-commands: each defines ``register(subparsers)`` and uses the helpers above
 #: (``scheme_from_args``, ``_add_scheme_args``, ``_emit``). Listed here once they are complete.
-COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity", "analysis.cli_asymptotic", "analysis.cli_nonuniform",
-                                     "analysis.cli_report")
+COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity", "analysis.cli_atlas", "analysis.cli_asymptotic",
+                                     "analysis.cli_nonuniform", "analysis.cli_report")
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:

@@ -83,3 +83,185 @@ def check(claim_id: str) -> Result:
         return _BY_ID[claim_id]()
     except KeyError:
         raise AnalysisError(f"unknown claim {claim_id!r}; seed 000 has {', '.join(_BY_ID)}") from None
+
+
+# ============================================================================================
+# The paper's claims (proof-check): PAPER = Paper(...), evaluated by `subdiv report 000`.
+# Verdicts come from the engine (analysis.nonuniform) and exact identities, never typed in.
+# ============================================================================================
+
+import math  # noqa: E402
+
+from analysis import claims as C  # noqa: E402
+
+from . import seed001 as _s001  # noqa: E402  (shared exact identities of the NVPS)
+
+_CMD = "subdiv report 000 --claim '{}'"
+
+
+def _v_eta():
+    r = claim_eta()
+    lam = sp.Symbol("lambda")
+    u = sp.Symbol("u")
+    eta = 1 / (2 * (1 + lam))
+    rule3 = {"P_i in P_2i": (1 + 2 * u) / (2 * (1 + u)), "P_i+1 in P_2i": 1 / (2 * (1 + u)),
+             "P_i in P_2i+1": 1 / (2 * (1 + u)), "P_i+1 in P_2i+1": (1 + 2 * u) / (2 * (1 + u))}
+    ours = {"P_i in P_2i": 1 - eta, "P_i+1 in P_2i": eta, "P_i in P_2i+1": eta, "P_i+1 in P_2i+1": 1 - eta}
+    ok = all(sp.simplify(ours[k] - v.subs(u, lam)) == 0 for k, v in rule3.items())
+    res = C.exact_result(ok, "sympy, generic lambda")
+    ev = [C.Evidence("S_2 vs seed 001's rule (3) (u = lambda)", result=res,
+                     table=(("coefficient", "seed 000", "seed 001 (3)"),) + tuple(
+                         (k, sp.sstr(sp.simplify(ours[k])), sp.sstr(v.subs(u, lam))) for k, v in rule3.items())),
+          C.Evidence("engine", result=r)]
+    fixed = sp.simplify(eta.subs(lam, 1)) == sp.Rational(1, 4)
+    if ok and r.status == CERTIFIED and fixed:
+        return C.certified("S_2 is seed 001's degree-2 rule (3) with u = lambda (exact); lambda = 1 gives "
+                           "eta = 1/4, Chaikin's algorithm; every step is a convex combination for lambda >= 0 "
+                           "(0 < eta <= 1/2).", evidence=ev, numbers=[C.Number("eta(1)", sp.Rational(1, 4))])
+    return C.refuted("S_2 differs from seed 001's rule", "see evidence", evidence=ev)
+
+
+def _v_tau():
+    rows, bad = [], []
+    for d in range(3, 11):
+        x = sp.Rational(d - 2, 2)
+        ceil = sp.ceiling(x)
+        gloss = sp.floor(x) + 1           # 'the smallest integer larger than x'
+        rows.append((str(d), sp.sstr(x), str(ceil), str(gloss), "yes" if ceil == gloss else "NO"))
+        if ceil != gloss:
+            bad.append(d)
+    res = C.exact_result(bad, "exact integers")
+    ev = [C.Evidence("ceil((d-2)/2) vs 'the smallest integer larger than (d-2)/2'", result=res,
+                     table=(("d", "(d-2)/2", "ceil", "smallest integer > x", "agree"),) + tuple(rows))]
+    if bad:
+        return C.refuted(f"The gloss is wrong whenever x is an integer, i.e. for every even d (d = {bad[0]}, "
+                         f"{bad[1]}, ...): the smallest integer larger than x = (d-2)/2 is x + 1, not ceil(x) = x. "
+                         "Either reading only shifts the indices of S_d (no effect on the limit curve).",
+                         corrected="tau_d = ceil((d-2)/2) = floor((d-1)/2), where ceil(x) is the smallest integer "
+                                   "not less than x",
+                         evidence=ev, numbers=[C.Number("first_even_d", bad[0])])
+    return C.certified("gloss agrees", evidence=ev)
+
+
+def _v_s_d():
+    r = claim_s_d()
+    ok_b, ev_b = _s001._bspline_special_case()
+    per = r.witness
+    rows = tuple((str(d), r.value[d], str(per[d]["tau_d"])) for d in per)
+    cmp_ok = all(nu.compare_definitions(d, levels=1).witness["one_step_equal_up_to_shift"] for d in range(2, 7))
+    ev = [C.Evidence("seed 000's S_d vs seed 001's (6) (exact rational refinement)", result=r,
+                     table=(("d", "relation", "tau_d"),) + rows),
+          C.Evidence("one step with equal edge parameters: equal up to the shift tau_d, d = 2..6",
+                     result=C.exact_result(cmp_ok, "exact rational refinement")), ev_b]
+    if cmp_ok and ok_b:
+        return C.certified("True as a definition: (S_d f)_i is d - 2 pairwise averages of S_2 f (seed 001's (6)) "
+                           "shifted by tau_d; with lambda = 1 it is the uniform B-spline of degree d (so 'order d' "
+                           "here means degree d: the B-spline of order d + 1).",
+                           evidence=ev, numbers=[C.Number("tau_4", per[4]["tau_d"]), C.Number("tau_5", per[5]["tau_d"])])
+    return C.refuted("S_d is not the averaged S_2", "see evidence", evidence=ev)
+
+
+def _v_update():
+    rows, even_diff, odd_same = [], [], []
+    for d in range(2, 8):
+        r = nu.compare_definitions(d, levels=3)
+        w = r.witness
+        rows.append((str(d), str(w["multi_level_equal"]), str(w["seed000_is_mirror_of_seed001"]), r.value))
+        (odd_same if d % 2 and w["multi_level_equal"] else even_diff if not w["multi_level_equal"] else []).append(d)
+    lam = nu.lemma_2_1(0, 100)
+    res = C.exact_result({"differ": even_diff, "equal": odd_same}, "exact rational refinement (compare_definitions)")
+    ev = [C.Evidence("3 levels of seed 000 vs seed 001 (same data, same initial parameters, exact)", result=res,
+                     table=(("d", "equal after 3 levels", "seed 000 = mirror image of 001", "relation"),) + tuple(rows)),
+          C.Evidence("lambda^k -> 1, ||Lambda^k|| <= max(1, ||Lambda^0||) for lambda^0 in [0, 100]", result=lam)]
+    if even_diff and all(d % 2 == 0 for d in even_diff):
+        return C.refuted(
+            "As the parameter update of seed 001's NVPS (the journal version) it disagrees for even d: seed 000 gives "
+            "both children of edge i the parameter of edge i, seed 001's (2) gives the corner edge 2i+1 that of edge "
+            "i+1. Both are valid schemes (for even d mirror images of each other; for odd d, with the shift tau_d, "
+            "the same scheme), and lambda^k -> 1 in both.",
+            corrected="lambda^{k+1}_{2i} = lambda^{k+1}_{2i+1} = sqrt((1 + lambda^k_i)/2) defines seed 001's NVPS only "
+                      "for odd d; for even d seed 001 uses u^{k+1}_{2i} = sqrt((1+u^k_i)/2), "
+                      "u^{k+1}_{2i+1} = sqrt((1+u^k_{i+1})/2), the mirror image of this rule",
+            evidence=ev, numbers=[C.Number("even_degrees_differing", len(even_diff)),
+                                  C.Number("odd_degrees_equal", len(odd_same))])
+    return C.certified("the updates agree", evidence=ev)
+
+
+def _v_reproduction():
+    ids, ev_exact = _s001._exp_evidence()
+    r = nu.reproduce("circle", degree=2, levels=8)
+    ev_num = C.Evidence("float64 replay, circle, d = 2, 8 levels (illustration)",
+                        text=f"form error of the level-8 polygon {r.witness['form_error'][-1]:.1e}")
+    ok = all(ids[k] for k in ("geometric", "update", "factor"))
+    fig = _s001._blended_figure("000-blended", "seed000")
+    if ok:
+        return C.certified(
+            "True: an edge sequence with lambda = cos(phi) on a regular polygon of angle step 2 phi (suitably scaled) "
+            "is mapped by S_2 and the update to a regular polygon of step phi with lambda = cos(phi/2) (exact "
+            "identities), so trigonometric (and, with cosh, hyperbolic) pieces are reproduced; pieces with "
+            "different lambda are blended in one curve (figure).",
+            evidence=[ev_exact, ev_num], figures=[fig],
+            numbers=[C.Number("form_error_below_1e-12", bool(r.witness["form_error"][-1] < 1e-12))])
+    return C.refuted("an identity fails", "see evidence", evidence=[ev_exact, ev_num], figures=[fig])
+
+
+def _v_regularity():
+    eq = _s001._v_equivalence()
+    js = {d: nu.junction_smoothness(d, 0.3, 4.0, levels=14, rule="seed000") for d in (2, 3, 4)}
+    ev = list(eq.evidence) + [C.Evidence(
+        "(d-1)-th divided differences at a junction lambda = 0.3 | 4, seed 000's rules (mpmath)",
+        result=js[4], table=(("d", "verdict", "last omega_k"),) + tuple(
+            (str(d), j.value, f"{j.witness['omega_junction'][-1]:.3e}") for d, j in js.items()))]
+    return C.inconclusive(
+        "The relation holds (certified for seed 001's indexing, the same masks up to the index shift): the scheme "
+        "is asymptotically equivalent to the uniform B-spline of degree d, the mask distances decaying like 4^-k. "
+        "The abstract states no regularity result; numerically the limit is C^(d-1) at parameter junctions for "
+        "d = 2, 3 only (d = 4: the third divided differences do not converge), as for seed 001 (Theorem 3.6).",
+        settle="the regularity theorem itself (not in the abstract): see 001:Theorem3.6 and 001:(19); asymptotic "
+               "equivalence gives C^0 and, with sum 2^k ||.|| < oo, C^1 only; higher orders need Property A.",
+        evidence=ev, numbers=[C.Number("omega_d4_junction", js[4].witness["omega_junction"][-1], tol=0.05)])
+
+
+def _c(cid, kind, statement, fn, title, *, reading=None, note=None, command=None, location=""):
+    return C.Claim(id=cid, kind=kind, statement=statement, evaluate=fn, title=title, reading=reading,
+                   reading_note=note, objects=("nvps000-d",), command=command or _CMD.format(cid), location=location)
+
+
+PAPER_CLAIMS = [
+    _c("000:S_2", "mask identity", "f_{2i}^{k+1} = (1 - η(λ_i^k))f_i^k + η(λ_i^k)f_{i+1}^k, f_{2i+1}^{k+1} = "
+       "η(λ_i^k)f_i^k + (1 - η(λ_i^k))f_{i+1}^k, where η(x) := 1/(2(1+x)).", _v_eta, "The order-2 rule S_2",
+       location="Proposed subdivision schemes",
+       command="subdiv nonuniform refine --degree 2 --points '0,0;1,0;1,1;0,1' --u 1 --closed --rule seed000"),
+    _c("000:update", "identity", "The shape parameters λ_i^k are updated by the rule λ_{2i}^{k+1} = λ_{2i+1}^{k+1} = "
+       "√((1 + λ_i^k)/2).", _v_update, "Parameter update (vs seed 001)",
+       reading="the parameter update of the NVPS of seed 001 (the journal version of the same scheme by the same "
+               "authors), for every order d",
+       note="On its own the rule is a valid definition; the check compares it with seed 001's rule (2) and "
+            "Algorithm 1, which the abstract's scheme is meant to be.", location="Proposed subdivision schemes",
+       command="subdiv nonuniform compare-definitions --degree 4 --levels 3"),
+    _c("000:tau_d", "identity", "For d > 2, let τ_d = ⌈(d-2)/2⌉, where ⌈x⌉ indicates the smallest integer larger "
+       "than x.", _v_tau, "The shift tau_d", location="Proposed subdivision schemes"),
+    _c("000:S_d", "identity", "The d th-order scheme S_d is defined as (S_d f^k)_i = 1/2^{d-2} Σ_{j=0}^{d-2} "
+       "binom(d-2, j) (S_2 f^k)_{i+j-τ_d}, d > 2.", _v_s_d, "The order-d scheme S_d",
+       location="Proposed subdivision schemes",
+       command="subdiv nonuniform compare-definitions --degree 5 --levels 3"),
+    _c("000:reproduction", "reproduction", "In each refinement step, the shape parameters are updated by the rule "
+       "such that locally different analytic curves like trigonometric curves can be reproduced and blended.",
+       _v_reproduction, "Trigonometric curves reproduced and blended", location="Abstract",
+       command="subdiv nonuniform reproduce --kind circle --degree 2 --levels 8 --figure blended.png"),
+    _c("000:regularity", "smoothness", "The regularity of the limit curves is discussed based on the asymptotically "
+       "equivalent relation.", _v_regularity, "Regularity via asymptotic equivalence", location="Abstract",
+       command="subdiv nonuniform junction --degree 4 --u-left 0.3 --u-right 4 --levels 14 --rule seed000"),
+]
+
+PAPER = C.Paper(
+    id="000",
+    title="Non-uniform Subdivision Schemes Reproducing Locally Different Curves",
+    citation="M. Fang, B. Jeong, J. Yoon, Non-uniform subdivision schemes reproducing locally different curves "
+             "(conference abstract, 2 pp.)",
+    claims=PAPER_CLAIMS,
+    source="shared/seeds/000_84b01bf47b0a175e.txt",
+    notes=("The conference version of seed 001's NVPS, with shape parameters lambda (seed 001's u) on the edges. "
+           "The schemes are analysis.nonuniform.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
+           "content is the definition (compared exactly with seed 001) and two informal claims."),
+)

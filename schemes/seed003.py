@@ -9,7 +9,8 @@ rule (1)::
     f_{2i+1} = -5w f_{i-1} + (1/4+3w) f_i + (3/4+9w) f_{i+1} - 7w f_{i+2}
 
 with w = omega. The paper states: omega = 0 is Chaikin's scheme; C^1 for omega = 0 and C^2 for
-0 < omega < (sqrt(6)-1)/80. (The claims will be added to this module.)
+0 < omega < (sqrt(6)-1)/80. The paper's checkable claims are ``PAPER`` at the end of this module
+(``subdiv report 003``).
 
 Examples
 --------
@@ -120,12 +121,29 @@ TRIGONOMETRIC_NORMALIZED = _normalized(TRIGONOMETRIC, BETA_SUM, "seed003-trigono
 #: Scheme (5): (3) divided by its stencil sum.
 HYPERBOLIC_NORMALIZED = _normalized(HYPERBOLIC, GAMMA_SUM, "seed003-hyperbolic-normalized", 5)
 
+#: The comparison scheme [11] of Sections 6-7 (M. K. Jena, P. Shunmugaraj, P. C. Das, ANZIAM J. 44
+#: (2003) E216-E235), *as we reconstruct it*: the paper does not print it. It is the interpolatory
+#: 4-point scheme ``f_{2i} = f_i``, ``f_{2i+1} = -w_n (f_{i-1} + f_{i+2}) + (1/2 + w_n)(f_i + f_{i+1})``
+#: with ``w_n = 1/(16 cos^2(alpha/2^{n+2}) cos(alpha/2^{n+1}))``, the unique symmetric interpolatory
+#: 4-point rule that reproduces {1, cos(alpha x), sin(alpha x)} (certified in the Sect. 6 claim);
+#: w_n -> 1/16 (the DD 4-point scheme).
+_W11 = 1 / (16 * sp.cos(ALPHA / 2 ** (N + 2)) ** 2 * sp.cos(ALPHA / 2 ** (N + 1)))
+JENA_11 = LevelDependentScheme.from_rules(
+    even=[0, 1, 0, 0], odd=[-_W11, sp.Rational(1, 2) + _W11, sp.Rational(1, 2) + _W11, -_W11], first=-1,
+    params=(ALPHA,), slug="seed003-jena-11", title="interpolatory trigonometric 4-point scheme [11] (reconstructed)",
+    source="M. K. Jena, P. Shunmugaraj, P. C. Das, ANZIAM J. 44 (E) (2003) E216-E235 (seed 003 ref. [11]), "
+           "reconstructed from its defining property",
+    notes="f_2i = f_i, f_2i+1 = -w (f_i-1 + f_i+2) + (1/2 + w)(f_i + f_i+1), "
+          "w_n = 1/(16 cos^2(alpha/2^(n+2)) cos(alpha/2^(n+1)))",
+    defaults={"alpha": sp.pi / 5})
+
 #: The level-dependent schemes of the paper, by slug.
 LEVEL_ENTRIES: dict[str, LevelDependentScheme] = {
     "seed003-trigonometric": TRIGONOMETRIC,
     "seed003-hyperbolic": HYPERBOLIC,
     "seed003-trigonometric-normalized": TRIGONOMETRIC_NORMALIZED,
     "seed003-hyperbolic-normalized": HYPERBOLIC_NORMALIZED,
+    "seed003-jena-11": JENA_11,
 }
 
 

@@ -82,6 +82,7 @@ from flint import arb, arb_mat, fmpq, fmpq_mat
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
 from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_expression,
                      parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
+from ._hp import certify_polytope_hp
 from ._polytope import build_polytope, certify_polytope, leading_is_real, leading_roots
 from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
 
@@ -345,6 +346,15 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
                     "stop_reason": st.stop_reason})
     if st.closed:
         cert = certify_polytope(F, r, st)
+        if cert is None or not (lower > 0 and cert.upper <= lower * (1 + Fraction(rel_gap) / 4)):
+            # the float roots are not exact eigenvectors: rebuild the same polytope at high
+            # precision and re-solve every membership in a local basis
+            try:
+                hp = certify_polytope_hp(F, r, st, [w for _, w in cands], float(r))
+            except (ArithmeticError, ValueError, ZeroDivisionError):  # pragma: no cover
+                hp = None
+            if hp is not None and (cert is None or hp.upper < cert.upper):
+                cert = hp
         if cert is not None:
             upper = cert.upper
             cert_info = {"scale_r": r, "certified_norm_bound": cert.bound,

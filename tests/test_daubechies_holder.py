@@ -1,0 +1,121 @@
+"""Certified Hölder exponents of Daubechies' scaling functions from ball-valued masks.
+
+The masks D6 ... D40 are known only by certified Arb enclosures (``schemes.wavelets``); the
+exponents come from :func:`analysis.regularity.holder_exponent_enclosure` (JSR bounds valid for
+every mask in the balls). They are compared with the published values in
+``tests/data/daubechies_holder.csv`` to the published digits, and for D4 with the closed form
+``2 - log2(1 + sqrt 3)`` (Daubechies–Lagarias 1992).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import time
+from pathlib import Path
+
+import flint
+import pytest
+import sympy as sp
+
+import schemes
+from analysis.jsr import jsr_bounds
+from analysis.regularity import (ball_divide_by_one_plus_z, ball_transition_matrices,
+                                 holder_exponent, holder_exponent_enclosure)
+
+DATA = Path(__file__).parent / "data" / "daubechies_holder.csv"
+PUBLISHED = {row["slug"]: row for row in csv.DictReader(DATA.open())}
+
+
+def _certified(slug: str, budget: float = 30.0):
+    t = time.perf_counter()
+    r = holder_exponent_enclosure(schemes.get(slug), budget_seconds=budget, rel_gap=1e-8)
+    return r, time.perf_counter() - t
+
+
+def _agrees_to_digits(r, alpha: float, decimals: int) -> bool:
+    """The certified enclosure meets the interval of numbers that round to ``alpha``."""
+    half = 0.5 * 10.0 ** (-decimals)
+    return float(r.lower) <= alpha + half and float(r.upper) >= alpha - half
+
+
+@pytest.mark.parametrize("slug", ["daubechies-4", "daubechies-6", "daubechies-8",
+                                  "daubechies-10", "daubechies-12"])
+def test_published_values(slug):
+    r, dt = _certified(slug)
+    assert r.status == "certified"
+    assert r.lower <= r.upper and float(r.upper - r.lower) < 1e-8
+    row = PUBLISHED[slug]
+    assert _agrees_to_digits(r, float(row["alpha"]), int(row["decimals"])), (
+        slug, float(r.lower), float(r.upper), row["alpha"])
+    assert r.witness["alpha_exact"].startswith(f"{r.witness['k']} - log2(rho(T_")
+    assert dt < 20
+
+
+def test_d4_closed_form_and_backends_agree():
+    """D4: exact symbol over Q(sqrt 3) (exact back end) vs its ball enclosure (interval back
+    end); both contain 2 - log2(1 + sqrt 3)."""
+    exact_alpha = 2 - sp.log(1 + sp.sqrt(3), 2)
+    e = schemes.get("daubechies-4")
+    rb = holder_exponent_enclosure(e)
+    rx = holder_exponent(e.symbol)
+    rs = holder_exponent_enclosure(e.symbol)          # exact symbol, enclosed in balls
+    for r in (rb, rx, rs):
+        assert r.status == "certified"
+        assert bool(sp.Le(r.lower, exact_alpha)) and bool(sp.Le(exact_alpha, r.upper))
+        assert float(r.upper - r.lower) < 1e-15
+    # 0.5500 published; the closed form is 0.550015686...
+    assert round(float(rb.lower), 4) == 0.5500
+    assert abs(float(rb.lower) - 0.5500156865235) < 1e-12
+
+
+def test_intervals_agree_across_precisions_and_tighten():
+    """Bounds valid at any precision; wider balls give wider (but overlapping) intervals, and
+    more effort (tighter target) never loosens them."""
+    e = schemes.get("daubechies-8")
+    coarse = holder_exponent_enclosure(e, prec=40)
+    fine = holder_exponent_enclosure(e, prec=200)
+    assert coarse.lower <= fine.upper and fine.lower <= coarse.upper
+    assert float(coarse.upper - coarse.lower) >= float(fine.upper - fine.lower)
+    loose = holder_exponent_enclosure(e, rel_gap=1e-2, budget_seconds=5)
+    tight = holder_exponent_enclosure(e, rel_gap=1e-10, budget_seconds=30)
+    assert loose.lower <= tight.lower <= tight.upper <= loose.upper or (
+        float(tight.upper - tight.lower) <= float(loose.upper - loose.lower))
+
+
+def test_ball_family_bounds_cover_every_member():
+    """A ball family: the certified interval contains the JSR of the midpoint family and of
+    perturbed members inside the balls."""
+    e = schemes.get("daubechies-6")
+    with flint.ctx.workprec(200):
+        c = [x * 4 for x in ball_divide_by_one_plus_z(e.enclosure(60), 3)]
+        T0, T1 = ball_transition_matrices([flint.arb(x.mid(), flint.arb(2) ** -30) for x in c])
+    r = jsr_bounds([T0, T1], budget_seconds=10)
+    assert r.provenance["input_kind"] == "ball" and r.lower <= r.upper
+    import numpy as np
+    for shift in (-1, 0, 1):
+        M = [np.array([[float(x.mid()) + shift * 2.0 ** -31 if not isinstance(x, int) else 0.0
+                        for x in row] for row in T], dtype=float) for T in (T0, T1)]
+        rho = max(max(abs(np.linalg.eigvals(A))) for A in M)   # <= JSR of that member
+        assert float(r.lower) <= rho * (1 + 1e-12) and rho <= float(r.upper) * (1 + 1e-12)
+    # uncertainty of 2^-30 costs at most ~2^-28 relative
+    assert float(r.upper / r.lower - 1) < 1e-7
+
+
+def test_division_rejects_wrong_sum_rule_order():
+    from analysis import AnalysisError
+
+    with pytest.raises(AnalysisError):
+        holder_exponent_enclosure(schemes.get("daubechies-6").enclosure(100), sum_rules=4)
+    with pytest.raises(AnalysisError):
+        holder_exponent_enclosure(schemes.get("daubechies-6").enclosure(100))   # N missing
+
+
+@pytest.mark.parametrize("N", [7, 8, 9])
+def test_larger_daubechies_certified(N):
+    """D14, D16, D18: certified (invariant polytope, high-precision certificate), consistent with
+    the float values of Guglielmi–Protasov (2016)."""
+    expected = {7: 2.4604, 8: 2.7608, 9: 3.0736}[N]
+    r, dt = _certified(f"daubechies-{2 * N}", budget=60)
+    assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
+    assert abs(float(r.lower) - expected) < 1e-4
