@@ -298,3 +298,47 @@ def test_bad_input(bad):
 def test_bad_method():
     with pytest.raises(AnalysisError):
         jsr_bounds([[[1]]], method="magic")
+
+
+# --------------------------------------------------------------------------------------------
+# ball-valued (uncertain) families
+# --------------------------------------------------------------------------------------------
+
+def test_ball_family_certified_and_contains_every_member():
+    from flint import arb
+
+    eps = arb(2) ** -60
+    one = arb(1, eps)
+    r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget_seconds=5)
+    assert r.status == "certified" and r.provenance["input_kind"] == "ball"
+    assert contains(r, PHI) and gap(r) < 1e-15
+    # exactly known balls (radius 0) are read exactly: same result as the rational family
+    re_ = jsr_bounds([[[arb(1), 1], [0, 1]], [[1, 0], [1, arb(1)]]], budget_seconds=5)
+    assert re_.provenance["input_kind"] == "rational" and contains(re_, PHI)
+
+
+def test_ball_entries_containing_zero_are_not_structural_zeros():
+    """A ball around 0 may be nonzero: the block-triangular shortcut must not use it."""
+    from flint import arb
+
+    tiny = arb(0, arb(2) ** -40)
+    r = jsr_bounds([[[2, 0], [tiny, 1]], [[1, 1], [0, 3]]], budget_seconds=5)
+    assert "block" not in r.provenance["method"]
+    assert r.lower <= 3 <= r.upper and gap(r) < 1e-6       # the member tiny = 0 has JSR 3
+    rb = jsr_bounds([[[2, 0], [0, 1]], [[1, 1], [0, 3]]])   # exactly 0: block triangular
+    assert rb.value == 3 and "block" in rb.provenance["method"]
+
+
+def test_ball_and_exact_d4_agree():
+    """D4 difference pair (1x1): exact Q(sqrt 3) entries vs Arb balls around them."""
+    import flint
+
+    s3 = sp.sqrt(3)
+    exact = jsr_bounds([[[(1 + s3) / 2]], [[(1 - s3) / 2]]])
+    with flint.ctx.workprec(200):
+        b = (1 + flint.arb(3).sqrt()) / 2
+        c = (1 - flint.arb(3).sqrt()) / 2
+    ball = jsr_bounds([[[b]], [[c]]])
+    assert exact.status == ball.status == "certified"
+    assert contains(exact, (1 + s3) / 2) and contains(ball, (1 + s3) / 2)
+    assert ball.lower <= exact.upper and exact.lower <= ball.upper

@@ -442,27 +442,48 @@ def rho_enclosure(F: Family, word: Sequence[int]) -> tuple[Fraction, Fraction]:
 
 def exact_rho_expression(F: Family, word: Sequence[int]) -> sp.Expr | None:
     """For rational families and small sizes: the exact algebraic number ``rho(P_w)^(1/L)`` as a
-    sympy expression (radicals when the factor has degree <= 2, else a ``CRootOf``); else None."""
-    if F.exact_q is None or F.n > 6:
+    sympy expression (radicals when the dominant eigenvalue's factor has degree <= 2, else a real
+    ``CRootOf``); None when the dominant eigenvalue is a non-real root of degree > 2.
+
+    The dominant root is chosen with FLINT's certified complex root balls (fast); the expression
+    is only a witness for display — the bounds never depend on it."""
+    if F.exact_q is None or F.n > 8:
         return None
     try:
+        from flint import fmpq_poly
+
         P = F.product_q(word)
         M = sp.Matrix([[sp.Rational(int(P[r, c].p), int(P[r, c].q)) for c in range(F.n)]
                        for r in range(F.n)])
         x = sp.Symbol("x")
-        best, best_abs = None, -1.0
-        for fac, _m in sp.factor_list(M.charpoly(x).as_expr(), x)[1]:
-            d = sp.degree(fac, x)
-            roots = sp.roots(sp.Poly(fac, x)) if d <= 2 else {sp.CRootOf(fac, i): 1 for i in range(d)}
-            for z in roots:
-                a = abs(complex(sp.N(z, 30)))
-                if a > best_abs * (1 + 1e-12):
-                    best, best_abs = z, a
+        cp = sp.Poly(M.charpoly(x).as_expr(), x, domain=sp.QQ)
+        best = None  # (modulus upper, modulus lower, factor, root ball)
+        for fac, _m in cp.factor_list()[1]:
+            coeffs = [sp.Rational(c) for c in reversed(fac.all_coeffs())]
+            den = sp.ilcm(*[c.q for c in coeffs])
+            for root, _k in fmpq_poly([int(c * den) for c in coeffs]).complex_roots():
+                m = abs(root)
+                if best is None or float(m.mid()) > float(best[0].mid()):
+                    best = (m, fac, root)
         if best is None:
             return None
-        e = sp.Abs(best) if not best.is_real else (best if best_abs >= 0 and complex(sp.N(best)).real >= 0 else -best)
+        m, fac, root = best
+        d = fac.degree()
+        if root.imag.is_zero() or (d % 2 == 1 and fac.count_roots() == d):
+            from ..algebraic import RealAlgebraic
+
+            target = float(root.real.mid())
+            reals = RealAlgebraic.roots_of(fac)
+            r = min(reals, key=lambda t: abs(float(t) - target))
+            e = r.expr
+            if float(r) < 0:
+                e = -e
+        elif d == 2:
+            a2, a1, a0 = (sp.Rational(c) for c in fac.all_coeffs())
+            e = sp.sqrt(a0 / a2)          # |lambda|^2 = product of the conjugate pair
+        else:
+            return None
         L = len(word)
-        out = e if L == 1 else e ** sp.Rational(1, L)
-        return sp.nsimplify(out) if sp.count_ops(out) < 12 and sp.nsimplify(out).equals(out) else out
+        return e if L == 1 else e ** sp.Rational(1, L)
     except Exception:  # pragma: no cover - an optional nicety, never essential
         return None
