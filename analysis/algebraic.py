@@ -365,6 +365,24 @@ class RealAlgebraic:
         return sp.sstr(self.expr)
 
 
+def rational_between(lo: "RealAlgebraic | None", hi: "RealAlgebraic | None") -> sp.Rational:
+    """A rational strictly between two real algebraic numbers (``None`` = -oo / +oo)."""
+    if lo is None and hi is None:
+        return sp.Integer(0)
+    if lo is None:
+        return sp.floor(hi.rational_below()) - 1
+    if hi is None:
+        return sp.ceiling(lo.rational_above()) + 1
+    while not lo.b < hi.a:
+        lo.refine()
+        hi.refine()
+        if lo.a == lo.b and hi.a == hi.b:
+            break
+    if lo.b < hi.a:
+        return (lo.b + hi.a) / 2
+    return (lo.a + hi.b) / 2  # pragma: no cover
+
+
 def _q(x) -> sp.Rational:
     """An mpmath number or a degenerate interval endpoint as an exact sympy Rational."""
     raw = x._mpi_[0] if hasattr(x, "_mpi_") else x._mpf_
@@ -418,6 +436,27 @@ class IntervalSet:
 
     def __init__(self, parts=()):
         self.parts = tuple(parts)
+
+    @classmethod
+    def from_members(cls, members) -> "IntervalSet":
+        """Merge an alternating left-to-right sequence of elementary pieces into a set.
+
+        ``members`` is a list of ``("gap", (lo, hi), included)`` (open intervals) and
+        ``("point", x, included)`` (their common endpoints); adjacent included pieces merge.
+        """
+        parts, run = [], None
+        for k, (_kind, _data, inc) in enumerate(members):
+            if inc and run is None:
+                run = k
+            if run is not None and (not inc or k == len(members) - 1):
+                last = k if inc else k - 1
+                first_kind, first_data, _ = members[run]
+                last_kind, last_data, _ = members[last]
+                left = first_data[0] if first_kind == "gap" else first_data
+                right = last_data[1] if last_kind == "gap" else last_data
+                parts.append((left, right, first_kind == "point", last_kind == "point"))
+                run = None
+        return cls(parts)
 
     @property
     def is_empty(self) -> bool:

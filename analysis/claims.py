@@ -513,7 +513,7 @@ def exact_set(predicate: Callable[[sp.Expr], bool], critical: Iterable, within=(
     for p in _exact_sort(pts):
         if not uniq or uniq[-1].compare(p) != 0:
             uniq.append(p)
-    from .normset import _sample_between
+    from .algebraic import rational_between as _sample_between
 
     bounds = [lo] + uniq + [hi]
     members = []
@@ -523,19 +523,7 @@ def exact_set(predicate: Callable[[sp.Expr], bool], critical: Iterable, within=(
         if k + 1 < len(bounds) - 1:
             x = bounds[k + 1]
             members.append(("point", x, bool(predicate(x.expr))))
-    parts, run = [], None
-    for k, (kind, data, inc) in enumerate(members):
-        if inc and run is None:
-            run = k
-        if run is not None and (not inc or k == len(members) - 1):
-            last = k if inc else k - 1
-            fk, fd, _ = members[run]
-            lk, ld, _ = members[last]
-            left = fd[0] if fk == "gap" else fd
-            right = ld[1] if lk == "gap" else ld
-            parts.append((left, right, fk == "point", lk == "point"))
-            run = None
-    return IntervalSet(parts)
+    return IntervalSet.from_members(members)
 
 
 def contains_interval(iset, lo, hi, *, closed: bool = False) -> bool:

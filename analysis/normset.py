@@ -44,7 +44,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .algebraic import IntervalSet, RealAlgebraic
+from .algebraic import IntervalSet, RealAlgebraic, rational_between as _sample_between
 from .difference import difference_symbol, iterated_symbol
 from .result import CERTIFIED, AnalysisError, Result
 from .symbol import LaurentSymbol
@@ -102,26 +102,6 @@ def _residue_polys(a: LaurentSymbol, m: int, L: int, spelling: str, p: sp.Symbol
         if not poly.is_zero:
             by_res.setdefault(i % mod, []).append(poly)
     return am, by_res
-
-
-def _sample_between(lo: RealAlgebraic | None, hi: RealAlgebraic | None) -> sp.Rational:
-    """A rational strictly between two endpoints (None = infinite)."""
-    if lo is None and hi is None:
-        return sp.Integer(0)
-    if lo is None:
-        return sp.floor(hi.rational_below()) - 1
-    if hi is None:
-        return sp.ceiling(lo.rational_above()) + 1
-    while not lo.b < hi.a:
-        lo.refine()
-        hi.refine()
-        if lo.a == lo.b and hi.a == hi.b:
-            break
-    if lo.b < hi.a:
-        # a simple rational inside (lo.b, hi.a) if one exists, else the midpoint
-        x = sp.nsimplify((lo.b + hi.a) / 2, rational=True)
-        return x
-    return (lo.a + hi.b) / 2  # pragma: no cover
 
 
 def _inside(x: RealAlgebraic, lo: RealAlgebraic | None, hi: RealAlgebraic | None) -> bool:
@@ -245,20 +225,7 @@ def norm_solution_set(a: LaurentSymbol, m: int, L: int, param=None, *, spelling:
             x = bounds[idx + 1]
             members.append(("point", x, _norm_below_at_point(by_res, x, bound)))
 
-    parts = []
-    run_start = None
-    for k, (kind, data, inc) in enumerate(members):
-        if inc and run_start is None:
-            run_start = k
-        if run_start is not None and (not inc or k == len(members) - 1):
-            last = k if inc else k - 1
-            first_kind, first_data, _ = members[run_start]
-            last_kind, last_data, _ = members[last]
-            left = first_data[0] if first_kind == "gap" else first_data
-            right = last_data[1] if last_kind == "gap" else last_data
-            parts.append((left, right, first_kind == "point", last_kind == "point"))
-            run_start = None
-    sol = IntervalSet(parts)
+    sol = IntervalSet.from_members(members)
     return Result(value=sol, status=CERTIFIED,
                   witness={"pieces": pieces, "bound": bound, "m": m, "L": L, "parameter": p.name,
                            "within": tuple(sp.sympify(w) for w in within), "spelling": spelling,
