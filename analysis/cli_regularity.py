@@ -21,11 +21,34 @@ def _fmt(x) -> str:
     return "?" if x is None else f"{float(x):.10f}"
 
 
-def cmd_holder(args) -> None:
-    from .regularity import holder_exponent, smoothness, sobolev_exponent
+def _numeric_entry(args):
+    """The catalogue entry when --scheme names a scheme known only by enclosures (Daubechies)."""
+    if getattr(args, "scheme", None) is None:
+        return None
+    import schemes
+    from schemes.catalogue import NumericSchemeEntry
 
-    a, label = scheme_from_args(args)
+    entry = schemes.get(args.scheme)
+    return entry if isinstance(entry, NumericSchemeEntry) else None
+
+
+def cmd_holder(args) -> None:
+    from .regularity import holder_exponent, holder_exponent_enclosure, smoothness, sobolev_exponent
+
     budget = float(args.budget)
+    entry = _numeric_entry(args)
+    if entry is not None:
+        if args.param or args.C is not None or args.sobolev:
+            raise AnalysisError(f"{entry.slug} is known by certified enclosures only: "
+                                "--param, --C and --sobolev are not available for it")
+        h = holder_exponent_enclosure(entry, budget_seconds=budget)
+        lines = [f"scheme: {entry.slug}   (mask known by Arb ball enclosures)",
+                 f"Hölder exponent alpha in [{_fmt(h.lower)}, {_fmt(h.upper)}]   [{h.status}]"]
+        if "message" in h.provenance:
+            lines.append(f"  {h.provenance['message']}")
+        _emit(args, {"scheme": entry.slug, "alpha": h.to_json()}, "\n".join(lines))
+        return
+    a, label = scheme_from_args(args)
     h = holder_exponent(a, budget_seconds=budget)
     lines = [f"scheme: {label}   (domain {a.domain})"]
     if h.value is not None:

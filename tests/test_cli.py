@@ -5,6 +5,7 @@ import subprocess
 import sys
 
 import pytest
+import sympy
 
 from analysis.cli import main
 
@@ -92,3 +93,17 @@ def test_bad_input_one_line_exit_2(argv, message, capsys):
 def test_bad_input_in_subprocess_has_no_traceback():
     code, out, err = run("norm", "--mask", "1/4,,3/4")
     assert code == 2 and out == "" and err.count("\n") == 1 and "malformed mask" in err
+
+
+def test_holder_of_a_scheme_known_by_enclosures(capsys):
+    assert main(["holder", "--scheme", "d6", "--json"]) == 0
+    alpha = json.loads(capsys.readouterr().out)["alpha"]
+    assert alpha["status"] == "certified"
+    lo, hi = float(sympy.Rational(alpha["lower"])), float(sympy.Rational(alpha["upper"]))
+    assert abs((lo + hi) / 2 - 1.0878339263) < 1e-10 and hi - lo < 1e-8   # Daubechies-Lagarias: 1.0878
+
+
+def test_holder_json_for_exact_scheme(capsys):
+    assert main(["holder", "--scheme", "four-point", "--param", "w=1/16", "--C", "1", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["alpha"]["value"] == 2 and data["smoothness"]["value"] is True
