@@ -331,7 +331,10 @@ def cmd_refine(args) -> None:
         pts = np.array([[float(v) for v in row] for row in data], dtype=float)
     out = refinement.refine(a, pts, steps=steps, closed=not args.open, end_rule=args.end_rule, exact=args.exact)
     if args.output:
-        np.savetxt(args.output, np.asarray(out, dtype=float), delimiter=",")
+        try:
+            np.savetxt(args.output, np.asarray(out, dtype=float), delimiter=",")
+        except OSError as exc:
+            raise AnalysisError(f"cannot write {args.output}: {exc.strerror or exc}") from None
     data_out = {"scheme": label, "steps": steps, "closed": not args.open, "end_rule": args.end_rule if args.open else None,
                 "count": len(out), "points": [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]}
     if args.json:

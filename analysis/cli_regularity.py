@@ -92,6 +92,8 @@ def cmd_range(args) -> None:
         tol = float(args.tol)
     except ValueError:
         raise AnalysisError(f"--tol must be a number, not {args.tol!r}") from None
+    if not (1e-30 <= tol <= 1):
+        raise AnalysisError("--tol must be between 1e-30 and 1")
     r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
                          budget_seconds=float(args.budget))
     p = r.witness["parameter"]
@@ -114,13 +116,23 @@ def cmd_range(args) -> None:
                      f"{sp.sstr(b.get('certified_not_C^j_at'))} ({b.get('how', b['status'])})")
     if r.witness["undecided"]:
         lines.append("  undecided grid points: " + ", ".join(sp.sstr(x) for x in r.witness["undecided"]))
-    lines.append("  (between grid points the set is sampled, not proven)")
+    for run in r.value:
+        it = run.get("interior")
+        if it:
+            lines.append(f"  interior [{float(it['from']):.10g}, {float(it['to']):.10g}]: "
+                         + ("proven C^%d on the whole interval (%s)" % (j, it["route"]) if it["proven"] else
+                            "certified at the grid points only (the norm tests do not cover it)"))
+    if "message" in r.provenance:
+        lines.append(f"  {r.provenance['message']}")
     data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
     if args.figure:
         curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget_seconds=float(args.budget))
         from .plots import plot_alpha_curve
 
-        plot_alpha_curve(curve, args.figure, j=j, boundaries=r.witness["boundaries"], label=label)
+        try:
+            plot_alpha_curve(curve, args.figure, j=j, boundaries=r.witness["boundaries"], label=label)
+        except OSError as exc:
+            raise AnalysisError(f"cannot write {args.figure}: {exc.strerror or exc}") from None
         lines.append(f"figure written to {args.figure}")
         data["figure"] = args.figure
     _emit(args, data, "\n".join(lines))

@@ -69,6 +69,11 @@ def _papers_arg(arg: str):
 
 def cmd_report(args) -> None:
     outdir = Path(args.output) if args.output else REPORTS
+    if args.claim and args.write and not args.output:
+        raise AnalysisError("--write with --claim would replace the paper's report and golden verdicts in "
+                            f"{REPORTS} by a partial one; write elsewhere with --output DIR")
+    if args.output and not outdir.is_dir():
+        raise AnalysisError(f"output folder {outdir} does not exist")
     t0 = time.perf_counter()
     all_results = {}
     for paper in _papers_arg(args.paper):
@@ -117,15 +122,22 @@ def cmd_report(args) -> None:
 
 def cmd_check(args) -> None:
     golden_path = Path(args.verdicts) if args.verdicts else REPORTS / "verdicts.json"
-    if not golden_path.exists():
+    if not golden_path.is_file():
         raise AnalysisError(f"no golden file {golden_path}: run `subdiv report all` and review it")
-    golden = json.loads(golden_path.read_text(encoding="utf-8"))
+    try:
+        golden = json.loads(golden_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise AnalysisError(f"cannot read the golden file {golden_path}: {str(exc).splitlines()[0]}") from None
+    if not isinstance(golden, dict) or not isinstance(golden.get("papers"), dict):
+        raise AnalysisError(f"{golden_path} is not a verdicts file (expected {{\"papers\": {{...}}}})")
     t0 = time.perf_counter()
     fresh_results = {}
     pids = args.paper or sorted(golden.get("papers", {}))
     for pid in pids:
         paper = get_paper(pid)
         only = _select(paper, args.claim)
+        if only is not None and not only:
+            raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
         print(f"checking paper {paper.id} ...", file=sys.stderr, flush=True)
         fresh_results[paper.id] = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
     fresh = verdicts_json(fresh_results)
@@ -149,7 +161,7 @@ def register(subparsers) -> None:
     s = subparsers.add_parser("report", help="proof-check report of a paper (or all): verdicts, Markdown, HTML")
     s.add_argument("paper", help="paper id (e.g. 004) or 'all'")
     s.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns); print details")
-    s.add_argument("--write", action="store_true", help="with --claim: still write the report files")
+    s.add_argument("--write", action="store_true", help="with --claim and --output: write a partial report there")
     s.add_argument("--output", metavar="DIR", help=f"output folder (default {REPORTS})")
     s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
     s.add_argument("--quiet", action="store_true", help="no per-claim progress")

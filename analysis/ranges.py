@@ -37,18 +37,27 @@ from .result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .symbol import LaurentSymbol
 
 
-def _interval_inside(set_, lo: RealAlgebraic, hi: RealAlgebraic) -> bool:
-    """Is the open interval (lo, hi) contained in the IntervalSet ``set_``?"""
+def _interval_inside(set_, lo: RealAlgebraic, hi: RealAlgebraic, *, lo_closed: bool = False,
+                     hi_closed: bool = False) -> bool:
+    """Is the interval from lo to hi (open, or closed at the flagged ends) inside ``set_``?"""
     for plo, phi, plc, phc in set_.parts:
-        left_ok = plo is None or plo.compare(lo) < 0 or (plo.compare(lo) == 0)
-        right_ok = phi is None or phi.compare(hi) > 0 or (phi.compare(hi) == 0)
+        if plo is None:
+            left_ok = True
+        else:
+            c = plo.compare(lo)
+            left_ok = c < 0 or (c == 0 and (plc or not lo_closed))
+        if phi is None:
+            right_ok = True
+        else:
+            c = phi.compare(hi)
+            right_ok = c > 0 or (c == 0 and (phc or not hi_closed))
         if left_ok and right_ok:
             return True
     return False
 
 
-def _ball_norm_upper(am: LaurentSymbol, p: sp.Symbol, box: tuple, L: int, prec: int = 128):
-    """A rigorous upper bound (float) of ||(1/2 S_{am})^L||_inf for all p in the box."""
+def _ball_norm_below_one(am: LaurentSymbol, p: sp.Symbol, box: tuple, L: int, prec: int = 128) -> bool:
+    """True when ||(1/2 S_{am})^L||_inf < 1 is proven for every p in the closed box (Arb)."""
     from flint import arb, arb_poly, ctx
 
     old = ctx.prec
@@ -85,8 +94,8 @@ def _ball_norm_upper(am: LaurentSymbol, p: sp.Symbol, box: tuple, L: int, prec: 
             s = arb(0)
             for idx in range((r - start) % mod, len(cs), mod):
                 s += abs(cs[idx])
-            best = max(best, s) if False else (s if s.upper() > best.upper() else best)
-        return float((best / 2 ** L).upper())
+            best = s if s.upper() > best.upper() else best
+        return bool(best / 2 ** L < 1)  # Arb comparison: True only when proven for the whole ball
     finally:
         ctx.prec = old
 
@@ -136,8 +145,7 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
     # 3. cover [lo, hi] by boxes, breadth first: each box (as an open interval) inside an exact
     #    norm set, or (as a closed interval, which proves more) with an Arb norm bound below 1
     am = difference_symbol(a, j + 1)
-    lo_q = lo.a if lo.a == lo.b else lo.a  # rational outer bounds of the claimed interval
-    hi_q = hi.b
+    lo_q, hi_q = lo.a, hi.b  # rational outer bounds of the claimed interval
     todo = [(lo_q, hi_q)]
     proven, boxes, smallest = 0, 0, None
     while todo and boxes < max_boxes:
@@ -150,10 +158,12 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
         if c0.compare(c1) >= 0:
             proven += 1
             continue
-        if any(_interval_inside(S, c0, c1) for S in sets):
+        # box ends inside the claim must belong to the set too (no hole at a split point)
+        c0_in, c1_in = c0 is B0 and lo.compare(B0) < 0, c1 is B1 and hi.compare(B1) > 0
+        if any(_interval_inside(S, c0, c1, lo_closed=c0_in, hi_closed=c1_in) for S in sets):
             proven += 1
             continue
-        if any(_ball_norm_upper(am, p, (b0, b1), L) < 1 for L in range(1, max_L_boxes + 1)):
+        if any(_ball_norm_below_one(am, p, (b0, b1), L) for L in range(1, max_L_boxes + 1)):
             proven += 1
             continue
         m = (b0 + b1) / 2

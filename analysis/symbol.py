@@ -117,6 +117,9 @@ def parse_coefficient(c, *, locals_: Mapping[str, sp.Symbol] | None = None) -> s
         raise AnalysisError(f"coefficient {c!r} is not a finite number or formula")
     if expr.has(sp.Float):
         expr = sp.nsimplify(expr, rational=True)
+    reserved = {s for s in expr.free_symbols if s.name in ("inf", "nan", "oo", "I", "E", "pi", "zoo")}
+    if reserved:
+        raise AnalysisError(f"coefficient {c!r} is not a finite number or formula")
     return expr
 
 

@@ -767,10 +767,12 @@ def _true_ck(slug, j, within, grid):
             else:
                 ends.append(f"the window end {sp.sstr(b['open_end'])} (the set may extend beyond it)")
         parts.append(f"({ends[0]}, {ends[1]})")
-    text = (f"C^{j} exactly on " + (" U ".join(parts) if parts else "no grid point of the window") +
-            f" within {sp.sstr(within)}: certified Hölder verdicts at {grid + 1} grid points, each boundary "
-            "certified on both sides within 1e-8 (between grid points the set is sampled)")
-    ev = C.Evidence(f"true C^{j} set from the Hölder exponent (joint spectral radius)", text=text, result=r)
+    text = (f"C^{j} set found: " + (" U ".join(parts) if parts else "no grid point of the window") +
+            f" within {sp.sstr(within)} — certified Hölder verdicts at {grid + 1} grid points, each boundary "
+            "certified on both sides within 1e-8 (exact where stated); between the grid points the set is "
+            "sampled, not proven")
+    # descriptive evidence (its Result is inconclusive: the interior is sampled), so no result attached
+    ev = C.Evidence(f"C^{j} set from the Hölder exponent (joint spectral radius)", text=text)
     _TRUE_CACHE[key] = (text, nums, ev, r)
     return _TRUE_CACHE[key]
 
@@ -815,7 +817,7 @@ def _thm52(m: int):
     if ok and same:
         return C.certified(f"The Dyn-Levin test with L = 1 proves C^{m - 1} on 5/7 < nu < 13/7.",
                            sharpness=f"true but not sharp: the exact L = 1 set is {s1}; L = 2: {sets[2].value}; "
-                                     f"L = 3: {sets[3].value} (all proving C^{m - 1}). The truth: {true_text}.",
+                                     f"L = 3: {sets[3].value} (all proving C^{m - 1}). From the Hölder exponent: {true_text}.",
                            evidence=ev, numbers=nums, figures=figs)
     return C.refuted("the norm test does not hold on the whole printed range", f"C^{m - 1} on {s1}",
                      evidence=ev, numbers=nums, figures=figs)
@@ -1018,7 +1020,7 @@ def _thm54():
         return C.certified("True: the exact norm test (m = 3, L = 1) proves C^2 on the printed range (either "
                            "reading of its lost sign).",
                            sharpness="not sharp: C^2 is proved on " + "; ".join(
-                               f"L = {L}: {r.value}" for L, r in sets.items()) + f". The truth: {true_text}.",
+                               f"L = {L}: {r.value}" for L, r in sets.items()) + f". From the Hölder exponent: {true_text}.",
                            evidence=ev, numbers=nums, figures=[fig])
     return C.inconclusive("the norm test with L <= 3 does not cover the printed range",
                           settle="larger L, or the Hölder exponent (issue 3)", evidence=ev, numbers=nums,

@@ -82,6 +82,13 @@ def test_numeric_norm_json(capsys):
     (["refine", "--scheme", "chaikin", "--points", "0,0;1"], "same number of coordinates"),
     (["refine", "--scheme", "chaikin"], "exactly one of --points"),
     (["frobnicate"], "invalid choice"),
+    (["symbol", "--mask", "inf,1"], "not a finite number"),
+    (["refine", "--scheme", "chaikin", "--points", "0,0;1,0;1,1", "--output", "/nonexistent/x.csv"], "cannot write"),
+    (["range", "--scheme", "four-point", "--C", "1", "--within=0,1/4", "--tol", "0"], "--tol must be between"),
+    (["check", "--verdicts", "/etc/hostname"], "cannot read the golden file"),
+    (["check", "003", "--claim", "nosuch"], "no claim of paper 003 matches"),
+    (["report", "003", "--claim", "003:(7)", "--write"], "would replace the paper's report"),
+    (["report", "003", "--output", "/nonexistent/dir"], "does not exist"),
 ], ids=lambda v: v if isinstance(v, str) else None)
 def test_bad_input_one_line_exit_2(argv, message, capsys):
     assert main(argv) == 2

@@ -61,7 +61,9 @@ def test_seed003_true_c2_range():
     """The paper's (0, (sqrt6-1)/80) is only sufficient: the true C^2 set is (0, omega*), omega* ~ 0.021464."""
     a = schemes.get("dfh-chaikin-perturbation").symbol
     r = ck_parameter_set(a, 2, within=(Q(-1, 20), Q(1, 20)), grid=10)
-    assert r.status == "certified"
+    # boundaries certified on both sides; the interior near omega* is beyond the norm tests
+    assert r.witness["boundaries_certified"] and r.status == "inconclusive"
+    assert r.value[0]["interior"]["proven"] is False
     (run,) = r.value
     left, right = run["left"], run["right"]
     assert left["exact"] == 0
@@ -89,7 +91,8 @@ def test_non_convergent_mask_rejected():
 def test_four_point_c1_range():
     """C^1 exactly for 0 < w < w*, w* the real root of 32 w^3 + 4 w - 1 (~0.19273; Hechler-Mößner-Reif 2009)."""
     r = ck_parameter_set(schemes.get("four-point").symbol, 1, within=(Q(-1, 8), Q(1, 4)), grid=12)
-    assert r.status == "certified"
+    assert r.witness["boundaries_certified"]
+    assert all(b["status"] == "certified" for b in r.witness["boundaries"])
     (run,) = r.value
     assert run["left"]["exact"] == 0
     x = sp.Symbol("x")

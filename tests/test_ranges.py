@@ -1,0 +1,48 @@
+"""Verification of claimed C^k parameter intervals (analysis.ranges)."""
+
+import pytest
+import sympy as sp
+
+import schemes
+from analysis.ranges import verify_smoothness_interval
+from analysis.regularity import smoothness
+from analysis.result import AnalysisError
+
+Q = sp.Rational
+
+
+@pytest.fixture(scope="module")
+def dfh():
+    return schemes.get("dfh-chaikin-perturbation").symbol
+
+
+def test_papers_interval_proven_by_the_exact_norm_set(dfh):
+    r = verify_smoothness_interval(dfh, 2, (0, (sp.sqrt(6) - 1) / 80))
+    assert (r.value, r.status, r.witness["route"]) == (True, "certified", "exact norm inequality, L = 2")
+
+
+def test_wider_interval_proven_by_norm_sets_and_arb_boxes(dfh):
+    r = verify_smoothness_interval(dfh, 2, (0, Q(1, 50)))
+    assert r.value is True and r.status == "certified"
+    assert r.witness["route"] == "exact norm sets and interval arithmetic over a subdivision"
+
+
+def test_too_wide_interval_refuted_at_a_certified_point(dfh):
+    r = verify_smoothness_interval(dfh, 2, (0, Q(1, 40)))
+    assert r.value is False and r.status == "refuted"
+    q = r.witness["counterexample"]
+    assert 0 < q < Q(1, 40)
+    assert smoothness(dfh.subs({"omega": q}), 2).value is False     # independent re-check
+
+
+def test_interval_reaching_the_true_boundary_is_not_overclaimed(dfh):
+    """Up to 0.0214 (omega* ~ 0.021464) the norm tests cannot cover everything: inconclusive."""
+    r = verify_smoothness_interval(dfh, 2, (Q(1, 100), Q(214, 10000)), max_boxes=60, samples=2)
+    assert r.value is None and r.status == "inconclusive"
+
+
+def test_bad_input(dfh):
+    with pytest.raises(AnalysisError, match="empty"):
+        verify_smoothness_interval(dfh, 2, (Q(1, 50), Q(1, 100)))
+    with pytest.raises(AnalysisError, match="exactly one free parameter"):
+        verify_smoothness_interval(schemes.get("seed004-design-control").symbol, 2, (0, 1))
