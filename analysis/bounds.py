@@ -215,6 +215,8 @@ def check_inequality(lhs, rhs, n0: int = 0, box: Mapping[str, Any] | None = None
     Certified (proven), refuted (``witness["counterexample"]``: a level and a point where ball
     arithmetic proves ``lhs > rhs``), or inconclusive with the worst case found.
     """
+    if isinstance(n0, bool) or not isinstance(n0, int) or n0 < 0:
+        raise AnalysisError(f"n0 must be a non-negative integer level, not {n0!r}")
     L, R = to_h(lhs), to_h(rhs)
     bx = _parse_box(box)
     free = {s.name for s in (L.free_symbols | R.free_symbols) - {H}}

@@ -63,6 +63,10 @@ def cmd_series(args) -> None:
     from .series import weighted_series
 
     s = _level_scheme(args.scheme)
+    if args.difference < 0:
+        raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
+    if args.pieces < 1:
+        raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if args.difference:
         s = s.difference(args.difference)
     vals = _values(args)
@@ -104,6 +108,8 @@ def cmd_bound(args) -> None:
             raise AnalysisError("give --claim ID, or --lhs EXPR and --rhs EXPR")
         lhs, rhs = (parse_coefficient(x, locals_={"n": sp.Symbol("n")}) for x in (args.lhs, args.rhs))
         strict, n0 = args.strict, args.n0
+    if n0 < 0:
+        raise AnalysisError(f"--n0 must be a non-negative level, not {n0}")
     r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "")
     text = f"{r.witness['statement']}: {r.status}"
     if "counterexample" in r.witness:
@@ -112,9 +118,11 @@ def cmd_bound(args) -> None:
 
 
 def cmd_reproduce(args) -> None:
-    from .reproduction import curve_deviation, generation, reproduction
+    from .reproduction import check_curve_options, curve_deviation, generation, reproduction
 
     s = _level_scheme(args.scheme)
+    if args.curve:
+        check_curve_options(args.points, args.steps, args.plot)
     vals = _parse_params(args.param)
     lams = [parse_coefficient(x, locals_={p.name: p for p in s.params})
             for x in args.lambdas.split(",")] if args.lambdas else []
@@ -152,7 +160,7 @@ def register(sub) -> None:
     s.add_argument("--claim", metavar="ID", help='a seed 003 lemma item, e.g. "003:Lemma3.2(ii)"')
     s.add_argument("--lhs", metavar="EXPR")
     s.add_argument("--rhs", metavar="EXPR")
-    s.add_argument("--n0", type=int, default=0)
+    s.add_argument("--n0", type=int, default=0, help="first level n (>= 0)")
     s.add_argument("--strict", action="store_true")
     s.add_argument("--param", action="append", metavar="NAME=VALUE")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
@@ -164,8 +172,8 @@ def register(sub) -> None:
     s.add_argument("--param", action="append", metavar="NAME=VALUE")
     s.add_argument("--lambdas", metavar="LIST", help='e.g. "I*t,-I*t" or "0,t,-t"')
     s.add_argument("--curve", choices=("circle", "ellipse", "cardioid", "astroid", "lemniscate"))
-    s.add_argument("--points", type=int, default=10)
-    s.add_argument("--steps", type=int, default=6)
+    s.add_argument("--points", type=int, default=10, help="control points on the curve (>= 3)")
+    s.add_argument("--steps", type=int, default=6, help="refinement steps (0..12)")
     s.add_argument("--plot", metavar="FILE", help="write the curve and curvature plot (PNG)")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_reproduce)

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 
 import numpy as np
 
@@ -44,6 +45,32 @@ def _int(text, what: str, lo: int, hi: int) -> int:
     if not lo <= v <= hi:
         raise AnalysisError(f"{what} must be between {lo} and {hi}")
     return v
+
+
+def _param(text, what: str) -> float:
+    """One tension parameter u > -1 (finite)."""
+    try:
+        v = float(text)
+    except (TypeError, ValueError):
+        raise AnalysisError(f"{what} must be a number, not {text!r}") from None
+    if not math.isfinite(v):
+        raise AnalysisError(f"{what} must be finite, not {text!r}")
+    if not v > -1:
+        raise AnalysisError(f"{what} must satisfy u > -1 (the papers take u > 0); got {text!r}")
+    return v
+
+
+def _figure(plot, path: str, **kw) -> None:
+    """Write a figure; a path that cannot be written is a one-line input error."""
+    import os
+
+    parent = os.path.dirname(os.path.abspath(path)) or "."
+    if not os.path.isdir(parent):
+        raise AnalysisError(f"cannot write the figure {path!r}: directory {parent!r} does not exist")
+    try:
+        plot(path, **kw)
+    except OSError as e:
+        raise AnalysisError(f"cannot write the figure {path!r}: {e.strerror or e}") from None
 
 
 def _out(args, data, text: str) -> None:
@@ -137,8 +164,9 @@ def cmd_property_a(args) -> None:
 def cmd_junction(args) -> None:
     from . import nonuniform as nu
 
-    r = nu.junction_smoothness(_int(args.degree, "--degree", 2, 10), float(args.u_left), float(args.u_right),
-                               levels=_int(args.levels, "--levels", 2, 40), rule=args.rule)
+    r = nu.junction_smoothness(_int(args.degree, "--degree", 2, 10), _param(args.u_left, "--u-left"),
+                               _param(args.u_right, "--u-right"), levels=_int(args.levels, "--levels", 2, 40),
+                               rule=args.rule)
     w = r.witness
     _out(args, r.to_json(), f"junction u = {args.u_left} | {args.u_right}, degree {args.degree}: {r.value}   [{r.status}]\n"
          "  omega_k (junction): " + ", ".join(f"{x:.3e}" for x in w["omega_junction"][-4:]) + "\n"
@@ -149,9 +177,10 @@ def cmd_reproduce(args) -> None:
     from . import nonuniform as nu
 
     d = _int(args.degree, "--degree", 2, 16)
-    r = nu.reproduce(args.kind, degree=d, levels=_int(args.levels, "--levels", 0, 20))
+    levels = _int(args.levels, "--levels", 0, 20)
+    r = nu.reproduce(args.kind, degree=d, levels=levels)
     if args.figure:
-        nu.plot_blended(args.figure, levels=min(int(args.levels), 7))
+        _figure(nu.plot_blended, args.figure, levels=min(levels, 7))
     w = r.witness
     lines = [f"{args.kind}, NVPS degree {d}: max distance of level-k points from the curve   [{r.status}]"]
     for k, (dv, fe) in enumerate(zip(w["deviation"], w["form_error"])):
@@ -164,9 +193,10 @@ def cmd_reproduce(args) -> None:
 def cmd_chamfer(args) -> None:
     from . import nonuniform as nu
 
-    r = nu.chamfer_example(levels=_int(args.levels, "--levels", 0, 16), degree=_int(args.degree, "--degree", 2, 8))
+    levels = _int(args.levels, "--levels", 0, 16)
+    r = nu.chamfer_example(levels=levels, degree=_int(args.degree, "--degree", 2, 8))
     if args.figure:
-        nu.plot_chamfer(args.figure, levels=min(int(args.levels), 8))
+        _figure(nu.plot_chamfer, args.figure, levels=min(levels, 8))
     w = r.witness
     _out(args, r.to_json(), f"chamfered quadrangle (seed 001 Fig. 3), degree {args.degree}   [{r.status}]\n"
          f"  max distance of points from the exact shape: {w['deviation'][-1]:.3e}\n"

@@ -170,6 +170,22 @@ def _curve(name: str):
 
 
 CURVES = ("circle", "ellipse", "cardioid", "astroid", "lemniscate")
+#: refinement steps allowed for curves (points * 2^steps float64 points are kept)
+MAX_STEPS = 12
+
+
+def check_curve_options(points, steps, plot=None) -> None:
+    """Reject bad ``points``/``steps``/``plot`` before any computation (one-line AnalysisError)."""
+    import os
+
+    if isinstance(points, bool) or not isinstance(points, int) or points < 3:
+        raise AnalysisError(f"points must be an integer >= 3 (a closed control polygon), not {points!r}")
+    if isinstance(steps, bool) or not isinstance(steps, int) or not 0 <= steps <= MAX_STEPS:
+        raise AnalysisError(f"steps must be an integer in 0..{MAX_STEPS}, not {steps!r}")
+    if plot:
+        d = os.path.dirname(os.path.abspath(str(plot)))
+        if not os.path.isdir(d):
+            raise AnalysisError(f"cannot write the plot {plot}: directory {d} does not exist")
 
 
 def _curvature(P: np.ndarray) -> np.ndarray:
@@ -193,6 +209,7 @@ def curve_deviation(s: LevelDependentScheme, curve: str, values=None, *, points:
     ``plot``: a file name; the curvature plot (and the curves) are written there (matplotlib,
     Agg backend).
     """
+    check_curve_options(points, steps, plot)
     f = _curve(curve)
     t0 = 2 * np.pi * np.arange(points) / points
     P = refine_closed(s, f(t0), steps, values)
@@ -228,8 +245,12 @@ def curve_deviation(s: LevelDependentScheme, curve: str, values=None, *, points:
         ax[1].plot(kappa, "b-", lw=1)
         ax[1].set_title("discrete curvature")
         fig.tight_layout()
-        fig.savefig(plot)
-        plt.close(fig)
+        try:
+            fig.savefig(plot)
+        except OSError as exc:
+            raise AnalysisError(f"cannot write the plot {plot}: {exc.strerror or exc}") from None
+        finally:
+            plt.close(fig)
         witness["plot"] = plot
     return Result(value=value, status=NUMERICAL, witness=witness,
                   provenance={"method": "float64 refinement", "scheme": s.slug,

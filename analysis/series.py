@@ -66,15 +66,19 @@ from .symbol import LaurentSymbol
 
 
 def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
+    if isinstance(pieces, bool) or not isinstance(pieces, int) or pieces < 1:
+        raise AnalysisError(f"pieces must be an integer >= 1, not {pieces!r}")
     boxed = [k for k, v in values.items() if isinstance(v, tuple)]
     if len(boxed) > 1:
         raise AnalysisError("give a box for at most one parameter (fix the others)")
-    if not boxed or pieces <= 1:
+    if not boxed:
         return [dict(values)]
     k = boxed[0]
     lo, hi = (sp.sympify(x) for x in values[k])
     if not bool(lo < hi):
-        raise AnalysisError(f"empty parameter box {k} = [{lo}, {hi}]")
+        raise AnalysisError(f"empty parameter box {k} = [{lo}, {hi}]: give LOW < HIGH")
+    if pieces == 1:
+        return [dict(values)]
     # geometric sub-boxes when 0 < lo (the relative width matters for the enclosures)
     cuts = ([lo + (hi - lo) * sp.Rational(i, pieces) for i in range(pieces + 1)] if not bool(lo > 0) else
             [lo] + [sp.Rational(str(sp.N(lo * (hi / lo) ** sp.Rational(i, pieces), 12)))
@@ -87,16 +91,58 @@ def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
     return out
 
 
+def _check_sign(sym: sp.Symbol, name: str, value, boxed: bool) -> None:
+    """Reject values outside the declared sign of a parameter symbol (``positive=True`` etc.).
+
+    A closed box may touch the boundary of the declared domain (``alpha in [0, pi/3]`` for a
+    positive ``alpha``): the enclosures are of the continuous extension (sinc form).
+    """
+    x = sp.sympify(value)
+    if x.free_symbols:
+        return
+    if not x.is_real:
+        raise AnalysisError(f"{name} = {x} is not real")
+    if sym.is_positive:
+        bad, want = (x < 0, ">= 0 (closed box of a positive parameter)") if boxed else (x <= 0, "> 0")
+    elif sym.is_nonnegative:
+        bad, want = x < 0, ">= 0"
+    elif sym.is_negative:
+        bad, want = (x > 0, "<= 0 (closed box of a negative parameter)") if boxed else (x >= 0, "< 0")
+    elif sym.is_nonpositive:
+        bad, want = x > 0, "<= 0"
+    else:
+        return
+    if bool(bad):
+        raise AnalysisError(f"{name} = {x} is outside the declared domain of {name}: need {want}")
+
+
 def _parse_values(s: LevelDependentScheme, values) -> dict:
     vals = dict(values or {})
     out = {}
     for k, v in vals.items():
         if isinstance(v, (tuple, list)):
+            if len(v) != 2:
+                raise AnalysisError(f"a box for {k} needs exactly two ends (LOW, HIGH)")
             lo, hi = (sp.sympify(x) if not isinstance(x, str) else sp.sympify(x, rational=True) for x in v)
+            if not (lo.free_symbols or hi.free_symbols) and not bool(lo < hi):
+                raise AnalysisError(f"empty parameter box {k} = [{lo}, {hi}]: give LOW < HIGH")
             out[str(k)] = (lo, hi)
         else:
             out[str(k)] = v
-    return _env_values(s, out)
+    env = _env_values(s, out)
+    for k, v in env.items():
+        sym = s._param(k)
+        if isinstance(v, tuple):
+            for x in v:
+                _check_sign(sym, k, x, True)
+        else:
+            _check_sign(sym, k, v, False)
+    return env
+
+
+def _check_difference(difference) -> None:
+    if isinstance(difference, bool) or not isinstance(difference, int) or difference < 0:
+        raise AnalysisError(f"difference must be a non-negative integer, not {difference!r}")
 
 
 def _level_enclosures(s, env, n, models, q):
@@ -104,13 +150,17 @@ def _level_enclosures(s, env, n, models, q):
     direct = coefficient_differences(s, n, env)
     h = flint.arb(2) ** (-n)
     out = []
-    for d, mdl in zip(direct, models):
+    for k, (d, mdl) in enumerate(zip(direct, models)):
         if h < mdl.rho / 2:
             t = mdl.enclose(h)
-            try:
-                d = d.intersection(t) if d.is_finite() else t
-            except ValueError:  # disjoint would be a bug in one of them: keep the direct one
-                pass
+            if d.is_finite():
+                if not d.overlaps(t):
+                    # both are claimed rigorous: disjoint enclosures mean one of them is wrong
+                    raise RuntimeError(f"certification bug: the direct enclosure {d} and the Taylor-model "
+                                       f"enclosure {t} of coefficient difference {k} at level {n} are disjoint")
+                d = d.intersection(t)
+            else:
+                d = t
         out.append(d)
     return out
 
@@ -147,6 +197,7 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
             r = flint.arb(2) ** (m - q)
             tail = flint.arb(K.upper()) * r ** N / (1 - r)
             lo = partial.lower()
+            lo = lo if lo > 0 else flint.arb(0)      # a sum of norms is >= 0
             hi = partial.upper() + tail.upper()
         return {"verdict": "convergent", "lower": ball_to_interval(flint.arb(lo))[0],
                 "upper": ball_to_interval(flint.arb(hi))[1], "N": N,
@@ -199,6 +250,7 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
         raise AnalysisError(f"the weight exponent m must be a non-negative integer, not {m!r}")
     if not isinstance(N, int) or N < 2:
         raise AnalysisError("N must be an integer >= 2")
+    _check_difference(difference)
     if difference:
         s = s.difference(difference)
     env = _parse_values(s, values)
@@ -216,7 +268,7 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
     prov = {"method": "arb partial sum + Cauchy-estimate Taylor tail", "scheme": s.slug,
             "parameters": {k: (tuple(v) if isinstance(v, tuple) else v) for k, v in env.items()}}
     if verdicts == {"convergent"}:
-        lo = min(o["lower"] for o in outs)
+        lo = max(min(o["lower"] for o in outs), sp.Integer(0))   # a sum of norms is >= 0
         hi = max(o["upper"] for o in outs)
         o = outs[0]
         witness.update({"verdict": "convergent",
@@ -374,6 +426,7 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     ``witness["hypotheses"]`` holds a Result for each hypothesis; the verdict is certified only
     when all are.
     """
+    _check_difference(difference)
     target = s.difference(difference) if difference else s
     mm = m - difference
     if mm < 0:

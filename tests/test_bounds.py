@@ -68,3 +68,23 @@ def test_lemma_3_4_d_is_refuted_and_minus_d_is_the_limit():
     assert check_identity(S.LEMMA_3_4_D, e).status == "refuted"
     assert check_identity(S.LEMMA_3_4_D, -e).status == "certified"
     assert S.LEMMA_3_4_D.subs(z, 1) == -2
+
+
+def test_negative_first_level_rejected():
+    from analysis.result import AnalysisError
+
+    with pytest.raises(AnalysisError, match="n0 must be a non-negative"):
+        check_inequality(sp.Rational(3, 4), S.BETA[1], -1, {"alpha": 1, "omega": "1/100"})
+
+
+def test_identity_items_refute_only_with_a_certified_value():
+    """Lemma 3.1/3.2 definition items: a wrong identity is refuted with a ball-certified nonzero value."""
+    ok = S._identity_item(S.BETA[0], -7 * S.OMEGA, "beta_0^n = -7 omega")
+    assert ok.status == "certified"
+    bad = S._identity_item(S.BETA[0], -5 * S.OMEGA, "beta_0^n = -5 omega")
+    assert bad.status == "refuted"
+    r = bad.evidence[0].result
+    assert r.status == "refuted" and r.provenance["method"] == "acb ball evaluation at a rational point"
+    # independent: the difference -2 omega at the reported point is nonzero
+    w = r.witness["point"]["omega"]
+    assert -2 * w != 0

@@ -119,3 +119,12 @@ def test_larger_daubechies_certified(N):
     r, dt = _certified(f"daubechies-{2 * N}", budget=60)
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
     assert abs(float(r.lower) - expected) < 1e-4
+
+
+def test_d22_thin_polytope_certified_after_preconditioning():
+    """D22: the invariant polytope is thin (vertex matrix condition ~1e13); it is certified only
+    after the exact similarity that rounds it (``analysis.jsr._precondition``)."""
+    r, dt = _certified("daubechies-22", budget=60)
+    assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
+    assert abs(float(r.lower) - 3.6035) < 1e-4
+    assert "preconditioning" in r.witness["jsr"].witness

@@ -342,3 +342,25 @@ def test_ball_and_exact_d4_agree():
     assert exact.status == ball.status == "certified"
     assert contains(exact, (1 + s3) / 2) and contains(ball, (1 + s3) / 2)
     assert ball.lower <= exact.upper and exact.lower <= ball.upper
+
+
+def test_similarity_preconditioning_preserves_the_jsr():
+    """``S^-1 A_i S`` for a dyadic ``S`` (exact rational and ball back ends) has the same JSR:
+    the golden-ratio pair stays certified around phi after the transform."""
+    from flint import arb
+    from analysis.jsr._precondition import rounding_transform, transform_family
+
+    F = parse_family([[[1, 1], [0, 1]], [[1, 0], [1, 1]]])
+    S = rounding_transform(np.array([[1.0, 0.3, -0.2], [1e-6, 2e-6, 5e-7]]))
+    assert S is not None
+    G = transform_family(F, S)
+    assert G.kind == "rational"
+    r = jsr_bounds(G.exact_q, budget_seconds=5)
+    assert r.status == "certified" and contains(r, PHI)
+    one = arb(1, arb(2) ** -100)
+    Fb = parse_family([[[one, 1], [0, 1]], [[1, 0], [1, one]]])
+    Gb = transform_family(Fb, S)
+    assert Gb.kind == "ball"
+    rb = jsr_bounds([[[M[a, b] for b in range(2)] for a in range(2)] for M in Gb.balls],
+                    budget_seconds=5)
+    assert rb.lower <= PHI <= rb.upper and float(rb.upper / rb.lower - 1) < 1e-9

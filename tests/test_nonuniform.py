@@ -139,18 +139,36 @@ def test_chamfer_example_midpoints_on_shape():
 @pytest.mark.parametrize("d,same", [(2, False), (3, True), (4, False), (5, True)], ids=["d2", "d3", "d4", "d5"])
 def test_definitions_compared(d, same):
     r = nu.compare_definitions(d, levels=3)
+    w = r.witness
+    assert w["symbolic_recursion_equals_binomial"] and w["one_step_equal_up_to_shift"]
+    assert w["symbolic_one_step_equal"] is True          # 'same data rule' proved on symbolic data/parameters
+    assert w["multi_level_equal"] is same
+    if same:
+        assert w["symbolic_multi_level_equal"] is True and w["first_difference"] is None
+    else:
+        assert w["seed000_is_mirror_of_seed001"] and w["symbolic_mirror"] is True
+        fd = w["first_difference"]                       # the exact counterexample: a nonzero rational difference
+        assert sp.Rational(fd["seed000"]) - sp.Rational(fd["seed001"]) == sp.Rational(fd["difference"]) != 0
     assert r.status == "certified"
-    assert r.witness["symbolic_recursion_equals_binomial"] and r.witness["one_step_equal_up_to_shift"]
-    assert r.witness["multi_level_equal"] is same
-    if not same:
-        assert r.witness["seed000_is_mirror_of_seed001"]
+
+
+def test_compare_definitions_same_needs_symbolic_proof(monkeypatch):
+    # if the symbolic comparison cannot prove equality, "same" is only numerical (one rational example)
+    monkeypatch.setattr(nu, "_same_symbolic", lambda xs, ys: False)
+    r = nu.compare_definitions(3, levels=2)
+    assert r.witness["multi_level_equal"] and r.status == "numerical"
+    r2 = nu.compare_definitions(2, levels=2)             # the 'same data rule' part is unproved too
+    assert r2.status == "numerical"
 
 
 def test_u_convergence_rate_is_4_to_minus_k_certified():
     b = nu.u_convergence_bound(sp.Rational(1, 2), 3, levels=40)
     assert b.status == "certified"
-    C = float(b.upper)
-    assert abs(C - 2.0) < 1e-12  # max(acos(1/2)^2/2 = 0.548, 3 - 1 = 2)
+    assert isinstance(b.upper, sp.Rational)              # exact, rounded up: never a round-to-nearest float
+    assert 2 <= b.upper < 2 + sp.Rational(1, 10 ** 25)   # max(acos(1/2)^2/2 = 0.548, 3 - 1 = 2)
+    b2 = nu.u_convergence_bound(sp.Rational(1, 2), sp.Rational(3, 4), levels=10)
+    exact = sp.acos(sp.Rational(1, 2)) ** 2 / 2          # pi^2/18: the constant is irrational
+    assert isinstance(b2.upper, sp.Rational) and b2.upper > exact and b2.upper - exact < sp.Rational(1, 10 ** 25)
     lam = nu.lemma_2_1(sp.Rational(-1, 2), sp.Rational(1, 3))  # u0 < 1 only (trigonometric)
     assert lam.status == "certified"
     v = nu.parameter_from_angle(1.0)
@@ -162,15 +180,30 @@ def test_u_convergence_rate_is_4_to_minus_k_certified():
 def test_mask_decay_ratio_quarter():
     r = nu.mask_decay([0.2, 1.0, 7.0], degree=3, levels=10)
     assert r.status == "certified"
+    assert isinstance(r.lower, sp.Rational) and isinstance(r.upper, sp.Rational) and r.lower <= r.upper
+    # end points rounded outward: the d = 2, u0 = 1/2 upper bound 2 |delta_k| encloses the exact value
+    d2 = nu.mask_decay([sp.Rational(1, 2)], degree=2, levels=3, closed=True)
+    u = sp.Rational(1, 2)
+    for _ in range(3):
+        u = sp.sqrt((1 + u) / 2)
+    exact = 2 * (1 - u) / (4 * (1 + u))
+    assert d2.lower <= exact <= d2.upper and d2.upper - d2.lower < sp.Rational(1, 10 ** 25)
     assert abs(r.witness["ratios"][-1] - 0.25) < 1e-3
     lvl = r.witness["levels"][-1]
     assert float(lvl["lower"]) <= lvl["float_sup"] * (1 + 1e-12) and lvl["float_sup"] <= float(lvl["upper"]) * (1 + 1e-12)
 
 
 def test_symbol_identities_17_refuted_and_others_hold():
+    u, z = sp.symbols("u z")
+    a = (1 + (1 + 2 * u) * z + (1 + 2 * u) * z ** 2 + z ** 3) / (2 * (1 + u) * z)
+    vals = [sp.simplify(sp.diff(a, z, n).subs(z, 1)) for n in range(3)]
+    assert vals[0] == 2 and vals[1] == 1 and sp.simplify(vals[2] - 2 / (1 + u)) == 0
     r = nu.symbol_identities()
-    assert r.status == "refuted"
     assert r.witness["exact"] == {"a(1)": "2", "a'(1)": "1", "a''(1)": "2/(u + 1)"}
+    # the status follows the computed comparison with the printed (17) = (1, 2, 1)
+    differs = {k: sp.simplify(v - p) != 0 for k, v, p in zip(("a(1)", "a'(1)", "a''(1)"), vals, (1, 2, 1))}
+    assert r.witness["differs_from_printed"] == differs
+    assert r.status == ("refuted" if any(differs.values()) else "certified")
     assert r.witness["b(z)_equals_printed"] and r.witness["(12)_identities_hold"]
     assert r.witness["Lemma3.3_ratio_2(u/(1+u))^2_holds"] and r.witness["(11)_is_z_times_rule_(3)"]
 
@@ -228,6 +261,21 @@ def test_cli_json_and_errors(capsys):
     assert main(["nonuniform", "refine", "--points", "0,0;1,0", "--u", "1,1"], extra_modules=X) == 2
     err = capsys.readouterr().err
     assert err.startswith("subdiv: error:") and err.count("\n") == 1
+
+
+@pytest.mark.parametrize("argv,msg", [
+    (["reproduce", "--levels", "2", "--figure", "/nonexistent/dir/x.png"], "cannot write the figure"),
+    (["chamfer", "--levels", "2", "--figure", "/nonexistent/dir/x.png"], "cannot write the figure"),
+    (["junction", "--u-left", "abc", "--levels", "4"], "--u-left must be a number"),
+    (["junction", "--u-right", "nan", "--levels", "4"], "--u-right must be finite"),
+    (["junction", "--u-left", "-3", "--levels", "4"], "u > -1"),
+    (["junction", "--u-left", "-1", "--levels", "4"], "u > -1"),
+], ids=["figure-dir", "chamfer-figure-dir", "u-left-text", "u-right-nan", "u-left-negative", "u-left-minus-one"])
+def test_cli_bad_inputs_one_line(capsys, argv, msg):
+    assert main(["nonuniform"] + argv, extra_modules=X) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("subdiv: error:") and err.count("\n") == 1 and msg in err
+    assert "Traceback" not in err
 
 
 def test_figures(tmp_path):

@@ -62,12 +62,39 @@ def test_cli_reproduce_text(capsys):
     assert "generation of exp(lambda x), lambda in I*t,-I*t: certified" in out
 
 
+_TRIG = ["--scheme", "seed003-trigonometric"]
+_OM = ["--param", "omega=1/100"]
+_REP = ["reproduce", "--scheme", "exp-chaikin-trig", "--param", "t=pi/4", "--curve", "circle"]
+
+
 @pytest.mark.parametrize("argv, message", [
     (["series", "--scheme", "seed003-trig"], "unknown level-dependent scheme"),
     (["bound", "--lhs", "1"], "give --claim"),
     (["series", "--scheme", "seed003-trigonometric", "--box", "alpha=1"], "malformed --box"),
-], ids=["unknown-scheme", "missing-rhs", "bad-box"])
+    (["series", *_TRIG, "--box", "alpha=1,0", *_OM, "--m", "1"], "empty parameter box"),
+    (["series", *_TRIG, "--param", "alpha=1", *_OM, "--m", "1", "--pieces", "0"], "--pieces must be >= 1"),
+    (["series", *_TRIG, "--param", "alpha=1", *_OM, "--m", "1", "--difference", "-1"], "--difference must be >= 0"),
+    (["series", *_TRIG, "--param", "alpha=-1", *_OM, "--m", "1"], "outside the declared domain of alpha"),
+    (["bound", "--lhs", "3/4", "--rhs", "sin(3*alpha/2**(n+2))/sin(alpha/2**n)", "--n0", "-1", "--box",
+      "alpha=1/100,1"], "--n0 must be a non-negative level"),
+    ([*_REP, "--plot", "/nonexistent/dir/x.png"], "cannot write the plot"),
+    ([*_REP, "--points", "0"], "points must be an integer >= 3"),
+    ([*_REP, "--points", "-4"], "points must be an integer >= 3"),
+    ([*_REP, "--steps", "-1"], "steps must be an integer in 0..12"),
+    ([*_REP, "--steps", "13"], "steps must be an integer in 0..12"),
+], ids=["unknown-scheme", "missing-rhs", "bad-box", "reversed-box", "pieces-0", "difference-neg", "alpha-neg",
+        "n0-neg", "plot-dir", "points-0", "points-neg", "steps-neg", "steps-too-many"])
 def test_cli_errors_are_one_line(argv, message, capsys):
     assert main(argv, extra_modules=EXTRA) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1
+
+
+def test_plot_write_failure_is_an_analysis_error(tmp_path):
+    """An unwritable plot target (here: a directory) is a one-line AnalysisError, not an OSError."""
+    from analysis.result import AnalysisError
+
+    target = tmp_path / "d.png"
+    target.mkdir()
+    with pytest.raises(AnalysisError, match="cannot write the plot"):
+        curve_deviation(get("exp-chaikin-trig"), "circle", {"t": sp.pi / 4}, points=8, steps=2, plot=str(target))

@@ -71,3 +71,41 @@ def test_exponential_chaikin_is_C1_by_theorem():
 def test_two_boxes_rejected():
     with pytest.raises(AnalysisError, match="at most one"):
         weighted_series(TRIG, {"alpha": (1, 2), "omega": (0, 1)}, 0, pieces=2)
+
+
+@pytest.mark.parametrize("values, kw, message", [
+    ({"alpha": (1, 0), "omega": sp.Rational(1, 100)}, {}, "empty parameter box"),
+    ({"alpha": (1, 1), "omega": sp.Rational(1, 100)}, {}, "empty parameter box"),
+    ({"alpha": -1, "omega": sp.Rational(1, 100)}, {}, "outside the declared domain"),
+    ({"alpha": (-1, 1), "omega": sp.Rational(1, 100)}, {}, "outside the declared domain"),
+    ({"alpha": 1, "omega": sp.Rational(1, 100)}, {"pieces": 0}, "pieces must be an integer >= 1"),
+    ({"alpha": 1, "omega": sp.Rational(1, 100)}, {"difference": -1}, "difference must be a non-negative"),
+], ids=["reversed-box", "degenerate-box", "negative-positive-symbol", "box-below-0", "pieces-0", "difference-neg"])
+def test_bad_values_rejected(values, kw, message):
+    with pytest.raises(AnalysisError, match=message):
+        weighted_series(TRIG, values, 1, **kw)
+
+
+def test_smoothness_rejects_negative_difference():
+    with pytest.raises(AnalysisError, match="difference must be"):
+        smoothness(TRIG, VALS, 2, difference=-1)
+
+
+def test_box_touching_the_closure_of_a_positive_domain_is_accepted_and_sum_is_nonnegative():
+    r = weighted_series(TRIG, {"alpha": (0, sp.Rational(1, 10)), "omega": sp.Rational(1, 100)}, 1)
+    assert r.status == "certified" and r.witness["verdict"] == "convergent"
+    # the sum of norms is >= 0: the lower bound is clipped at 0, and the terms vanish at alpha = 0
+    assert r.lower == 0 and 0 < r.upper < 1
+
+
+def test_disjoint_enclosures_are_a_certification_bug(monkeypatch):
+    """Direct and Taylor-model enclosures that do not overlap must not be silently ignored."""
+    import flint
+
+    from analysis import series
+
+    real = series.coefficient_differences
+    monkeypatch.setattr(series, "coefficient_differences",
+                        lambda s, n, env: [d + flint.arb(10) for d in real(s, n, env)])
+    with pytest.raises(RuntimeError, match="certification bug"):
+        weighted_series(TRIG, VALS, 1, N=30)

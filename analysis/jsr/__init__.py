@@ -46,6 +46,11 @@ Algorithm (``method="auto"``)
    real symmetric case, started from the leading eigenvectors of every candidate product within
    ``1e-9`` of the best (several s.m.p.s; complex leading eigenvalues enter through the real and
    imaginary parts of their eigenvectors). Restarts when a vertex path reveals a better product.
+   A *thin* polytope (vertex matrix condition number above ``THIN_COND``, typical of
+   fast-decaying spectra such as Daubechies D20 and beyond) is decided on float rounding noise
+   in its thin directions and never closes; it is then rebuilt for the exactly similar family
+   ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex matrix; matrices computed exactly or
+   in Arb balls), in which it is round (:mod:`analysis.jsr._precondition`; up to 3 rounds).
 4. Certificate: every membership ``A_i v_j / r in absconv(V)`` is re-checked exactly
    (:func:`analysis.jsr._polytope.certify_polytope`), giving ``JSR <= r * c`` rigorously.
 5. If the polytope does not close: the same algorithm for ``A_i / (r (1 + eps))`` with
@@ -84,11 +89,15 @@ from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_ex
                      parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
 from ._hp import certify_polytope_hp
 from ._polytope import build_polytope, certify_polytope, leading_is_real, leading_roots
+from ._precondition import rounding_transform, transform_family
 from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
 
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
 
 METHODS = ("auto", "polytope", "norms")
+#: a float polytope whose vertex matrix is worse conditioned than this is rebuilt for a
+#: similar family that rounds it (see :mod:`analysis.jsr._precondition`)
+THIN_COND = 1e10
 
 
 @dataclass
@@ -291,6 +300,30 @@ def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
                                "products_enumerated_to": L})
 
 
+def _certify_closed(F: Family, r: Fraction, st, cands, lower: Fraction, rel_gap: float):
+    """Certificate of a closed float polytope: the standard one, and the high-precision one when
+    the standard one misses the target (or fails)."""
+    cert = certify_polytope(F, r, st)
+    if cert is None or not (lower > 0 and cert.upper <= lower * (1 + Fraction(rel_gap) / 4)):
+        # the float roots are not exact eigenvectors: rebuild the same polytope at high
+        # precision and re-solve every membership in a local basis
+        try:
+            hp = certify_polytope_hp(F, r, st, [w for _, w in cands], float(r))
+        except (ArithmeticError, ValueError, ZeroDivisionError):  # pragma: no cover
+            hp = None
+        if hp is not None and (cert is None or hp.upper < cert.upper):
+            cert = hp
+    return cert
+
+
+def _cert_info(r: Fraction, st, cert) -> dict[str, Any]:
+    return {"scale_r": r, "certified_norm_bound": cert.bound,
+            "basis_inverse_norm": cert.basis_inverse_norm,
+            "certificate_arithmetic": cert.arithmetic,
+            "polytope_vertex_roots": sorted(set(st.root_of)),
+            "vertices": [v.tolist() for v in st.V] if len(st.V) <= 300 else None}
+
+
 def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: float,
                     max_vertices: int) -> _Bounds:
     t_start = time.perf_counter()
@@ -328,7 +361,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         for _, w in cands:
             roots.extend(leading_roots(mats, w, rho_f))
         st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
-                            max_vertices=max_vertices)
+                            max_vertices=max_vertices, thin_stop=THIN_COND)
         if st.better_word is not None and restarts < 6:
             restarts += 1
             bw = canonical_word(st.better_word)
@@ -345,32 +378,62 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
                     "leading_eigenvalue_real": real_lead,
                     "stop_reason": st.stop_reason})
     if st.closed:
-        cert = certify_polytope(F, r, st)
-        if cert is None or not (lower > 0 and cert.upper <= lower * (1 + Fraction(rel_gap) / 4)):
-            # the float roots are not exact eigenvectors: rebuild the same polytope at high
-            # precision and re-solve every membership in a local basis
-            try:
-                hp = certify_polytope_hp(F, r, st, [w for _, w in cands], float(r))
-            except (ArithmeticError, ValueError, ZeroDivisionError):  # pragma: no cover
-                hp = None
-            if hp is not None and (cert is None or hp.upper < cert.upper):
-                cert = hp
+        cert = _certify_closed(F, r, st, cands, lower, rel_gap)
         if cert is not None:
             upper = cert.upper
-            cert_info = {"scale_r": r, "certified_norm_bound": cert.bound,
-                         "basis_inverse_norm": cert.basis_inverse_norm,
-                         "certificate_arithmetic": cert.arithmetic,
-                         "polytope_vertex_roots": sorted(set(st.root_of)),
-                         "vertices": [v.tolist() for v in st.V] if len(st.V) <= 300 else None}
+            cert_info = _cert_info(r, st, cert)
         else:
             notes.append("the closed float polytope could not be certified (singular basis)")
 
     def gap_ok(u: Fraction | None) -> bool:
         return u is not None and lower > 0 and u <= lower * (1 + Fraction(rel_gap))
 
+    method = "invariant polytope (Guglielmi-Protasov), certified"
+    # a thin polytope (ill-conditioned vertex matrix): float memberships are decided on rounding
+    # noise in the thin directions; rebuild it for an exactly similar, rounder family
+    Fc, stc = F, st
+    precond: list[dict[str, Any]] = []
+    for _round in range(3):
+        if gap_ok(upper) or _time_left(deadline) <= 0.15 * total:
+            break
+        Vc = stc.matrix()
+        sv = np.linalg.svd(Vc, compute_uv=False) if Vc.shape[1] else np.zeros(1)
+        sv = sv[sv > 0]
+        if not (len(sv) and sv[0] > 1e6 * sv[-1]):
+            break
+        S = rounding_transform(Vc)
+        G = transform_family(Fc, S) if S is not None else None
+        if G is None:
+            break
+        roots = []
+        for _, w in cands:
+            roots.extend(leading_roots(G.floats, w, float(r)))
+        t_pc = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
+        st3 = build_polytope(G.floats, float(r), roots, deadline=t_pc,
+                             max_vertices=max_vertices, check_better=False,
+                             thin_stop=THIN_COND if _round < 2 else None)
+        info = {"cond_before": float(sv[0] / sv[-1]), "vertices": len(st3.V),
+                "closed": st3.closed, "stop": st3.stop_reason, "lp_calls": st3.lp_calls}
+        precond.append(info)
+        Fc, stc = G, st3
+        if st3.closed:
+            c3 = _certify_closed(G, r, st3, cands, lower, rel_gap)
+            if c3 is not None and (upper is None or c3.upper < upper):
+                upper = c3.upper
+                info["certified_norm_bound"] = c3.bound
+                cert_info = _cert_info(r, st3, c3)
+                cert_info["polytope_coordinates"] = ("preconditioned: vertices are in the "
+                                                     "coordinates of S^-1 A_i S")
+                witness.update({"polytope_vertices": len(st3.V), "closed": True,
+                                "stop_reason": "closed (after preconditioning)"})
+                method = ("invariant polytope (Guglielmi-Protasov) of an exactly similar family "
+                          "S^-1 A_i S (S dyadic, rounding the thin polytope), certified")
+            break
+    if precond:
+        witness["preconditioning"] = precond
+
     # relaxed polytopes: A_i / (r (1 + eps)) contract, so the tree closes for eps > 0
     relaxed: dict[str, Any] = {}
-    method = "invariant polytope (Guglielmi-Protasov), certified"
     if not gap_ok(upper):
         rho_f = float(r)
         for eps in sorted({e for e in (1e-2, 1e-4, rel_gap / 4) if e >= rel_gap / 4},
@@ -380,14 +443,14 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             re = r * (1 + Fraction(eps))
             roots = []
             for _, w in cands:
-                roots.extend(leading_roots(mats, w, rho_f))
+                roots.extend(leading_roots(Fc.floats, w, rho_f))
             t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
-            st2 = build_polytope(mats, float(re), roots, deadline=t_eps,
+            st2 = build_polytope(Fc.floats, float(re), roots, deadline=t_eps,
                                  max_vertices=max_vertices, check_better=False)
             if not st2.closed:
                 relaxed = {"eps_failed": eps, "vertices": len(st2.V), "stop": st2.stop_reason}
                 break
-            c2 = certify_polytope(F, re, st2)
+            c2 = certify_polytope(Fc, re, st2)
             if c2 is None:
                 break
             if upper is None or c2.upper < upper:

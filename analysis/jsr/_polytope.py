@@ -235,8 +235,12 @@ def leading_is_real(mats: Sequence[np.ndarray], word: Sequence[int], rel: float 
 
 def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndarray], *,
                    deadline: float, max_vertices: int = 1500, tol: float = 1e-11,
-                   check_better: bool = True) -> PolytopeState:
-    """The float phase of the invariant polytope algorithm (see module docstring)."""
+                   check_better: bool = True, thin_stop: float | None = None) -> PolytopeState:
+    """The float phase of the invariant polytope algorithm (see module docstring).
+
+    ``thin_stop``: stop early (``stop_reason`` starting with ``"thin polytope"``) when the vertex
+    matrix spans but its condition number exceeds this value (checked every ``2 n`` vertices from ``8 n`` on):
+    the caller then rounds the polytope by a similarity (:mod:`analysis.jsr._precondition`)."""
     n, k = mats[0].shape[0], len(mats)
     B = [np.asarray(A, dtype=float) / r for A in mats]
     st = PolytopeState(n, k)
@@ -290,6 +294,14 @@ def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndar
                     if np.isfinite(nx):
                         st.max_norm_seen = max(st.max_norm_seen, nx)
                     jn = add(x, st.root_of[j], path)
+                    if thin_stop is not None and len(st.V) % (2 * n) == 0 and len(st.V) >= 8 * n:
+                        sv = np.linalg.svd(st.matrix(), compute_uv=False)
+                        # numerically rank deficient counts as thin; exact zeros (an exactly
+                        # invariant subspace) do not
+                        sv = sv[sv > 0]
+                        if len(sv) and sv[0] > thin_stop * sv[-1]:
+                            st.stop_reason = f"thin polytope (cond {sv[0] / sv[-1]:.2g})"
+                            return st
                     st.reps[(i, j)] = (np.array([jn]), np.array([1.0]))
                     new.append(jn)
             frontier = new
