@@ -216,6 +216,9 @@ class Verdict:
                 if r is not None and r.status in (NUMERICAL, INCONCLUSIVE):
                     raise ValueError(f"a {self.status} verdict cannot rest on {r.status} evidence "
                                      f"({ev.title})")
+            if not any(ev.result is not None and ev.result.status in (CERTIFIED, REFUTED) for ev in self.evidence):
+                raise ValueError(f"a {self.status} verdict needs at least one certified or refuted Result "
+                                 "in its evidence")
         names = [n.name for n in self.numbers]
         if len(set(names)) != len(names):
             raise ValueError(f"duplicate number names in a verdict: {names}")

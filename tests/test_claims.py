@@ -18,7 +18,8 @@ def _true():
 
 
 def _false():
-    return C.refuted("1 + 1 = 2, not 3", "1 + 1 = 2", numbers=[C.Number("sum", 2)])
+    return C.refuted("1 + 1 = 2, not 3", "1 + 1 = 2", numbers=[C.Number("sum", 2)],
+                     evidence=[C.Evidence("sum", result=C.exact_result(2, "exact"))])
 
 
 def _open():
@@ -193,3 +194,14 @@ def test_gibbs_level_one_conditions():
     assert sp.expand(z[(1, -1)] - t.coeff(-1) - t.coeff(-3)) == 0
     s, _ = seed004._zeta_set(t, 1, NU)
     assert str(s) == "[5/7, 7]"
+
+
+def test_certified_verdict_without_a_certified_result_is_rejected():
+    import pytest as _pytest
+
+    from analysis import claims as C
+
+    with _pytest.raises(ValueError, match="needs at least one certified"):
+        C.certified("looks fine", evidence=[C.Evidence("prose only", text="trust me")])
+    with _pytest.raises(ValueError, match="needs at least one certified"):
+        C.refuted("wrong", corrected="right")
