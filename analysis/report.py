@@ -14,9 +14,10 @@ an unchanged report changes no file). The Unicode/plain-text form is always prin
 
 Examples
 --------
->>> from analysis.claims import Claim, Paper, certified, evaluate_paper
+>>> from analysis.claims import Claim, Evidence, Paper, certified, evaluate_paper, exact_result
+>>> ok = lambda: certified("yes", evidence=[Evidence("1 - 1", result=exact_result(0, "exact"))])
 >>> p = Paper(id="998", title="Toy", citation="-", claims=[
-...     Claim(id="998:(1)", kind="identity", statement="1 = 1", evaluate=lambda: certified("yes"))])
+...     Claim(id="998:(1)", kind="identity", statement="1 = 1", evaluate=ok)])
 >>> md = markdown(p, evaluate_paper(p), figures={})
 >>> "| 998:(1) | identity | CERTIFIED TRUE |" in md
 True
