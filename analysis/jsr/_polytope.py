@@ -389,13 +389,7 @@ def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate |
             W = N * Vz                                   # A_i V = W / (D 2^S)
             for j in range(m):
                 supp, lam = st.reps[(i, j)]
-                lint = [int(round(float(np.ldexp(c, T)))) for c in lam]
-                comb = [0] * n
-                for s_, c in zip(supp, lint):
-                    if c:
-                        s_ = int(s_)
-                        for a in range(n):
-                            comb[a] += c * Vint[a][s_]
+                lint, comb = _integer_combination(supp, lam, T, Vint, n)
                 # residual numerator over den = p D 2^(S+T)
                 res_abs = 0
                 for a in range(n):
@@ -415,13 +409,7 @@ def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate |
                 W = (F.arb(i) * Vb) * (1 / rb)
                 for j in range(m):
                     supp, lam = st.reps[(i, j)]
-                    lint = [int(round(float(np.ldexp(c, T)))) for c in lam]
-                    comb = [0] * n
-                    for s_, c in zip(supp, lint):
-                        if c:
-                            s_ = int(s_)
-                            for a in range(n):
-                                comb[a] += c * Vint[a][s_]
+                    lint, comb = _integer_combination(supp, lam, T, Vint, n)
                     den = arb(2) ** (S + T)
                     res = arb(0)
                     for a in range(n):
@@ -510,3 +498,16 @@ def _local_basis_bounds(F: Family, r: Fraction, st: PolytopeState, Vint: list[li
                     if tot.is_finite():
                         out[(i, j)] = arb_to_fraction_bounds(tot)[1]
     return out
+
+
+def _integer_combination(supp, lam, T: int, Vint, n: int):
+    """Coefficients ``lam`` rounded to integers ``lint`` = round(lam 2^T) and the exact integer
+    combination ``comb = sum_s lint_s V[:, s]`` of the (integer-scaled) vertices."""
+    lint = [int(round(float(np.ldexp(c, T)))) for c in lam]
+    comb = [0] * n
+    for s_, c in zip(supp, lint):
+        if c:
+            s_ = int(s_)
+            for a in range(n):
+                comb[a] += c * Vint[a][s_]
+    return lint, comb
