@@ -600,32 +600,29 @@ def _arb_point(t):
     return sign * flint.arb(int(man)) * flint.arb(2) ** int(exp)
 
 
-def _iv_acos(x):
-    """Rigorous enclosure of arccos over the interval ``x`` (decreasing), via Arb."""
+def _iv_monotone(x, name: str, increasing: bool):
+    """Rigorous enclosure of the monotone Arb function ``name`` over the interval ``x``."""
     import flint
 
     old = flint.ctx.prec
     flint.ctx.prec = max(old, mpmath.iv.prec + 10)
     try:
-        lo = _arb_to_iv(_arb_point(x.b).acos())
-        hi = _arb_to_iv(_arb_point(x.a).acos())
+        ends = (x.a, x.b) if increasing else (x.b, x.a)
+        lo = _arb_to_iv(getattr(_arb_point(ends[0]), name)())
+        hi = _arb_to_iv(getattr(_arb_point(ends[1]), name)())
     finally:
         flint.ctx.prec = old
     return mpmath.iv.mpf([lo.a, hi.b])
+
+
+def _iv_acos(x):
+    """Rigorous enclosure of arccos over the interval ``x`` (decreasing), via Arb."""
+    return _iv_monotone(x, "acos", increasing=False)
 
 
 def _iv_acosh(x):
     """Rigorous enclosure of arccosh over ``x >= 1`` (increasing), via Arb."""
-    import flint
-
-    old = flint.ctx.prec
-    flint.ctx.prec = max(old, mpmath.iv.prec + 10)
-    try:
-        lo = _arb_to_iv(_arb_point(x.a).acosh())
-        hi = _arb_to_iv(_arb_point(x.b).acosh())
-    finally:
-        flint.ctx.prec = old
-    return mpmath.iv.mpf([lo.a, hi.b])
+    return _iv_monotone(x, "acosh", increasing=True)
 
 
 def _limit_constant_iv(u0, prec: int):
