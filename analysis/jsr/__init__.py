@@ -88,8 +88,9 @@ from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
 from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_expression,
                      parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
 from ._hp import certify_polytope_hp
-from ._polytope import build_polytope, certify_polytope, leading_is_real, leading_roots
-from ._precondition import rounding_transform, transform_family
+from ._polytope import build_polytope, certify_polytope, leading_is_real
+from ._balance import balanced_roots
+from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
 
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
@@ -328,9 +329,8 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
                     max_vertices: int) -> _Bounds:
     t_start = time.perf_counter()
     total = max(deadline - t_start, 0.05)
-    mats = F.floats
     notes: list[str] = []
-    sr = smp_search(mats, max_length, deadline=t_start + 0.25 * total)
+    sr = smp_search(F.floats, max_length, deadline=t_start + 0.25 * total)
     cands = list(sr.candidates)
     word = sr.best_word
     witness: dict[str, Any] = {"search": {"levels": sr.levels_done,
@@ -343,10 +343,24 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
     if sr.best_rho <= 0 or lower == 0:
         return _solve_zero(F, word, lower, rp, witness, max_length, deadline)
 
+    # a badly scaled family (fast-decaying spectrum, e.g. Daubechies D20+) gives a thin polytope
+    # decided on rounding noise: work from the start in the exactly similar family in which the
+    # sum-of-squares ellipsoid is a ball (certificates hold for the input family unchanged)
+    precond: list[dict[str, Any]] = []
+    Fw = F
+    S0, condR = ellipsoid_transform(F.floats)
+    if S0 is not None:
+        G = transform_family(F, S0)
+        if G is not None:
+            Fw = G
+            precond.append({"kind": "sum-of-squares ellipsoid", "cond_R": condR})
+    mats = Fw.floats
+
     upper: Fraction | None = None
     cert_info: dict[str, Any] = {}
     st = None
     restarts = 0
+    balance: dict[str, Any] = {}
     while True:
         # a complex leading eigenvalue rotates the root: the real polytope closes exactly only
         # for a rational rotation, so the exact attempt gets less time
@@ -357,11 +371,12 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         cands = [(_rho_word(mats, w), w) for _, w in cands]
         rho_f = max(c[0] for c in cands)
         r = Fraction(rho_f)
-        roots = []
-        for _, w in cands:
-            roots.extend(leading_roots(mats, w, rho_f))
+        roots, balance = balanced_roots(mats, rho_f, [w for _, w in cands])
+        # after the ellipsoid rounding an early polytope (few directions filled) is thin
+        # legitimately: no early stop then
         st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
-                            max_vertices=max_vertices, thin_stop=THIN_COND)
+                            max_vertices=max_vertices,
+                            thin_stop=THIN_COND if Fw is F else None)
         if st.better_word is not None and restarts < 6:
             restarts += 1
             bw = canonical_word(st.better_word)
@@ -377,22 +392,29 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
                     "lp_calls": st.lp_calls, "restarts": restarts,
                     "leading_eigenvalue_real": real_lead,
                     "stop_reason": st.stop_reason})
+    if balance.get("groups", 0) > 1:
+        witness["balancing"] = balance
+    method = "invariant polytope (Guglielmi-Protasov), certified"
+    if Fw is not F:
+        method = ("invariant polytope (Guglielmi-Protasov) of an exactly similar family "
+                  "S^-1 A_i S (S dyadic, from the sum-of-squares ellipsoid), certified")
     if st.closed:
-        cert = _certify_closed(F, r, st, cands, lower, rel_gap)
+        cert = _certify_closed(Fw, r, st, cands, lower, rel_gap)
         if cert is not None:
             upper = cert.upper
             cert_info = _cert_info(r, st, cert)
+            if Fw is not F:
+                cert_info["polytope_coordinates"] = ("preconditioned: vertices are in the "
+                                                     "coordinates of S^-1 A_i S")
         else:
             notes.append("the closed float polytope could not be certified (singular basis)")
 
     def gap_ok(u: Fraction | None) -> bool:
         return u is not None and lower > 0 and u <= lower * (1 + Fraction(rel_gap))
 
-    method = "invariant polytope (Guglielmi-Protasov), certified"
     # a thin polytope (ill-conditioned vertex matrix): float memberships are decided on rounding
     # noise in the thin directions; rebuild it for an exactly similar, rounder family
-    Fc, stc = F, st
-    precond: list[dict[str, Any]] = []
+    Fc, stc = Fw, st
     for _round in range(3):
         if gap_ok(upper) or _time_left(deadline) <= 0.15 * total:
             break
@@ -405,9 +427,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         G = transform_family(Fc, S) if S is not None else None
         if G is None:
             break
-        roots = []
-        for _, w in cands:
-            roots.extend(leading_roots(G.floats, w, float(r)))
+        roots, _ = balanced_roots(G.floats, float(r), [w for _, w in cands])
         t_pc = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
         st3 = build_polytope(G.floats, float(r), roots, deadline=t_pc,
                              max_vertices=max_vertices, check_better=False,
@@ -441,9 +461,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             if _time_left(deadline) <= 0.02 * total:
                 break
             re = r * (1 + Fraction(eps))
-            roots = []
-            for _, w in cands:
-                roots.extend(leading_roots(Fc.floats, w, rho_f))
+            roots, _ = balanced_roots(Fc.floats, rho_f, [w for _, w in cands])
             t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
             st2 = build_polytope(Fc.floats, float(re), roots, deadline=t_eps,
                                  max_vertices=max_vertices, check_better=False)

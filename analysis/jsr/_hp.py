@@ -28,6 +28,7 @@ import scipy.linalg
 from flint import arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
+from ._balance import eigen_groups
 from ._polytope import Certificate, PolytopeState
 
 #: bits of the exact dyadic vertex coordinates
@@ -78,36 +79,39 @@ def _refine_eigenpair(P, lam: complex, u: np.ndarray, prec: int, iters: int = 12
     return L, U
 
 
-def hp_leading_roots(Pm: Sequence, mats: Sequence[np.ndarray], word: Sequence[int], r: float,
-                     prec: int, rel: float = 1e-8) -> list:
-    """As :func:`analysis.jsr._polytope.leading_roots`, in the same order, at ``prec`` bits."""
+def hp_roots(Pm: Sequence, mats: Sequence[np.ndarray], words: Sequence, r: float,
+             prec: int) -> list:
+    """The unscaled roots of :func:`analysis.jsr._balance.balanced_roots`, in the same order,
+    as ``prec``-bit mpmath vectors: each leading eigenpair Newton-refined for the exact
+    (midpoint) product, with the same normalization ``u[q] = 1``."""
     n = mats[0].shape[0]
-    P = np.eye(n)
-    for i in word:
-        P = P @ (mats[i] / r)
-    w, U = np.linalg.eig(P)
-    top = float(np.max(np.abs(w)))
+    B = [np.asarray(A, dtype=float) / r for A in mats]
     out = []
     with mpmath.workprec(prec):
-        Pmp = mpmath.eye(n)
         rr = mpmath.mpf(r)
-        for i in word:
-            Pmp = Pmp * (Pm[i] / rr)
-        for lam, u in zip(w, U.T):
-            if abs(lam) < top * (1 - rel):
-                continue
-            _, V = _refine_eigenpair(Pmp, complex(lam), u, prec)
-            real = abs(lam.imag) <= 1e-12 * top
-            parts = [[x.real for x in V]] if real else [[x.real for x in V], [x.imag for x in V]]
-            fparts = [u.real] if real else [u.real, u.imag]
-            for p, fp in zip(parts, fparts):
-                if float(np.max(np.abs(fp))) > 1e-12:
-                    a = max(abs(x) for x in p)
-                    p = [x / a for x in p]
-                    jm = int(np.argmax(np.abs(fp)))
-                    sgn = 1 if p[jm] > 0 else -1
-                    out.append([sgn * x for x in p])
+        for word in words:
+            Pmp = mpmath.eye(n)
+            for i in word:
+                Pmp = Pmp * (Pm[i] / rr)
+            for lam, u, _ in eigen_groups(B, word):
+                _, V = _refine_eigenpair(Pmp, lam, u, prec)
+                if lam.imag == 0:
+                    out.append([mpmath.re(x) for x in V])
+                else:
+                    out.append([mpmath.re(x) for x in V])
+                    out.append([mpmath.im(x) for x in V])
     return out
+
+
+def _scaled_root(p: list, v: np.ndarray):
+    """``s p`` with the float factor ``s`` that matches the (balanced, rounded) float root ``v``;
+    ``None`` if ``v`` is not a multiple of ``p`` (the root order does not match the float run).
+    Any multiple of an exact eigenvector is one, so the factor need not be exact."""
+    pf = np.array([float(x) for x in p])
+    s = float(pf @ v) / float(pf @ pf)
+    if not np.isfinite(s) or float(np.max(np.abs(s * pf - v))) > 1e-6 * max(float(np.max(np.abs(v))), 1e-300):
+        return None
+    return [mpmath.mpf(s) * x for x in p]
 
 
 def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_words: Sequence,
@@ -119,9 +123,7 @@ def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_wor
         return None
     prec = HP_BITS + 64
     Pm = _mid_matrices(F, prec)
-    roots: list = []
-    for w in candidate_words:
-        roots.extend(hp_leading_roots(Pm, F.floats, w, rho_float, prec))
+    roots = hp_roots(Pm, F.floats, candidate_words, rho_float, prec)
     index = {(st.root_of[j], st.path[j]): j for j in range(m)}
     S = HP_BITS
     Vint: list[list[int] | None] = [None] * m
@@ -133,9 +135,10 @@ def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_wor
             p, ro = st.path[j], st.root_of[j]
             if not p:
                 if ro < len(roots):
-                    v = mpmath.matrix(roots[ro])
-                    if float(np.max(np.abs(np.array([float(x) for x in v]) - st.V[j]))) > 1e-6:
+                    sr = _scaled_root(roots[ro], st.V[j])
+                    if sr is None:
                         return None           # the root order does not match the float run
+                    v = mpmath.matrix(sr)
                 else:
                     v = mpmath.matrix([mpmath.mpf(float(x)) for x in st.V[j]])
             else:

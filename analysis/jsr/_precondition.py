@@ -24,6 +24,7 @@ the polytope algorithm).
 from __future__ import annotations
 
 from fractions import Fraction
+from typing import Sequence
 
 import numpy as np
 from flint import arb_mat, fmpq, fmpq_mat
@@ -72,3 +73,27 @@ def transform_family(F: Family, S: np.ndarray) -> Family | None:
     if not all(np.all(np.isfinite(M)) for M in fl):
         return None
     return Family(fl, "ball", None, None, balls)
+
+
+def ellipsoid_transform(mats: Sequence[np.ndarray], min_cond: float = 1e3) -> tuple[np.ndarray | None, float]:
+    """``(S, cond)``: ``S = R^{-1}`` (scaled to a unit largest singular value) for the
+    sum-of-squares ellipsoid norm ``||x||_Q = ||R x||_2`` of the family
+    (:func:`analysis.jsr._search.balancing_transform`), so that ``S^{-1} A_i S = R A_i R^{-1}``
+    is the family in coordinates where that near-extremal ellipsoid is a ball. Used *before* the
+    polytope is built when the family is badly scaled (``cond(R) >= min_cond``, e.g. Daubechies
+    D20 and beyond); ``S`` is ``None`` below that threshold.
+
+    >>> A = [np.array([[1.0, 1e4], [0.0, 0.5]]), np.array([[0.5, 0.0], [1e-4, 1.0]])]
+    >>> S, c = ellipsoid_transform(A)
+    >>> S is not None and c > 1e3
+    True
+    """
+    from ._search import balancing_transform
+
+    R, _ = balancing_transform(mats)
+    cond = float(np.linalg.cond(R))
+    if not np.isfinite(cond) or cond < min_cond:
+        return None, cond
+    S = np.linalg.inv(R)
+    S = S / np.linalg.norm(S, 2)
+    return S, cond
