@@ -128,3 +128,28 @@ def test_d22_thin_polytope_certified_after_preconditioning():
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
     assert abs(float(r.lower) - 3.6035) < 1e-4
     assert "preconditioning" in r.witness["jsr"].witness
+
+
+def test_d40_two_smps_balanced_and_certified():
+    """D40: T0 and T1 have the same spectral radius (two s.m.p.s); the polytope closes only from
+    balanced roots (Guglielmi–Protasov 2016) in the ellipsoid-rounded coordinates. Cross-checks:
+    the lower end is k - log2 rho(T_w) of a single matrix, and the interval lies between the
+    float brute-force bounds of all products of length <= 8 (spectral radii below, norms above)."""
+    import numpy as np
+    from analysis.jsr import brute_force_bounds
+
+    r, dt = _certified("daubechies-40", budget=150)
+    assert r.status == "certified" and float(r.upper - r.lower) < 1e-9
+    jw = r.witness["jsr"].witness
+    assert jw["closed"] and jw["balancing"]["groups"] >= 2 and len(r.witness["product"]) == 1
+    assert jw["preconditioning"][0]["kind"] == "sum-of-squares ellipsoid"
+    e = schemes.get("daubechies-40")
+    with flint.ctx.workprec(400):
+        c = [x * 2 ** 19 for x in ball_divide_by_one_plus_z(e.enclosure(300), 20)]
+        T0, T1 = ball_transition_matrices(c)
+    M = [np.array([[float(x.mid()) if not isinstance(x, int) else 0.0 for x in row]
+                   for row in T]) for T in (T0, T1)]
+    bf = brute_force_bounds(M, 8)
+    a_lo, a_hi = 19 - math.log2(bf["upper"]), 19 - math.log2(bf["lower"])
+    assert a_lo - 1e-9 <= float(r.lower) <= float(r.upper) <= a_hi + 1e-9
+    assert abs(float(r.lower) - a_hi) < 1e-8          # rho(T_1) attains the JSR

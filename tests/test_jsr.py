@@ -201,17 +201,35 @@ def test_longer_products_never_worsen_the_interval(seed):
     assert gap(ra) < gap(rn)
 
 
-def test_complex_leading_eigenvalue_relaxed_polytope():
+def test_complex_leading_eigenvalue_complex_polytope():
     """The s.m.p. (0,) of this family has a complex leading eigenvalue pair (an irrational
-    rotation): the real polytope cannot close exactly; the relaxed polytope for
-    A_i / (rho (1 + eps)) still certifies an interval of relative width ~ eps."""
+    rotation): the real polytope cannot close exactly; the complex polytope (started from u and
+    conj(u)) closes and is certified in Arb complex balls, to the precision of the arithmetic."""
     fam = _random_rational_family(10)
-    r = jsr_bounds(fam, budget_seconds=20, rel_gap=1e-3)
-    assert r.status == "certified" and gap(r) <= 1e-3
+    r = jsr_bounds(fam, budget_seconds=20, rel_gap=1e-8)
+    assert r.status == "certified" and gap(r) <= 1e-12
     assert r.witness["leading_eigenvalue_real"] is False
-    assert "relaxed" in r.provenance["method"]
+    assert "complex invariant polytope" in r.provenance["method"]
+    assert r.witness["complex_polytope"]["closed"]
     bf = brute_force_bounds(parse_family(fam).floats, 10)
     assert bf["lower"] <= float(r.upper) and float(r.lower) <= bf["upper"]
+
+
+def test_complex_certificate_is_rigorous_for_a_rotation():
+    """Scaled rotation by an irrational angle (cos = 3/5) and a contraction: JSR = 2 exactly.
+    The certified upper bound must be >= 2 (rigour) and within 1e-12 of it (closure)."""
+    from analysis.jsr._complex import build_complex_polytope, certify_complex_polytope
+    R = sp.Rational
+    fam = [[[R(6, 5), R(-8, 5)], [R(8, 5), R(6, 5)]], [[R(1, 2), 0], [0, R(1, 4)]]]
+    F = parse_family(fam)
+    u = np.array([1.0, -1.0j])
+    st = build_complex_polytope(F.floats, 2.0, [u, u.conj()], deadline=time.perf_counter() + 10)
+    assert st.closed
+    c = certify_complex_polytope(F, Fraction(2), st)
+    assert 2 <= c.upper <= 2 * (1 + Fraction(1, 10 ** 12))
+    # a scale below the JSR cannot be certified: the bound exceeds it by the true ratio
+    c2 = certify_complex_polytope(F, Fraction(19, 10), st)
+    assert c2 is None or c2.upper >= 2
 
 
 def test_brute_force_bounds_bracket_known_value():

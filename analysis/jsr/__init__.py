@@ -90,6 +90,7 @@ from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_ex
 from ._hp import certify_polytope_hp
 from ._polytope import build_polytope, certify_polytope, leading_is_real
 from ._balance import balanced_roots
+from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
 
@@ -451,6 +452,34 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             break
     if precond:
         witness["preconditioning"] = precond
+
+    # a complex leading eigenvalue: the complex (elliptic) polytope can close exactly
+    if not gap_ok(upper) and not real_lead and _time_left(deadline) > 0.1 * total:
+        croots, _ = balanced_roots(Fw.floats, float(r), [w for _, w in cands], complex_roots=True)
+        t_c = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
+        stx = build_complex_polytope(Fw.floats, float(r), croots, deadline=t_c,
+                                     max_vertices=min(max_vertices, 800), check_better=False)
+        cinfo: dict[str, Any] = {"vertices": len(stx.V), "closed": stx.closed,
+                                 "stop": stx.stop_reason, "socp_calls": stx.lp_calls}
+        if stx.closed:
+            cc = certify_complex_polytope(Fw, r, stx)
+            if cc is not None:
+                cinfo["certified_norm_bound"] = cc.bound
+                if upper is None or cc.upper < upper:
+                    upper = cc.upper
+                    method = ("complex invariant polytope (Guglielmi-Wirth-Zennaro; "
+                              "Guglielmi-Protasov), certified in Arb complex balls")
+                    cert_info = {"scale_r": r, "certified_norm_bound": cc.bound,
+                                 "certificate_arithmetic": cc.arithmetic,
+                                 "polytope_kind": "complex balanced hull",
+                                 "vertices": ([[[float(x.real), float(x.imag)] for x in v]
+                                               for v in stx.V] if len(stx.V) <= 300 else None)}
+                    if Fw is not F:
+                        cert_info["polytope_coordinates"] = ("preconditioned: vertices are in "
+                                                             "the coordinates of S^-1 A_i S")
+                    witness.update({"polytope_vertices": len(stx.V), "closed": True,
+                                    "stop_reason": "closed (complex polytope)"})
+        witness["complex_polytope"] = cinfo
 
     # relaxed polytopes: A_i / (r (1 + eps)) contract, so the tree closes for eps > 0
     relaxed: dict[str, Any] = {}

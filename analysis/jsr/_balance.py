@@ -105,22 +105,12 @@ def _orbit_sup(B: Sequence[np.ndarray], roots: list[np.ndarray], funcs: list[np.
     return best
 
 
-def balanced_roots(mats: Sequence[np.ndarray], r: float, words: Sequence[Sequence[int]], *,
-                   depth: int = 8, beam: int = 200, rel: float = 1e-8
-                   ) -> tuple[list[np.ndarray], dict[str, Any]]:
-    """Starting vertices for the invariant polytope of ``{A_i / r}``: the leading eigenvectors
-    of the candidate products ``words``, scaled by balancing factors (module docstring).
-
-    Returns ``(roots, info)`` with ``info = {"factors": [...], "margin": mu, "groups": m}``
-    (``margin`` ``None`` for a single group; a negative margin means the estimated ``q_ij``
-    admit no balancing: the factors are then the least bad ones).
-    """
-    B = [np.asarray(A, dtype=float) / r for A in mats]
-    groups = [(group_roots(lam, u), l) for w in words for lam, u, l in eigen_groups(B, w, rel)]
+def _factors(B: Sequence[np.ndarray], groups: list, depth: int, beam: int
+             ) -> tuple[np.ndarray, float | None]:
+    """Balancing factors of the groups ``[(real roots, left functional)]`` and the margin."""
     m = len(groups)
     if m <= 1:
-        return [x for g in groups for x in g[0]], {"factors": [1.0] * m, "margin": None,
-                                                   "groups": m}
+        return np.ones(m), None
     funcs = [g[1] for g in groups]
     q = np.array([_orbit_sup(B, g[0], funcs, depth, beam) for g in groups])
     q = np.maximum(q, 1e-300)
@@ -137,9 +127,32 @@ def balanced_roots(mats: Sequence[np.ndarray], r: float, words: Sequence[Sequenc
         res = linprog(np.r_[np.zeros(m), -1.0], A_ub=np.array(rows), b_ub=np.array(rhs),
                       bounds=bounds, method="highs")
     if res.status != 0 or res.x is None:
-        t, mu = np.zeros(m), None
+        return np.ones(m), None
+    return np.exp(res.x[:m]), float(res.x[m])
+
+
+def balanced_roots(mats: Sequence[np.ndarray], r: float, words: Sequence[Sequence[int]], *,
+                   depth: int = 8, beam: int = 200, rel: float = 1e-8, complex_roots: bool = False
+                   ) -> tuple[list[np.ndarray], dict[str, Any]]:
+    """Starting vertices for the invariant polytope of ``{A_i / r}``: the leading eigenvectors
+    of the candidate products ``words``, scaled by balancing factors (module docstring).
+
+    ``complex_roots=True``: roots for the complex polytope (:mod:`analysis.jsr._complex`), i.e.
+    ``alpha u`` for a real eigenvalue and ``alpha u, alpha conj(u)`` for a complex one, instead
+    of the real roots ``alpha u`` resp. ``alpha Re u, alpha Im u``.
+
+    Returns ``(roots, info)`` with ``info = {"factors": [...], "margin": mu, "groups": m}``
+    (``margin`` ``None`` for a single group; a negative margin means the estimated ``q_ij``
+    admit no balancing: the factors are then the least bad ones).
+    """
+    B = [np.asarray(A, dtype=float) / r for A in mats]
+    eig = [(lam, u, l) for w in words for lam, u, l in eigen_groups(B, w, rel)]
+    groups = [(group_roots(lam, u), l) for lam, u, l in eig]
+    alpha, mu = _factors(B, groups, depth, beam)
+    if complex_roots:
+        roots = []
+        for a, (lam, u, _) in zip(alpha, eig):
+            roots.extend([a * u] if lam.imag == 0 else [a * u, a * u.conj()])
     else:
-        t, mu = res.x[:m], float(res.x[m])
-    alpha = np.exp(t)
-    roots = [a * x for a, g in zip(alpha, groups) for x in g[0]]
-    return roots, {"factors": [float(a) for a in alpha], "margin": mu, "groups": m}
+        roots = [a * x for a, g in zip(alpha, groups) for x in g[0]]
+    return roots, {"factors": [float(a) for a in alpha], "margin": mu, "groups": len(groups)}
