@@ -382,3 +382,33 @@ def test_similarity_preconditioning_preserves_the_jsr():
     rb = jsr_bounds([[[M[a, b] for b in range(2)] for a in range(2)] for M in Gb.balls],
                     budget_seconds=5)
     assert rb.lower <= PHI <= rb.upper and float(rb.upper / rb.lower - 1) < 1e-9
+
+
+def test_exact_invariant_subspace_not_a_coordinate_one():
+    """A common invariant line spanned by (1, 1) (no common zero pattern): found exactly, the
+    family split into 1 x 1 blocks, JSR = 2 exactly; and a similar conjugate of a
+    block-triangular 3 x 3 family reduces the same way."""
+    r = jsr_bounds([[[1, 1], [0, 2]], [[2, 0], [1, 1]]])
+    assert r.status == "certified" and r.lower == r.upper == 2
+    assert r.witness["invariant_subspace"]["dimension"] == 1
+    from flint import fmpq_mat
+    from analysis.jsr._subspace import invariant_subspace, split_family
+    Q = fmpq_mat([[1, 2, 0], [0, 1, 3], [1, 0, 1]])
+    blocks = [fmpq_mat([[2, 1, 5], [1, 1, 7], [0, 0, 3]]), fmpq_mat([[0, 1, 1], [3, 1, 2], [0, 0, -1]])]
+    fam = [Q * B * Q.inv() for B in blocks]
+    W = invariant_subspace(fam)
+    assert W is not None and W.ncols() == 2
+    top, bottom = split_family(fam, W)
+    # the spectra of the blocks are those of the original diagonal blocks
+    assert sorted(str(M) for M in bottom) == ["[-1]", "[3]"]
+    rr = jsr_bounds([[[sp.Rational(int(M[a, b].p), int(M[a, b].q)) for b in range(3)]
+                      for a in range(3)] for M in fam])
+    assert rr.witness["invariant_subspace"]["dimension"] in (1, 2)
+    ref = jsr_bounds([[[2, 1], [1, 1]], [[0, 1], [3, 1]]])
+    assert rr.lower <= max(ref.upper, 3) and max(ref.lower, 3) <= rr.upper
+
+
+def test_irreducible_family_has_no_invariant_subspace_found():
+    from flint import fmpq_mat
+    from analysis.jsr._subspace import invariant_subspace
+    assert invariant_subspace([fmpq_mat([[1, 1], [0, 1]]), fmpq_mat([[1, 0], [1, 1]])]) is None

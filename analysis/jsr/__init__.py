@@ -92,11 +92,14 @@ from ._polytope import build_polytope, certify_polytope, leading_is_real
 from ._balance import balanced_roots
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
+from ._subspace import invariant_subspace, split_family
 from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
 
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
 
 METHODS = ("auto", "polytope", "norms")
+#: exact invariant subspaces are searched for rational families up to this size
+SUBSPACE_MAX_N = 40
 #: a float polytope whose vertex matrix is worse conditioned than this is rebuilt for a
 #: similar family that rounds it (see :mod:`analysis.jsr._precondition`)
 THIN_COND = 1e10
@@ -251,6 +254,12 @@ def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap:
         if len(blocks) > 1:
             return _solve_blocks(F, blocks, method=method, max_length=max_length,
                                  deadline=deadline, rel_gap=rel_gap, max_vertices=max_vertices)
+        if F.exact_q is not None and 2 <= F.n <= SUBSPACE_MAX_N:
+            W = invariant_subspace(F.exact_q)
+            if W is not None:
+                return _solve_subspace(F, W, method=method, max_length=max_length,
+                                       deadline=deadline, rel_gap=rel_gap,
+                                       max_vertices=max_vertices)
         if _commuting(F):
             parts = [_single(F, i) for i in range(k)]
             best = max(parts, key=lambda b: b.lower)
@@ -286,6 +295,39 @@ def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
     return _Bounds(best.lower, up, best.word, rp,
                    "block-triangular reduction (common invariant coordinate subspaces); "
                    f"diagonal blocks of sizes {[len(b) for b in blocks]}, JSR = max over blocks",
+                   _arith(F), wit, notes)
+
+
+def _rational_family(mats: list[fmpq_mat]) -> Family:
+    fl = [np.array([[float(M[a, b]) for b in range(M.ncols())] for a in range(M.nrows())])
+          for M in mats]
+    return Family(fl, "rational", list(mats), None)
+
+
+def _solve_subspace(F: Family, W: fmpq_mat, **kw: Any) -> _Bounds:
+    """JSR = max(JSR(A|W), JSR(A on R^n/W)) for an exact common invariant subspace ``W``."""
+    top, bottom = split_family(F.exact_q, W)
+    parts = []
+    t_total = max(_time_left(kw["deadline"]), 0.0)
+    sizes = [top[0].nrows(), bottom[0].nrows()]
+    for mats, size in zip((top, bottom), sizes):
+        share = t_total * size ** 2 / sum(x ** 2 for x in sizes)
+        bb = _solve(_rational_family(mats), **dict(kw, deadline=time.perf_counter() + share))
+        parts.append((size, bb))
+    best = max((bb for _, bb in parts), key=lambda b: b.lower)
+    uppers = [bb.upper for _, bb in parts]
+    up = None if any(u is None for u in uppers) else max(uppers)
+    wit = dict(best.witness)
+    wit["invariant_subspace"] = {
+        "dimension": sizes[0], "basis": [[sp.Rational(int(W[a, c].p), int(W[a, c].q))
+                                          for c in range(W.ncols())] for a in range(W.nrows())],
+        "blocks": [{"size": size, "lower": bb.lower, "upper": bb.upper, "method": bb.method}
+                   for size, bb in parts]}
+    notes = [f"block of size {size}: {nt}" for size, bb in parts for nt in bb.notes]
+    rp = _lower_from_word(F, best.word)[1]
+    return _Bounds(best.lower, up, best.word, rp,
+                   "exact common invariant subspace (block-triangular in the basis [W | E]); "
+                   f"diagonal blocks of sizes {sizes}, JSR = max over blocks",
                    _arith(F), wit, notes)
 
 

@@ -1,0 +1,198 @@
+"""Exact common invariant subspaces of a rational family, and the block-triangular reduction.
+
+If the matrices ``A_1, ..., A_k`` have a common invariant subspace ``W`` (``0 < dim W < n``), then
+in a basis ``Q = [W | E]`` they are all block upper triangular,
+
+    Q^{-1} A_i Q = [[A_i|W, *], [0, A_i on R^n / W]],
+
+and ``JSR = max(JSR(A|W), JSR(A on the quotient))`` (Berger–Wang; Jungers 2009, Prop. 1.5).
+The invariant polytope algorithm needs an *irreducible* family: for a reducible one an extremal
+norm may not exist and the polytope need not close, so splitting is both a speed-up (smaller
+matrices) and a necessity (Mejstrik 2020 does the same, numerically; here it is exact).
+
+Coordinate subspaces are found from the sparsity pattern (``analysis.jsr._solve_blocks``). This
+module finds the others, exactly over ``Q``: for start vectors ``v`` (the unit vectors, and
+kernel vectors of ``f(X)`` for the irreducible factors ``f`` of the characteristic polynomial of
+pseudo-random elements ``X`` of the matrix algebra, as in the meataxe) the smallest common
+invariant subspace containing ``v`` (the Krylov space ``span{A_w v}``, built by exact row
+reduction), and the same for the transposed family (a common invariant subspace ``U`` of the
+``A_i^T`` gives the invariant subspace ``U^perp`` of the ``A_i``). The first proper one found is
+returned; the reduction is applied recursively by the caller.
+
+Examples
+--------
+``A_0 = [[1, 1], [0, 2]]`` and ``A_1 = [[2, 0], [1, 1]]`` have no common zero pattern, but
+both map ``(1, 1)`` to ``(2, 2)``: the line it spans is invariant (eigenvalue 2 on it, 1 on the
+quotient), so ``JSR = 2``:
+
+>>> from flint import fmpq_mat
+>>> A = [fmpq_mat([[1, 1], [0, 2]]), fmpq_mat([[2, 0], [1, 1]])]
+>>> W = invariant_subspace(A)
+>>> W.nrows(), W.ncols()
+(2, 1)
+>>> top, bottom = split_family(A, W)
+>>> [str(M) for M in top], [str(M) for M in bottom]
+(['[2]', '[2]'], ['[1]', '[1]'])
+
+References
+----------
+R. Jungers, *The joint spectral radius: theory and applications*, LNCIS 385, Springer 2009,
+Section 1.2 (reducible families).
+T. Mejstrik, *Algorithm 1011: Improved invariant polytope algorithm and applications*, ACM Trans.
+Math. Softw. 46(3) (2020) 29 (invariant subspaces).
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+from flint import fmpq, fmpq_mat
+
+
+def _rref_rows(rows: list[list[fmpq]], n: int) -> list[list[fmpq]]:
+    """Row-reduced basis of ``span(rows)`` (fmpq lists); the zero rows dropped."""
+    if not rows:
+        return []
+    M = fmpq_mat(len(rows), n, [x for r in rows for x in r])
+    R, rank = M.rref()
+    return [[R[i, j] for j in range(n)] for i in range(rank)]
+
+
+def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> list[list[fmpq]]:
+    """Basis (rows) of the smallest common invariant subspace containing ``start``; stops early
+    (returning what it has, of dimension ``>= limit``) once the dimension reaches ``limit``."""
+    basis = _rref_rows([start], n)
+    frontier = [start]
+    while frontier and len(basis) < limit:
+        new_vecs = []
+        for v in frontier:
+            col = fmpq_mat(n, 1, v)
+            for A in mats:
+                w = A * col
+                new_vecs.append([w[a, 0] for a in range(n)])
+        grown = _rref_rows(basis + new_vecs, n)
+        if len(grown) == len(basis):
+            break
+        # the new directions: candidates that increased the rank
+        frontier = []
+        cur = basis
+        for v in new_vecs:
+            t = _rref_rows(cur + [v], n)
+            if len(t) > len(cur):
+                frontier.append(v)
+                cur = t
+            if len(cur) >= limit:
+                break
+        basis = cur
+    return basis
+
+
+def _kernel(M: fmpq_mat) -> list[list[fmpq]]:
+    """A basis (rows) of the right kernel ``{x : M x = 0}``, from the exact RREF."""
+    m, n = M.nrows(), M.ncols()
+    R, rank = M.rref()
+    pivots = []
+    for i in range(rank):
+        for j in range(n):
+            if R[i, j] != 0:
+                pivots.append(j)
+                break
+    out = []
+    for f in (j for j in range(n) if j not in pivots):
+        x = [fmpq(0)] * n
+        x[f] = fmpq(1)
+        for i, pj in enumerate(pivots):
+            x[pj] = -R[i, f]
+        out.append(x)
+    return out
+
+
+def _orth_complement(rows: list[list[fmpq]], n: int) -> list[list[fmpq]]:
+    """A basis (rows) of ``{x : <r, x> = 0 for all rows r}``."""
+    return _kernel(fmpq_mat(len(rows), n, [x for r in rows for x in r]))
+
+
+def _poly_at(f, X: fmpq_mat) -> fmpq_mat:
+    """``f(X)`` by Horner's rule (exact)."""
+    n = X.nrows()
+    coeffs = [fmpq(c) for c in f.coeffs()]
+    R = fmpq_mat(n, n)
+    for c in reversed(coeffs):
+        R = R * X
+        for a in range(n):
+            R[a, a] += c
+    return R
+
+
+def _spin_candidates(mats: Sequence[fmpq_mat], trials: int = 3):
+    """Start vectors for the Krylov spins: the unit vectors, then (meataxe-style, Holt–Rees) a
+    kernel vector of ``f(X)`` for each irreducible factor ``f`` of the characteristic polynomial
+    of a few pseudo-random elements ``X`` of the algebra generated by the family (fixed seeds,
+    so the result is reproducible). A common invariant subspace on which ``X`` acts with factor
+    ``f`` contains such a vector."""
+    n = mats[0].nrows()
+    for j in range(n):
+        yield [fmpq(1) if a == j else fmpq(0) for a in range(n)]
+    k = len(mats)
+    prods = list(mats) + [mats[i] * mats[j] for i in range(k) for j in range(k)]
+    for t in range(trials):
+        X = fmpq_mat(n, n)
+        for s, P in enumerate(prods):
+            X += P * (1 + (7 * s + 3 * t * t + 5 * t) % 11)
+        _, factors = X.charpoly().factor()
+        for f, _e in sorted(factors, key=lambda fe: fe[0].degree()):
+            for v in _kernel(_poly_at(f, X))[:1]:
+                yield v
+
+
+def invariant_subspace(mats: Sequence[fmpq_mat]) -> fmpq_mat | None:
+    """An exact proper common invariant subspace (columns of the returned ``n x d`` matrix), or
+    ``None`` when none is found among the spins of the start vectors of
+    :func:`_spin_candidates` for the family and for its transpose (module docstring). ``None``
+    does not prove irreducibility; the caller then works with the full family."""
+    n = mats[0].nrows()
+    if n < 2:
+        return None
+    best: list[list[fmpq]] | None = None
+    for v in _spin_candidates(mats):
+        W = _krylov(mats, v, n, n)
+        if 0 < len(W) < n and (best is None or len(W) < len(best)):
+            best = W
+    trans = [A.transpose() for A in mats]
+    for v in _spin_candidates(trans):
+        U = _krylov(trans, v, n, n)
+        if 0 < len(U) < n:
+            W = _orth_complement(U, n)
+            if 0 < len(W) < n and (best is None or len(W) < len(best)):
+                best = W
+    if best is None:
+        return None
+    d = len(best)
+    return fmpq_mat(n, d, [best[c][a] for a in range(n) for c in range(d)])
+
+
+def split_family(mats: Sequence[fmpq_mat], W: fmpq_mat) -> tuple[list[fmpq_mat], list[fmpq_mat]]:
+    """The diagonal blocks ``(A|W, A on R^n / W)`` of ``Q^{-1} A_i Q`` with ``Q = [W | E]``
+    (``E`` unit vectors completing a basis), exactly; raises ``ArithmeticError`` if ``W`` is
+    not invariant."""
+    n, d = W.nrows(), W.ncols()
+    cols = [[W[a, c] for a in range(n)] for c in range(d)]
+    cur = _rref_rows(cols, n)
+    for j in range(n):
+        if len(cur) == n:
+            break
+        e = [fmpq(1) if a == j else fmpq(0) for a in range(n)]
+        t = _rref_rows(cur + [e], n)
+        if len(t) > len(cur):
+            cols.append(e)
+            cur = t
+    Q = fmpq_mat(n, n, [cols[c][a] for a in range(n) for c in range(n)])
+    Qi = Q.inv()
+    top, bottom = [], []
+    for A in mats:
+        T = Qi * A * Q
+        if any(T[a, c] != 0 for a in range(d, n) for c in range(d)):
+            raise ArithmeticError("the subspace is not invariant")
+        top.append(fmpq_mat(d, d, [T[a, c] for a in range(d) for c in range(d)]))
+        bottom.append(fmpq_mat(n - d, n - d, [T[a, c] for a in range(d, n) for c in range(d, n)]))
+    return top, bottom
