@@ -37,25 +37,33 @@ Algorithm (``method="auto"``)
 1. Exact reductions: duplicates are removed; a single matrix has ``JSR = rho``; a common
    block-triangular structure (strongly connected components of the union of the sparsity
    patterns, as in Mejstrik 2020) splits the family into diagonal blocks with
-   ``JSR = max_b JSR(block_b)``; an exactly commuting family has ``JSR = max_i rho(A_i)``.
+   ``JSR = max_b JSR(block_b)``; for rational families, exact common invariant subspaces that
+   are not coordinate subspaces are found by Krylov spins (:mod:`analysis.jsr._subspace`) and
+   split off the same way; an exactly commuting family has ``JSR = max_i rho(A_i)``.
 2. Lower bound: a Gripenberg-type branch and bound for spectrum-maximizing products
    (:func:`analysis.jsr._search.smp_search`); the best word ``w`` gives
    ``JSR >= rho(P_w)^(1/|w|)``, certified from isolated roots of the exact characteristic
    polynomial (FLINT) or Arb eigenvalue enclosures.
 3. Upper bound: the invariant polytope algorithm (Guglielmi–Protasov 2013; Mejstrik 2020),
    real symmetric case, started from the leading eigenvectors of every candidate product within
-   ``1e-9`` of the best (several s.m.p.s; complex leading eigenvalues enter through the real and
-   imaginary parts of their eigenvectors). Restarts when a vertex path reveals a better product.
-   A *thin* polytope (vertex matrix condition number above ``THIN_COND``, typical of
-   fast-decaying spectra such as Daubechies D20 and beyond) is decided on float rounding noise
-   in its thin directions and never closes; it is then rebuilt for the exactly similar family
-   ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex matrix; matrices computed exactly or
-   in Arb balls), in which it is round (:mod:`analysis.jsr._precondition`; up to 3 rounds).
+   ``1e-9`` of the best (several s.m.p.s), scaled by *balancing* factors
+   (Guglielmi–Protasov 2016; :mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
+   spectrum, e.g. Daubechies D20+) is first replaced by the exactly similar family in which its
+   sum-of-squares ellipsoid is a ball. Restarts when a vertex path reveals a better product.
+   A polytope that is still *thin* (vertex matrix condition number above ``THIN_COND``) is
+   decided on float rounding noise in its thin directions and never closes; it is then rebuilt
+   for the exactly similar family ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex
+   matrix; matrices computed exactly or in Arb balls), in which it is round
+   (:mod:`analysis.jsr._precondition`; up to 3 rounds).
 4. Certificate: every membership ``A_i v_j / r in absconv(V)`` is re-checked exactly
    (:func:`analysis.jsr._polytope.certify_polytope`), giving ``JSR <= r * c`` rigorously.
-5. If the polytope does not close: the same algorithm for ``A_i / (r (1 + eps))`` with
-   decreasing ``eps`` (a certified ``upper <= rho (1 + eps) c``), and always the rigorous
-   norm bound ``max_{|w|=l} ||P_w||^(1/l)`` in a balanced basis, in Arb ball arithmetic.
+5. A complex leading eigenvalue (an irrational rotation): the *complex* polytope, the complex
+   balanced hull of ``u``, ``conj(u)`` and their orbits, closes exactly; memberships are second
+   order cone programs and the certificate is re-checked in Arb complex balls
+   (:mod:`analysis.jsr._complex`).
+6. If no polytope closes: the same algorithm for ``A_i / (r (1 + eps))`` with decreasing
+   ``eps`` (a certified ``upper <= rho (1 + eps) c``), and always the rigorous norm bound
+   ``max_{|w|=l} ||P_w||^(1/l)`` in a balanced basis, in Arb ball arithmetic.
 
 ``method="polytope"`` skips step 1's structural shortcuts (not the single-matrix case);
 ``method="norms"`` is the textbook method: exhaustive products up to ``max_length``.
