@@ -549,7 +549,7 @@ def alpha_curve(a: LaurentSymbol, param=None, *, within=(-1, 1), samples: int = 
 
 
 # --------------------------------------------------------------------------------------------
-# masks known only by certified enclosures (Arb balls): Daubechies D6 ... D40
+# masks known only by certified enclosures (Arb balls): Daubechies D6 ... D54
 # --------------------------------------------------------------------------------------------
 
 def ball_divide_by_one_plus_z(coeffs: Sequence[Any], times: int = 1) -> list:

@@ -3,7 +3,7 @@
 1. Every catalogue scheme with at most 12 mask coefficients (parameters at their default or a
    representative value, listed in the table): certified alpha with gap <= 1e-6
    (:func:`analysis.regularity.holder_exponent`: invariant polytope JSR, exact/Arb certificate).
-2. Daubechies D4 ... D40 from certified ball masks
+2. Daubechies D4 ... D54 from certified ball masks
    (:func:`analysis.regularity.holder_exponent_enclosure`).
 3. Seed 003's C^2 boundary located to 1e-8 (:func:`analysis.regularity.ck_parameter_set`).
 4. In the same run, the textbook approach on the same schemes: the exact Dyn–Levin norm

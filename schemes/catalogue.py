@@ -154,7 +154,7 @@ class NumericSchemeEntry:
     """A named scheme whose mask is known as certified enclosures (Arb balls), not exactly.
 
     Used for masks with irrational coefficients in number fields too large for exact work
-    (Daubechies' D6 ... D40; :mod:`schemes.wavelets`). Duck-compatible with
+    (Daubechies' D6 ... D54; :mod:`schemes.wavelets`). Duck-compatible with
     :class:`SchemeEntry` where that makes sense (``slug``, ``title``, ``source``, ``notes``,
     ``aliases``, ``params == ()``, ``defaults``, ``stencils``); :attr:`symbol` is the exact symbol
     when one is known and otherwise a one-line :class:`AnalysisError` pointing to
@@ -367,6 +367,13 @@ def get(slug: str) -> SchemeEntry:
         return reg[target] if target in reg else _NUMERIC[target]
     candidates = list(reg) + list(_NUMERIC) + list(_ALIASES)
     close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
+    m = re.fullmatch(r"(.*?)(\d+)", key)
+    if m:
+        # a numbered family ("daubechies-5"): the numerically nearest members
+        same = [c for c in candidates if re.fullmatch(re.escape(m[1]) + r"\d+", c)]
+        if same:
+            close = sorted(same, key=lambda c: (abs(int(re.search(r"\d+$", c)[0]) - int(m[2])),
+                                                c))[:4]
     if not close:
         close = [c for c in candidates if key and (key in c or c in key)][:5]
     hint = (f"; did you mean: {', '.join(close)}?" if close

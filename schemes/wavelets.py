@@ -1,4 +1,4 @@
-"""Daubechies' orthogonal scaling functions D4, D6, ..., D40 as subdivision schemes.
+"""Daubechies' orthogonal scaling functions D4, D6, ..., D54 as subdivision schemes.
 
 ``D2N`` (PyWavelets ``dbN``) has ``N`` vanishing moments and ``2N`` mask coefficients. In the
 catalogue's convention (``(S_a f)_i = sum_j a_{i-2j} f_j``, ``a(1) = 2``) the mask is
@@ -76,8 +76,9 @@ from analysis.symbol import LaurentSymbol, Z
 
 from .catalogue import NumericSchemeEntry
 
-#: The catalogued numbers of vanishing moments: D4 (N = 2) ... D40 (N = 20).
-DAUBECHIES_ORDERS = range(2, 21)
+#: The catalogued numbers of vanishing moments: D4 (N = 2) ... D54 (N = 27). (D56 and beyond:
+#: the Arb eigenvalue isolation of the s.m.p. needs wider precision than the JSR code uses.)
+DAUBECHIES_ORDERS = range(2, 28)
 
 _GUARD_BITS = 32
 
@@ -245,5 +246,5 @@ def _entry(N: int) -> NumericSchemeEntry:
 #: Entries with an exact, symmetric symbol (none here: see NUMERIC_ENTRIES).
 ENTRIES: tuple = ()
 
-#: The Daubechies entries D4 ... D40 (registered by schemes.catalogue, listed with numeric=True).
+#: The Daubechies entries D4 ... D54 (registered by schemes.catalogue, listed with numeric=True).
 NUMERIC_ENTRIES: tuple[NumericSchemeEntry, ...] = tuple(_entry(N) for N in DAUBECHIES_ORDERS)

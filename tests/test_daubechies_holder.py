@@ -1,6 +1,6 @@
 """Certified Hölder exponents of Daubechies' scaling functions from ball-valued masks.
 
-The masks D6 ... D40 are known only by certified Arb enclosures (``schemes.wavelets``); the
+The masks D6 ... D54 are known only by certified Arb enclosures (``schemes.wavelets``); the
 exponents come from :func:`analysis.regularity.holder_exponent_enclosure` (JSR bounds valid for
 every mask in the balls). They are compared with the published values in
 ``tests/data/daubechies_holder.csv`` to the published digits, and for D4 with the closed form
@@ -153,3 +153,18 @@ def test_d40_two_smps_balanced_and_certified():
     a_lo, a_hi = 19 - math.log2(bf["upper"]), 19 - math.log2(bf["lower"])
     assert a_lo - 1e-9 <= float(r.lower) <= float(r.upper) <= a_hi + 1e-9
     assert abs(float(r.lower) - a_hi) < 1e-8          # rho(T_1) attains the JSR
+
+
+@pytest.mark.parametrize("slug,word", [("daubechies-30", (0, 0, 0, 0, 1, 1)),
+                                       ("daubechies-32", (0, 0, 1, 1)),
+                                       ("daubechies-44", (0, 0, 1, 1, 1, 1))])
+def test_high_orders_certified(slug, word):
+    """D30, D32: one s.m.p. with many near ties (T0 alone is within 0.2 %); the polytope closes
+    only with the interior fillers (``analysis.jsr._balance.interior_fillers``). D44: the near
+    tie (0,0,1,1) (relative 5e-6 below the s.m.p.) must be a balanced root as well. Each is
+    certified to the precision of the arithmetic (the s.m.p. search was exhaustive to length
+    >= 8; the closed polytope proves that no longer product does better)."""
+    r, dt = _certified(slug, budget=120)
+    assert r.status == "certified" and float(r.upper - r.lower) < 1e-10
+    assert r.witness["product"] == word
+    assert r.witness["jsr"].witness["search"]["exhaustive_to_length"] >= 8

@@ -97,7 +97,7 @@ from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_ex
                      parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
 from ._hp import certify_polytope_hp
 from ._polytope import build_polytope, certify_polytope, leading_is_real
-from ._balance import balanced_roots
+from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family
@@ -106,6 +106,8 @@ from ._search import balancing_transform, brute_force_bounds, canonical_word, sm
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
 
 METHODS = ("auto", "polytope", "norms")
+#: products within this relative distance of the best one also start the polytope (balanced)
+NEAR_ROOTS = 1e-5
 #: exact invariant subspaces are searched for rational families up to this size
 SUBSPACE_MAX_N = 40
 #: a float polytope whose vertex matrix is worse conditioned than this is rebuilt for a
@@ -381,8 +383,12 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
     t_start = time.perf_counter()
     total = max(deadline - t_start, 0.05)
     notes: list[str] = []
-    sr = smp_search(F.floats, max_length, deadline=t_start + 0.25 * total)
-    cands = list(sr.candidates)
+    sr = smp_search(F.floats, max_length, deadline=t_start + 0.25 * total, near=NEAR_ROOTS)
+    # roots: the exact ties, and the near ties no longer than the best word (a near tie such as
+    # (0,0,1,1) next to the s.m.p. (0,0,1,1,1,1) of Daubechies D44 must be a balanced root, or
+    # the polytope crawls towards its eigenvector; long concatenations add nothing)
+    cands = [c for c in sr.candidates
+             if c[0] >= sr.best_rho * (1 - 1e-9) or len(c[1]) <= len(sr.best_word)]
     word = sr.best_word
     witness: dict[str, Any] = {"search": {"levels": sr.levels_done,
                                           "products_evaluated": sr.products_evaluated,
@@ -422,7 +428,9 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         cands = [(_rho_word(mats, w), w) for _, w in cands]
         rho_f = max(c[0] for c in cands)
         r = Fraction(rho_f)
-        roots, balance = balanced_roots(mats, rho_f, [w for _, w in cands])
+        words = [w for _, w in cands]
+        roots, balance = balanced_roots(mats, rho_f, words)
+        roots = roots + interior_fillers(mats, rho_f, words, balance)
         # after the ellipsoid rounding an early polytope (few directions filled) is thin
         # legitimately: no early stop then
         st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
@@ -478,7 +486,9 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         G = transform_family(Fc, S) if S is not None else None
         if G is None:
             break
-        roots, _ = balanced_roots(G.floats, float(r), [w for _, w in cands])
+        words = [w for _, w in cands]
+        roots, binfo = balanced_roots(G.floats, float(r), words)
+        roots = roots + interior_fillers(G.floats, float(r), words, binfo, theta=0.125)
         t_pc = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
         st3 = build_polytope(G.floats, float(r), roots, deadline=t_pc,
                              max_vertices=max_vertices, check_better=False,
@@ -540,7 +550,9 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             if _time_left(deadline) <= 0.02 * total:
                 break
             re = r * (1 + Fraction(eps))
-            roots, _ = balanced_roots(Fc.floats, rho_f, [w for _, w in cands])
+            words = [w for _, w in cands]
+            roots, binfo = balanced_roots(Fc.floats, rho_f, words)
+            roots = roots + interior_fillers(Fc.floats, rho_f, words, binfo)
             t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
             st2 = build_polytope(Fc.floats, float(re), roots, deadline=t_eps,
                                  max_vertices=max_vertices, check_better=False)

@@ -410,6 +410,20 @@ def rho_enclosure_q(P: fmpq_mat) -> tuple[Fraction, Fraction]:
     return max(lo, Fraction(0)), hi
 
 
+def _rho_eig_arb(P: arb_mat) -> tuple[Fraction, Fraction] | None:
+    """Arb eigenvalue enclosures (clustered for multiple eigenvalues) at the current precision;
+    ``None`` if they cannot be isolated."""
+    try:
+        ev = acb_mat(P).eig(multiple=True)
+    except (ValueError, ArithmeticError):
+        return None
+    lo = hi = Fraction(0)
+    for z in ev:
+        l, h = arb_to_fraction_bounds(abs(z))
+        lo, hi = max(lo, l), max(hi, h)
+    return max(lo, Fraction(0)), hi
+
+
 def rho_enclosure_arb(P: arb_mat) -> tuple[Fraction, Fraction]:
     """Rigorous ``(lo, hi)`` for the spectral radius of any matrix in the ball ``P``.
 
@@ -418,15 +432,9 @@ def rho_enclosure_arb(P: arb_mat) -> tuple[Fraction, Fraction]:
     """
     n = P.nrows()
     with arb_precision():
-        try:
-            ev = acb_mat(P).eig(multiple=True)
-            lo = hi = Fraction(0)
-            for z in ev:
-                l, h = arb_to_fraction_bounds(abs(z))
-                lo, hi = max(lo, l), max(hi, h)
-            return max(lo, Fraction(0)), hi
-        except (ValueError, ArithmeticError):
-            pass
+        out = _rho_eig_arb(P)
+        if out is not None:
+            return out
         d_lo, _ = arb_to_fraction_bounds(abs(P.det()))
         hi = max(arb_to_fraction_bounds(sum((abs(P[r, c]) for c in range(n)), arb(0)))[1]
                  for r in range(n))
@@ -434,9 +442,21 @@ def rho_enclosure_arb(P: arb_mat) -> tuple[Fraction, Fraction]:
 
 
 def rho_enclosure(F: Family, word: Sequence[int]) -> tuple[Fraction, Fraction]:
-    """Rigorous enclosure of ``rho(A_{w1} A_{w2} ... A_{wL})`` for the exact family ``F``."""
+    """Rigorous enclosure of ``rho(A_{w1} A_{w2} ... A_{wL})`` for the exact family ``F``.
+
+    For ball and algebraic families the Arb eigenvalue isolation is retried with the product
+    recomputed at 2x and 4x the precision (Daubechies D44 and beyond need ~400 bits) before the
+    crude determinant/norm fallback of :func:`rho_enclosure_arb`."""
     if F.exact_q is not None:
         return rho_enclosure_q(F.product_q(word))
+    for bits in (ARB_PREC, 2 * ARB_PREC, 4 * ARB_PREC):
+        with arb_precision(bits):
+            P = F.arb(word[0])
+            for i in word[1:]:
+                P = P * F.arb(i)
+            out = _rho_eig_arb(P)
+        if out is not None:
+            return out
     return rho_enclosure_arb(F.product_arb(word))
 
 
