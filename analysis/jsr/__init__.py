@@ -515,6 +515,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
 
     # a complex leading eigenvalue: the complex (elliptic) polytope can close exactly
     if not gap_ok(upper) and not real_lead and _time_left(deadline) > 0.1 * total:
+        # (no interior fillers here: in the complex hull they slowed closure in the tests)
         croots, _ = balanced_roots(Fw.floats, float(r), [w for _, w in cands], complex_roots=True)
         t_c = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
         stx = build_complex_polytope(Fw.floats, float(r), croots, deadline=t_c,
