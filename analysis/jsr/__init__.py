@@ -753,9 +753,10 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
         prov["message"] = (
             f"upper/lower - 1 = {gap:.3g} > {rel_gap:g}: the invariant polytope did not close "
             f"({b.witness.get('stop_reason', 'not attempted')}). A larger budget_seconds or "
-            "max_vertices, a longer max_length (a better s.m.p. candidate), or an exact s.m.p. "
-            "analysis (several leading products, a complex leading eigenvalue, a defective "
-            "or reducible family) would settle it." if gap is not None else
+            "max_vertices, or a longer max_length (a better s.m.p. candidate) may settle it; "
+            "families with many near-tied products (the polytope grows towards each of them) "
+            "or a reducible family without an exact invariant subspace (ball or algebraic "
+            "entries) can need an analysis of their s.m.p.s by hand." if gap is not None else
             "no rigorous upper bound within the budget")
     value = _q(lower) if (upper is not None and lower == upper) else None
     return Result(value=value, status=status, lower=_q(lower), upper=_q(upper),
