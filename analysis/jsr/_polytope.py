@@ -97,6 +97,62 @@ class PolytopeState:
         return np.array(self.V).T if self.V else np.zeros((self.n, 0))
 
 
+class _WarmLP:
+    """The membership LP ``min sum(l+ + l-) s.t. V (l+ - l-) = x, l+-, l- >= 0`` kept as one
+    persistent HiGHS model (the ``highspy`` package): new vertices are appended as column pairs,
+    a query only changes the row bounds to ``x``, and the dual simplex restarts from the previous
+    optimal basis (Mejstrik 2020 warm-starts the same way). Solving from scratch with
+    ``scipy.optimize.linprog`` each time is 5-10x slower on polytopes of 1000+ vertices. Only the
+    float phase uses it; the certificate re-checks every membership exactly."""
+
+    def __init__(self, h, n: int):
+        self.h, self.n, self.m = h, n, 0
+
+    @classmethod
+    def create(cls, n: int) -> "_WarmLP | None":
+        try:
+            import highspy
+        except ImportError:          # pragma: no cover - highspy is a dependency
+            return None
+        h = highspy.Highs()
+        for key, val in (("output_flag", False), ("presolve", "off"), ("solver", "simplex"),
+                         ("simplex_strategy", 1), ("primal_feasibility_tolerance", 1e-10),
+                         ("dual_feasibility_tolerance", 1e-10)):
+            h.setOptionValue(key, val)
+        empty_i, empty_v = np.array([], dtype=np.int32), np.array([], dtype=np.float64)
+        for _ in range(n):
+            h.addRow(0.0, 0.0, 0, empty_i, empty_v)
+        return cls(h, n)
+
+    def sync(self, V: list[np.ndarray]) -> None:
+        import highspy
+
+        for v in V[self.m:]:
+            idx = np.nonzero(v)[0].astype(np.int32)
+            vals = np.asarray(v[idx], dtype=np.float64)
+            self.h.addCol(1.0, 0.0, highspy.kHighsInf, len(idx), idx, vals)
+            self.h.addCol(1.0, 0.0, highspy.kHighsInf, len(idx), idx, -vals)
+        self.m = len(V)
+
+    def solve(self, x: np.ndarray):
+        """``(value, lambda, row duals)`` or ``None`` (infeasible: ``x`` not in the span)."""
+        import highspy
+
+        h = self.h
+        for i in range(self.n):
+            h.changeRowBounds(i, float(x[i]), float(x[i]))
+        h.run()
+        if h.getModelStatus() != highspy.HighsModelStatus.kOptimal:
+            return None
+        sol = h.getSolution()
+        col = np.asarray(sol.col_value, dtype=float)
+        if len(col) != 2 * self.m:
+            return None
+        lam = col[0::2] - col[1::2]
+        y = np.asarray(sol.row_dual, dtype=float) if sol.dual_valid else None
+        return float(np.sum(np.abs(lam))), lam, y
+
+
 class _Member:
     """Membership oracle for absconv(V) with cheap pre-tests (see module docstring)."""
 
@@ -107,6 +163,7 @@ class _Member:
         self._r2 = 0.0
         self._Y = np.zeros((0, st.n))     # functionals y with |<y, v_j>| <= 1 for all vertices
         self.shortcuts = True             # False: always return a representation if one exists
+        self._warm = _WarmLP.create(st.n)  # persistent HiGHS model of the full LP (or None)
 
     def refresh(self) -> None:
         st = self.st
@@ -154,10 +211,27 @@ class _Member:
                 nx, supp, lam = self._polish(Vm, x, sub[out[1]], out[2])
                 if nx <= 1.0:
                     return nx, supp, lam
-        out = self._lp(Vm, x, keep_dual=True)
+        out = self._full_lp(Vm, x)
         if out is None:
             return np.inf, None, None
         return self._polish(Vm, x, out[1], out[2])
+
+    def _full_lp(self, Vm: np.ndarray, x: np.ndarray):
+        """The LP over all vertices: warm-started on the persistent model when available."""
+        w = self._warm
+        if w is None:
+            return self._lp(Vm, x, keep_dual=True)
+        w.sync(self.st.V)
+        self.st.lp_calls += 1
+        out = w.solve(x)
+        if out is None:
+            return None
+        fun, lam, y = out
+        if fun > 1.0 and y is not None and np.all(np.isfinite(y)):
+            y = y / max(1.0, float(np.max(np.abs(y @ Vm))))
+            self._Y = np.vstack([self._Y, y[None, :]])[-200:]
+        supp = np.nonzero(np.abs(lam) > 1e-15 * max(1.0, float(np.max(np.abs(lam)))))[0]
+        return fun, supp, lam[supp]
 
     def _lp(self, Vm: np.ndarray, x: np.ndarray, keep_dual: bool = False):
         m = Vm.shape[1]
