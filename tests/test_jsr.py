@@ -18,7 +18,8 @@ import sympy as sp
 
 from analysis import AnalysisError
 from analysis.jsr import brute_force_bounds, canonical_word, jsr_bounds, parse_family
-from analysis.jsr._polytope import build_polytope, certify_polytope, complete_reps, leading_roots
+from analysis.jsr._balance import balanced_roots
+from analysis.jsr._polytope import build_polytope, certify_polytope, complete_reps
 
 PHI = (1 + sp.sqrt(5)) / 2
 
@@ -249,7 +250,7 @@ def test_certificate_is_not_fooled_by_wrong_coefficients():
     bound (>= the true JSR = golden ratio), i.e. it may not trust the float LP."""
     F = parse_family([[[1, 1], [0, 1]], [[1, 0], [1, 1]]])
     rho = float(PHI)
-    st = build_polytope(F.floats, rho, leading_roots(F.floats, (0, 1), rho),
+    st = build_polytope(F.floats, rho, balanced_roots(F.floats, rho, [(0, 1)])[0],
                         deadline=time.perf_counter() + 5)
     assert st.closed
     good = certify_polytope(F, Fraction(rho), st)
@@ -266,7 +267,7 @@ def test_certificate_of_a_too_small_scale_is_still_an_upper_bound():
     valid bound, necessarily >= JSR."""
     F = parse_family([[[1, 1], [0, 1]], [[1, 0], [1, 1]]])
     r = 1.5
-    st = build_polytope(F.floats, r, leading_roots(F.floats, (0, 1), r),
+    st = build_polytope(F.floats, r, balanced_roots(F.floats, r, [(0, 1)])[0],
                         deadline=time.perf_counter() + 1, max_vertices=20, check_better=False)
     assert not st.closed
     assert complete_reps(F.floats, r, st, deadline=time.perf_counter() + 5)

@@ -45,9 +45,11 @@ Algorithm (``method="auto"``)
    ``JSR >= rho(P_w)^(1/|w|)``, certified from isolated roots of the exact characteristic
    polynomial (FLINT) or Arb eigenvalue enclosures.
 3. Upper bound: the invariant polytope algorithm (Guglielmi–Protasov 2013; Mejstrik 2020),
-   real symmetric case, started from the leading eigenvectors of every candidate product within
-   ``1e-9`` of the best (several s.m.p.s), scaled by *balancing* factors
-   (Guglielmi–Protasov 2016; :mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
+   real symmetric case, started from the leading eigenvectors of the best product, of every
+   product within ``1e-9`` of it (several s.m.p.s) and of the near ties within ``NEAR_ROOTS``
+   that are no longer than it, scaled by *balancing* factors (Guglielmi–Protasov 2016), plus
+   small *interior fillers* that make the polytope full-dimensional at once
+   (:mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
    spectrum, e.g. Daubechies D20+) is first replaced by the exactly similar family in which its
    sum-of-squares ellipsoid is a ball. Restarts when a vertex path reveals a better product.
    A polytope that is still *thin* (vertex matrix condition number above ``THIN_COND``) is
@@ -82,7 +84,6 @@ R. Jungers, *The joint spectral radius: theory and applications*, LNCIS 385, Spr
 from __future__ import annotations
 
 import itertools
-import math
 import time
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -283,29 +284,39 @@ def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap:
                            max_vertices=max_vertices)
 
 
-def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
-    parts = []
-    t_total = max(_time_left(kw["deadline"]), 0.0)
-    weights = [len(b) ** 2 for b in blocks]
-    for b, wgt in zip(blocks, weights):
-        share = t_total * wgt / sum(weights)
-        sub = F.subfamily(b)
-        kw2 = dict(kw, deadline=time.perf_counter() + share)
-        bb = _solve(sub, **kw2)
-        parts.append((b, bb))
-    best_b, best = max(parts, key=lambda p: p[1].lower)
-    uppers = [p[1].upper for p in parts]
+def _combine(F: Family, parts: list[tuple[Any, _Bounds]], method: str, key: str,
+             describe) -> _Bounds:
+    """JSR = max over the diagonal blocks of a block-triangular family: bounds of the parts
+    combined, the best part's witness, ``witness[key]`` listing every part (``describe``)."""
+    best = max((bb for _, bb in parts), key=lambda b: b.lower)
+    uppers = [bb.upper for _, bb in parts]
     up = None if any(u is None for u in uppers) else max(uppers)
     wit = dict(best.witness)
-    wit["blocks"] = [{"indices": b, "lower": bb.lower, "upper": bb.upper, "method": bb.method}
-                     for b, bb in parts]
+    wit[key] = describe(parts)
     notes = [f"block {b}: {nt}" for b, bb in parts for nt in bb.notes]
     # rho of the witness product for the whole family: max over the blocks (block triangular)
     rp = _lower_from_word(F, best.word)[1]
-    return _Bounds(best.lower, up, best.word, rp,
-                   "block-triangular reduction (common invariant coordinate subspaces); "
-                   f"diagonal blocks of sizes {[len(b) for b in blocks]}, JSR = max over blocks",
-                   _arith(F), wit, notes)
+    return _Bounds(best.lower, up, best.word, rp, method, _arith(F), wit, notes)
+
+
+def _solve_parts(subs: list[tuple[Any, Family]], kw: dict) -> list[tuple[Any, _Bounds]]:
+    """Solve the diagonal blocks, sharing the time in proportion to their squared sizes."""
+    t_total = max(_time_left(kw["deadline"]), 0.0)
+    weights = [sub.n ** 2 for _, sub in subs]
+    parts = []
+    for (label, sub), wgt in zip(subs, weights):
+        share = t_total * wgt / sum(weights)
+        parts.append((label, _solve(sub, **dict(kw, deadline=time.perf_counter() + share))))
+    return parts
+
+
+def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
+    parts = _solve_parts([(b, F.subfamily(b)) for b in blocks], kw)
+    return _combine(F, parts,
+                    "block-triangular reduction (common invariant coordinate subspaces); "
+                    f"diagonal blocks of sizes {[len(b) for b in blocks]}, JSR = max over blocks",
+                    "blocks", lambda ps: [{"indices": b, "lower": bb.lower, "upper": bb.upper,
+                                           "method": bb.method} for b, bb in ps])
 
 
 def _rational_family(mats: list[fmpq_mat]) -> Family:
@@ -317,28 +328,18 @@ def _rational_family(mats: list[fmpq_mat]) -> Family:
 def _solve_subspace(F: Family, W: fmpq_mat, **kw: Any) -> _Bounds:
     """JSR = max(JSR(A|W), JSR(A on R^n/W)) for an exact common invariant subspace ``W``."""
     top, bottom = split_family(F.exact_q, W)
-    parts = []
-    t_total = max(_time_left(kw["deadline"]), 0.0)
     sizes = [top[0].nrows(), bottom[0].nrows()]
-    for mats, size in zip((top, bottom), sizes):
-        share = t_total * size ** 2 / sum(x ** 2 for x in sizes)
-        bb = _solve(_rational_family(mats), **dict(kw, deadline=time.perf_counter() + share))
-        parts.append((size, bb))
-    best = max((bb for _, bb in parts), key=lambda b: b.lower)
-    uppers = [bb.upper for _, bb in parts]
-    up = None if any(u is None for u in uppers) else max(uppers)
-    wit = dict(best.witness)
-    wit["invariant_subspace"] = {
-        "dimension": sizes[0], "basis": [[sp.Rational(int(W[a, c].p), int(W[a, c].q))
-                                          for c in range(W.ncols())] for a in range(W.nrows())],
-        "blocks": [{"size": size, "lower": bb.lower, "upper": bb.upper, "method": bb.method}
-                   for size, bb in parts]}
-    notes = [f"block of size {size}: {nt}" for size, bb in parts for nt in bb.notes]
-    rp = _lower_from_word(F, best.word)[1]
-    return _Bounds(best.lower, up, best.word, rp,
-                   "exact common invariant subspace (block-triangular in the basis [W | E]); "
-                   f"diagonal blocks of sizes {sizes}, JSR = max over blocks",
-                   _arith(F), wit, notes)
+    parts = _solve_parts([("W", _rational_family(top)), ("R^n/W", _rational_family(bottom))], kw)
+    basis = [[sp.Rational(int(W[a, c].p), int(W[a, c].q)) for c in range(W.ncols())]
+             for a in range(W.nrows())]
+    return _combine(F, parts,
+                    "exact common invariant subspace (block-triangular in the basis [W | E]); "
+                    f"diagonal blocks of sizes {sizes}, JSR = max over blocks",
+                    "invariant_subspace",
+                    lambda ps: {"dimension": sizes[0], "basis": basis,
+                                "blocks": [{"block": b, "size": sz, "lower": bb.lower,
+                                            "upper": bb.upper, "method": bb.method}
+                                           for (b, bb), sz in zip(ps, sizes)]})
 
 
 def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
@@ -376,6 +377,13 @@ def _cert_info(r: Fraction, st, cert) -> dict[str, Any]:
             "certificate_arithmetic": cert.arithmetic,
             "polytope_vertex_roots": sorted(set(st.root_of)),
             "vertices": [v.tolist() for v in st.V] if len(st.V) <= 300 else None}
+
+
+def _start_vertices(mats: Sequence[np.ndarray], r: float, cands, theta: float = 0.5):
+    """Balanced roots of the candidate words plus interior fillers (:mod:`._balance`)."""
+    words = [w for _, w in cands]
+    roots, info = balanced_roots(mats, r, words)
+    return roots + interior_fillers(mats, r, words, info, theta=theta), info
 
 
 def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: float,
@@ -428,9 +436,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         cands = [(_rho_word(mats, w), w) for _, w in cands]
         rho_f = max(c[0] for c in cands)
         r = Fraction(rho_f)
-        words = [w for _, w in cands]
-        roots, balance = balanced_roots(mats, rho_f, words)
-        roots = roots + interior_fillers(mats, rho_f, words, balance)
+        roots, balance = _start_vertices(mats, rho_f, cands)
         # after the ellipsoid rounding an early polytope (few directions filled) is thin
         # legitimately: no early stop then
         st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
@@ -486,9 +492,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         G = transform_family(Fc, S) if S is not None else None
         if G is None:
             break
-        words = [w for _, w in cands]
-        roots, binfo = balanced_roots(G.floats, float(r), words)
-        roots = roots + interior_fillers(G.floats, float(r), words, binfo, theta=0.125)
+        roots, _ = _start_vertices(G.floats, float(r), cands, theta=0.125)
         t_pc = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
         st3 = build_polytope(G.floats, float(r), roots, deadline=t_pc,
                              max_vertices=max_vertices, check_better=False,
@@ -551,9 +555,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             if _time_left(deadline) <= 0.02 * total:
                 break
             re = r * (1 + Fraction(eps))
-            words = [w for _, w in cands]
-            roots, binfo = balanced_roots(Fc.floats, rho_f, words)
-            roots = roots + interior_fillers(Fc.floats, rho_f, words, binfo)
+            roots, _ = _start_vertices(Fc.floats, rho_f, cands)
             t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
             st2 = build_polytope(Fc.floats, float(re), roots, deadline=t_eps,
                                  max_vertices=max_vertices, check_better=False)

@@ -70,7 +70,7 @@ import scipy.sparse as sps
 from flint import acb, acb_mat, arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
-from ._polytope import COEF_BITS, VERTEX_BITS, Certificate
+from ._polytope import COEF_BITS, VERTEX_BITS, Certificate, better_product
 
 
 def _round_complex(x: np.ndarray) -> tuple[np.ndarray, int]:
@@ -239,16 +239,8 @@ def build_complex_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence
                     st.reps[(i, j)] = (np.asarray(supp), _round_coef(np.asarray(z)))
                     continue
                 path = st.path[j] + (i,)
-                if check_better and np.isfinite(nx):
-                    P = np.eye(n)
-                    for t in path:
-                        P = B[t] @ P
-                    rho = float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(path))
-                    if rho > 1 + 1e-10:
-                        st.better_word = tuple(reversed(path))
-                        st.better_rho = rho * r
-                        st.stop_reason = "found a product with larger spectral radius"
-                        return st
+                if check_better and np.isfinite(nx) and better_product(B, path, r, st):
+                    return st
                 if len(st.V) >= max_vertices:
                     st.stop_reason = f"vertex budget ({max_vertices}) exhausted"
                     return st

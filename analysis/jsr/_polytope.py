@@ -3,12 +3,12 @@
 Float phase (:func:`build_polytope`)
 ------------------------------------
 Given the family scaled by a rational ``r`` close to the candidate value ``rho(P_w)^(1/L)``,
-``B_i = A_i / r``, and *roots* (the leading eigenvectors of the candidate products; for a
-complex leading eigenvalue its real and imaginary parts), the vertex set ``V`` starts with the
-roots and grows as in Guglielmi–Protasov (2013): every image ``B_i v`` of a new vertex ``v`` is
+``B_i = A_i / r``, and *roots* (the balanced leading eigenvectors of the candidate products and
+the interior fillers, :mod:`analysis.jsr._balance`; for a complex leading eigenvalue its real and
+imaginary parts), the vertex set ``V`` starts with the roots and grows as in Guglielmi–Protasov (2013): every image ``B_i v`` of a new vertex ``v`` is
 tested for membership in the absolutely convex hull ``absconv(V)`` by the linear program
 
-    min ||lambda||_1  subject to  V lambda = x          (HiGHS via scipy.optimize.linprog),
+    min ||lambda||_1  subject to  V lambda = x          (HiGHS, warm-started: :class:`_WarmLP`),
 
 whose value is the Minkowski norm ``||x||_P``. Images with ``||x||_P <= 1 + tol`` are inside and
 their coefficient vector is kept (the certificate needs it); the others become new vertices. The
@@ -54,7 +54,7 @@ from typing import Sequence
 import numpy as np
 import scipy.linalg
 from scipy.optimize import linprog
-from flint import arb, arb_mat, fmpq_mat, fmpz, fmpz_mat
+from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
 
@@ -274,27 +274,20 @@ class _Member:
         return float(np.sum(np.abs(lam_s))), supp, lam_s
 
 
-def leading_roots(mats: Sequence[np.ndarray], word: Sequence[int], r: float,
-                  rel: float = 1e-8) -> list[np.ndarray]:
-    """Real roots for the candidate ``word``: leading eigenvectors of ``P_w / r^L`` (real parts
-    and imaginary parts for complex ones), normalised to unit max-norm."""
-    P = np.eye(mats[0].shape[0])
-    for i in word:
-        P = P @ (mats[i] / r)
-    w, U = np.linalg.eig(P)
-    top = float(np.max(np.abs(w)))
-    out: list[np.ndarray] = []
-    for lam, u in zip(w, U.T):
-        if abs(lam) < top * (1 - rel):
-            continue
-        parts = [u.real] if abs(lam.imag) <= 1e-12 * top else [u.real, u.imag]
-        for p in parts:
-            a = float(np.max(np.abs(p)))
-            if a > 1e-12:
-                p = p / a
-                p = p * np.sign(p[np.argmax(np.abs(p))])
-                out.append(p)
-    return out
+def better_product(B: Sequence[np.ndarray], path: tuple[int, ...], r: float, st) -> bool:
+    """Whether the vertex path ``B_{i_d} ... B_{i_1}`` has ``rho > 1`` (a product better than the
+    candidate); if so it is recorded in ``st`` (``better_word``, ``better_rho``, ``stop_reason``)
+    for the caller to restart with. Shared by the real and the complex polytope."""
+    P = np.eye(B[0].shape[0])
+    for t in path:
+        P = B[t] @ P
+    rho = float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(path))
+    if rho <= 1 + 1e-10:
+        return False
+    st.better_word = tuple(reversed(path))
+    st.better_rho = rho * r
+    st.stop_reason = "found a product with larger spectral radius"
+    return True
 
 
 def leading_is_real(mats: Sequence[np.ndarray], word: Sequence[int], rel: float = 1e-8) -> bool:
@@ -352,16 +345,9 @@ def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndar
                         st.reps[(i, j)] = (supp, lam)
                         continue
                     path = st.path[j] + (i,)
-                    if check_better and np.isfinite(nx) and nx > 1 + 1e-9:
-                        P = np.eye(n)
-                        for t in path:               # P = B_{i_d} ... B_{i_1}
-                            P = B[t] @ P
-                        rho = float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(path))
-                        if rho > 1 + 1e-10:
-                            st.better_word = tuple(reversed(path))
-                            st.better_rho = rho * r
-                            st.stop_reason = "found a product with larger spectral radius"
-                            return st
+                    if check_better and np.isfinite(nx) and nx > 1 + 1e-9 and \
+                            better_product(B, path, r, st):
+                        return st
                     if len(st.V) >= max_vertices:
                         st.stop_reason = f"vertex budget ({max_vertices}) exhausted"
                         return st
@@ -522,7 +508,7 @@ def _local_basis_bounds(F: Family, r: Fraction, st: PolytopeState, Vint: list[li
     ``M lambda`` and its Minkowski norm is at most ``||lambda||_1``. Columns sharing one local
     basis are solved together.
     """
-    n, m = st.n, len(st.V)
+    n = st.n
     todo = [key for key, (bnd, coef) in bounds.items()
             if bnd - coef > LOCAL_RESIDUAL_THRESHOLD]
     if not todo:
@@ -554,7 +540,6 @@ def _local_basis_bounds(F: Family, r: Fraction, st: PolytopeState, Vint: list[li
     with arb_precision():
         two_S = arb(2) ** S
         rinv = 1 / fraction_to_arb(r)
-        cols_all = {}
         for cols, keys in groups.items():
             M = arb_mat(n, n, [arb(Vint[a][t]) / two_S for a in range(n) for t in cols])
             for i in sorted({i for i, _ in keys}):

@@ -28,7 +28,6 @@ radius*, SIAM J. Matrix Anal. Appl. 27 (2005) 256-272.
 
 from __future__ import annotations
 
-import itertools
 import time
 from dataclasses import dataclass, field
 from typing import Sequence

@@ -89,7 +89,7 @@ def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> 
 
 def _kernel(M: fmpq_mat) -> list[list[fmpq]]:
     """A basis (rows) of the right kernel ``{x : M x = 0}``, from the exact RREF."""
-    m, n = M.nrows(), M.ncols()
+    n = M.ncols()
     R, rank = M.rref()
     pivots = []
     for i in range(rank):
