@@ -15,6 +15,7 @@ import sympy as sp
 
 from .cli import _add_scheme_args, _emit, _int_arg, _parse_within, scheme_from_args
 from .result import AnalysisError
+from .symbol import LaurentSymbol
 
 
 def _fmt(x) -> str:
@@ -32,48 +33,84 @@ def _numeric_entry(args):
     return entry if isinstance(entry, NumericSchemeEntry) else None
 
 
-def cmd_holder(args) -> None:
-    from .regularity import holder_exponent, holder_exponent_enclosure, smoothness, sobolev_exponent
-
-    budget = float(args.budget)
-    entry = _numeric_entry(args)
-    if entry is not None:
-        if args.param or args.C is not None or args.sobolev:
-            raise AnalysisError(f"{entry.slug} is known by certified enclosures only: "
-                                "--param, --C and --sobolev are not available for it")
-        h = holder_exponent_enclosure(entry, budget_seconds=budget)
-        lines = [f"scheme: {entry.slug}   (mask known by Arb ball enclosures)",
-                 f"Hölder exponent alpha in [{_fmt(h.lower)}, {_fmt(h.upper)}]   [{h.status}]"]
-        if "message" in h.provenance:
-            lines.append(f"  {h.provenance['message']}")
-        _emit(args, {"scheme": entry.slug, "alpha": h.to_json()}, "\n".join(lines))
+def _part(name: str, compute, lines: list, data: dict) -> None:
+    """Run one part of ``subdiv holder`` (alpha, C^k, Sobolev): each reports its own result, or its
+    own inconclusive with the reason, so that one failing part never hides the others."""
+    try:
+        part_lines, part_data = compute()
+    except AnalysisError as exc:
+        lines.append(f"{name}: inconclusive — {exc}")
+        data[name] = {"status": "inconclusive", "reason": str(exc)}
         return
-    a, label = scheme_from_args(args)
-    h = holder_exponent(a, budget_seconds=budget)
-    lines = [f"scheme: {label}   (domain {a.domain})"]
+    lines.extend(part_lines)
+    data[name] = part_data
+
+
+def _alpha_part(args, a, budget):
+    h = _holder(a, budget)
+    lines = []
     if h.value is not None:
         lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
     else:
         lines.append(f"Hölder exponent alpha in [{_fmt(h.lower)}, {_fmt(h.upper)}]   [{h.status}]")
     w = h.witness
     prod = w.get("product")
-    if prod:
+    if prod and w.get("k") is not None:
         lines.append(f"  c(z) = 2^{w['k']} a(z)/(1+z)^{w['k'] + 1};  spectrum-maximizing product T_{''.join(map(str, prod))}"
                      + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
     if "message" in h.provenance:
         lines.append(f"  {h.provenance['message']}")
-    data = {"scheme": label, "alpha": h.to_json()}
+    return lines, h.to_json()
+
+
+def _holder(a, budget):
+    from .regularity import holder_exponent, holder_exponent_enclosure
+
+    if not isinstance(a, LaurentSymbol):  # a catalogue entry known by enclosures (Daubechies)
+        return holder_exponent_enclosure(a, budget_seconds=budget)
+    return holder_exponent(a, budget_seconds=budget)
+
+
+def _smoothness_part(args, a, budget):
+    from .regularity import smoothness
+
+    j = _int_arg(args.C, "--C")
+    if not isinstance(a, LaurentSymbol):
+        raise AnalysisError(f"--C is not available for {getattr(a, 'slug', a)} (known by enclosures only)")
+    s = smoothness(a, j, budget_seconds=budget)
+    verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
+    return ([f"{verdict}   [{s.status}] — {s.witness.get('reason')}"],
+            {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason")})
+
+
+def _sobolev_part(args, a, budget):
+    from .regularity import sobolev_exponent
+
+    if not isinstance(a, LaurentSymbol):
+        raise AnalysisError(f"the Sobolev exponent is not available for {getattr(a, 'slug', a)} "
+                            "(known by enclosures only)")
+    s2 = sobolev_exponent(a)
+    return ([f"L2-Sobolev exponent s_2 in [{_fmt(s2.lower)}, {_fmt(s2.upper)}]   [{s2.status}; "
+             f"valid for stable shifts]"], s2.to_json())
+
+
+def cmd_holder(args) -> None:
+    budget = float(args.budget)
+    entry = _numeric_entry(args)
+    if entry is not None:
+        if args.param:
+            raise AnalysisError(f"{entry.slug} is known by certified enclosures only: --param is not available for it")
+        a, label = entry, entry.slug
+        lines = [f"scheme: {entry.slug}   (mask known by Arb ball enclosures)"]
+    else:
+        a, label = scheme_from_args(args)
+        lines = [f"scheme: {label}   (domain {a.domain})"]
+    data: dict = {"scheme": label}
+    _part("alpha", lambda: _alpha_part(args, a, budget), lines, data)
     if args.C is not None:
-        j = _int_arg(args.C, "--C")
-        s = smoothness(a, j, budget_seconds=budget)
-        verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
-        lines.append(f"{verdict}   [{s.status}] — {s.witness.get('reason')}")
-        data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason")}
+        _part("smoothness", lambda: _smoothness_part(args, a, budget), lines, data)
     if args.sobolev:
-        s2 = sobolev_exponent(a)
-        lines.append(f"L2-Sobolev exponent s_2 in [{_fmt(s2.lower)}, {_fmt(s2.upper)}]   [{s2.status}; "
-                     f"valid for stable shifts]")
-        data["sobolev"] = s2.to_json()
+        _part("sobolev", lambda: _sobolev_part(args, a, budget), lines, data)
     _emit(args, data, "\n".join(lines))
 
 
