@@ -64,6 +64,8 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
         name, value = (s.strip() for s in item.split("=", 1))
         if not name.isidentifier():
             raise AnalysisError(f"malformed parameter name {name!r}")
+        if name in out:
+            raise AnalysisError(f"--param {name} is given twice ({sp.sstr(out[name])} and {value}): give it once")
         v = parse_coefficient(value)
         if v.free_symbols:
             raise AnalysisError(f"the value of {name} must be a number, not {value!r}")
@@ -124,11 +126,38 @@ def _add_scheme_args(p: argparse.ArgumentParser) -> None:
 # commands
 # --------------------------------------------------------------------------------------------
 
+#: The real standard output while :func:`main` runs a command (fd 1 and ``sys.stdout`` then point
+#: at stderr, so that nothing a library prints can reach stdout); ``None`` outside :func:`main`.
+_COMMAND_STDOUT = None
+
+
+def command_stdout():
+    """The stream for a command's own output (its text or its one JSON document)."""
+    return _COMMAND_STDOUT if _COMMAND_STDOUT is not None else sys.stdout
+
+
+def _print(*objects, **kw) -> None:
+    """``print`` to :func:`command_stdout` — what every command uses for its own output."""
+    print(*objects, file=command_stdout(), **kw)
+
+
+def check_writable(path: str, option: str) -> None:
+    """Fail at once (one-line error) when ``path`` cannot be written — before any computation."""
+    p = os.path.abspath(os.path.expanduser(str(path)))
+    parent = os.path.dirname(p) or "."
+    if os.path.isdir(p):
+        raise AnalysisError(f"cannot write {option} {path!r}: it is a directory")
+    if not os.path.isdir(parent):
+        raise AnalysisError(f"cannot write {option} {path!r}: directory {parent!r} does not exist")
+    if not os.access(parent, os.W_OK | os.X_OK) or (os.path.exists(p) and not os.access(p, os.W_OK)):
+        raise AnalysisError(f"cannot write {option} {path!r}: permission denied")
+
+
 def _emit(args, data: dict, text: str) -> None:
     if args.json:
-        print(json.dumps(jsonable(data), indent=2))
+        _print(json.dumps(jsonable(data), indent=2))
     else:
-        print(text)
+        _print(text)
 
 
 def cmd_symbol(args) -> None:
@@ -316,6 +345,8 @@ def cmd_refine(args) -> None:
 
     from . import scheme as refinement
 
+    if args.output:
+        check_writable(args.output, "--output")
     a, label = scheme_from_args(args)
     a.require_numeric("refinement")
     data = _read_points(args)
@@ -338,15 +369,15 @@ def cmd_refine(args) -> None:
     data_out = {"scheme": label, "steps": steps, "closed": not args.open, "end_rule": args.end_rule if args.open else None,
                 "count": len(out), "points": [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]}
     if args.json:
-        print(json.dumps(jsonable(data_out), indent=2))
+        _print(json.dumps(jsonable(data_out), indent=2))
         return
-    print(f"scheme: {label}; {len(data)} -> {len(out)} points after {steps} step(s)"
-          + (f" (open polygon, end rule {args.end_rule})" if args.open else " (closed polygon)"))
+    _print(f"scheme: {label}; {len(data)} -> {len(out)} points after {steps} step(s)"
+           + (f" (open polygon, end rule {args.end_rule})" if args.open else " (closed polygon)"))
     if args.output:
-        print(f"written to {args.output}")
+        _print(f"written to {args.output}")
     else:
         for row in out:
-            print(", ".join(str(v) for v in np.atleast_1d(row)))
+            _print(", ".join(str(v) for v in np.atleast_1d(row)))
 
 
 def _not_rational(v):
@@ -413,6 +444,7 @@ COMMAND_MODULES: tuple[str, ...] = ("analysis.cli_regularity", "analysis.cli_atl
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
     p = _Parser(prog="subdiv", description="Exact and certified analysis of binary subdivision schemes. "
                 "Convention: (S_a f)_i = sum_j a_{i-2j} f_j, a(z) = sum_i a_i z^i.")
+    p.add_argument("--version", action="version", version=f"subdiv {_version()}")
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
     sub.required = True
 
@@ -465,11 +497,186 @@ def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
     return p
 
 
+def _version() -> str:
+    """The installed version of ``subdiv-workbench``, else the one in ``pyproject.toml``."""
+    try:
+        from importlib.metadata import PackageNotFoundError, version
+
+        return version("subdiv-workbench")
+    except PackageNotFoundError:
+        import re
+        from pathlib import Path
+
+        try:
+            text = (Path(__file__).resolve().parent.parent / "pyproject.toml").read_text(encoding="utf-8")
+        except OSError:
+            return "unknown"
+        m = re.search(r'(?m)^version\s*=\s*"([^"]+)"', text)
+        return m.group(1) if m else "unknown"
+
+
+def _option_table(parser: argparse.ArgumentParser):
+    """(options taking exactly one value, every option string, sub-command parsers) of one parser."""
+    one, known, subs = set(), set(), {}
+    for action in parser._actions:
+        known.update(action.option_strings)
+        if action.option_strings and action.nargs in (None, 1):   # store and append (one value each time)
+            one.update(action.option_strings)
+        if isinstance(action, argparse._SubParsersAction):
+            subs.update(action.choices)
+    return one, known, subs
+
+
+def _option_name(token: str, known: set[str]) -> str | None:
+    """The option string ``token`` stands for (exact, or an unambiguous ``--`` prefix as argparse
+    accepts), ignoring an attached ``=value``; ``None`` when it is not an option of this parser."""
+    head = token.split("=", 1)[0]
+    if head in known:
+        return head
+    if head.startswith("--") and len(head) > 2:
+        cands = [k for k in known if k.startswith(head)]
+        if len(cands) == 1:
+            return cands[0]
+    return None
+
+
+def attach_dash_values(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
+    """Rewrite ``--opt VALUE`` as ``--opt=VALUE`` when ``--opt`` takes one value and ``VALUE``
+    begins with ``-`` but is no option string (argparse would reject ``--mask -1/16,0,9/16,...``).
+    Sub-command names switch to the sub-command's own options (recursively, e.g. ``nonuniform
+    decay``); everything after ``--`` is left alone.
+
+    >>> p = build_parser()
+    >>> attach_dash_values(p, ["holder", "--mask", "-1/16,0,9/16,1,9/16,0,-1/16", "--start", "-3", "--json"])
+    ['holder', '--mask=-1/16,0,9/16,1,9/16,0,-1/16', '--start=-3', '--json']
+    >>> attach_dash_values(p, ["symbol", "--mask", "--json"])        # a missing value stays an error
+    ['symbol', '--mask', '--json']
+    """
+    out: list[str] = []
+    one, known, subs = _option_table(parser)
+    i = 0
+    while i < len(argv):
+        tok = argv[i]
+        if tok == "--":
+            out.extend(argv[i:])
+            break
+        if not tok.startswith("-"):
+            if tok in subs:
+                one, known, subs = _option_table(subs[tok])
+            out.append(tok)
+            i += 1
+            continue
+        name = None if "=" in tok else _option_name(tok, known)
+        if name in one and i + 1 < len(argv):
+            value = argv[i + 1]
+            if value.startswith("-") and value != "--" and _option_name(value, known) is None:
+                out.append(f"{name}={value}")
+            else:
+                out.extend((tok, value))
+            i += 2
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
+
+def _flush_c_stdio() -> None:
+    """Flush the C library's stdio buffers (output of compiled libraries not yet written)."""
+    try:
+        import ctypes
+
+        ctypes.CDLL(None).fflush(None)
+    except (OSError, AttributeError, TypeError):  # pragma: no cover - no C runtime reachable
+        pass
+
+
+class _StdoutGuard:
+    """While a command runs, file descriptor 1 and ``sys.stdout`` point at stderr, so nothing a
+    library prints (Python ``print`` or C-level writes such as HiGHS's banner) can reach stdout; the
+    command writes its own output through :func:`command_stdout` to the real standard output.
+
+    When ``sys.stdout`` is not file descriptor 1 (pytest's ``capsys``, ``contextlib.redirect_stdout``)
+    the command's output goes to that object and fd 1 is diverted all the same."""
+
+    def __enter__(self):
+        global _COMMAND_STDOUT
+        self.sys_stdout, self.saved_fd, self.own = sys.stdout, None, None
+        try:
+            sys.stdout.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        _flush_c_stdio()
+        try:
+            saved = os.dup(1)
+        except OSError:      # no fd 1 (embedded use): only sys.stdout is diverted
+            saved = None
+        if saved is not None:
+            try:
+                os.dup2(2, 1)
+                self.saved_fd = saved
+            except OSError:
+                os.close(saved)
+        try:
+            fd = self.sys_stdout.fileno()
+        except (AttributeError, OSError, ValueError):
+            fd = None
+        if fd == 1 and self.saved_fd is not None:
+            import io
+
+            s = self.sys_stdout
+            try:
+                self.own = io.TextIOWrapper(open(self.saved_fd, "wb", closefd=False),
+                                            encoding=getattr(s, "encoding", None) or "utf-8",
+                                            errors=getattr(s, "errors", None) or "strict",
+                                            line_buffering=bool(getattr(s, "line_buffering", False)))
+            except Exception:
+                os.dup2(self.saved_fd, 1)    # leave everything as it was
+                os.close(self.saved_fd)
+                raise
+        _COMMAND_STDOUT = self.own if self.own is not None else self.sys_stdout
+        sys.stdout = sys.stderr
+        return self
+
+    def __exit__(self, exc_type, exc, tb) -> bool:
+        global _COMMAND_STDOUT
+        _COMMAND_STDOUT = None
+        try:
+            sys.stdout.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        _flush_c_stdio()                     # what C code buffered while fd 1 was stderr goes there
+        sys.stdout = self.sys_stdout
+        broken = False
+        try:
+            if self.own is not None:
+                self.own.flush()
+        except BrokenPipeError:              # `subdiv ... | head`: the reader has gone
+            broken = True
+            if self.saved_fd is not None:
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, self.saved_fd)
+                os.close(devnull)
+        finally:
+            if self.own is not None:
+                try:
+                    self.own.close()
+                except OSError:
+                    pass
+            if self.saved_fd is not None:
+                os.dup2(self.saved_fd, 1)
+                os.close(self.saved_fd)
+        if broken and exc_type is None:
+            raise BrokenPipeError
+        return False
+
+
 def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()) -> int:
     parser = build_parser(extra_modules)
+    argv = list(sys.argv[1:] if argv is None else argv)
     try:
-        args = parser.parse_args(argv)
-        args.func(args)
+        args = parser.parse_args(attach_dash_values(parser, argv))
+        with _StdoutGuard():
+            args.func(args)
     except AnalysisError as exc:
         print(f"subdiv: error: {exc}", file=sys.stderr)
         return 2

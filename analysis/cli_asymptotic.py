@@ -19,7 +19,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .cli import _emit, _parse_params
+from .cli import _emit, _parse_params, check_writable
+from .jsonable import fmt_lower, fmt_upper
 from .result import AnalysisError
 from .symbol import parse_coefficient
 
@@ -41,13 +42,19 @@ def _box(items):
         lo, hi = (parse_coefficient(x.strip()) for x in rng.split(",", 1))
         if lo.free_symbols or hi.free_symbols:
             raise AnalysisError(f"the box for {name} must have numeric ends")
+        if name in out:
+            raise AnalysisError(f"--box {name} is given twice: give it once")
         out[name] = (lo, hi)
     return out
 
 
 def _values(args):
     v = _parse_params(args.param)
-    v.update(_box(args.box))
+    box = _box(args.box)
+    both = sorted(set(v) & set(box))
+    if both:
+        raise AnalysisError(f"{both[0]} is given both by --param and by --box: give one of them")
+    v.update(box)
     return v
 
 
@@ -77,10 +84,10 @@ def cmd_series(args) -> None:
         rows.append({"m": m, **r.to_json()})
         v = r.witness.get("verdict")
         if v == "convergent":
-            lines.append(f"m = {m}: convergent, sum in [{float(r.lower):.15g}, {float(r.upper):.15g}] "
-                         f"({r.status}; tail <= {float(r.witness['tail']['bound']):.3g})")
+            lines.append(f"m = {m}: convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, {fmt_upper(r.upper, 15, 'g')}] "
+                         f"({r.status}; tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')})")
         elif v == "divergent":
-            lines.append(f"m = {m}: divergent ({r.status}): terms >= {float(r.witness['term_lower_bound']):.6g} "
+            lines.append(f"m = {m}: divergent ({r.status}): terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')} "
                          f"for n >= {r.witness['tail']['N'] if 'tail' in r.witness else args.N}; "
                          f"leading constant {r.witness['leading_constant']}")
         else:
@@ -120,6 +127,8 @@ def cmd_bound(args) -> None:
 def cmd_reproduce(args) -> None:
     from .reproduction import check_curve_options, curve_deviation, generation, reproduction
 
+    if args.plot:
+        check_writable(args.plot, "the plot")
     s = _level_scheme(args.scheme)
     if args.curve:
         check_curve_options(args.points, args.steps, args.plot)

@@ -68,8 +68,11 @@ def _ascii_map(result, js) -> list[str]:
 
 def cmd_atlas(args) -> None:
     from .atlas import holder_atlas, parse_axis, plot_atlas
-    from .cli import _emit, scheme_from_args
+    from .cli import _emit, check_writable, scheme_from_args
+    from .jsonable import fmt_lower, fmt_upper
 
+    if args.figure:
+        check_writable(args.figure, "the figure")
     a, label = scheme_from_args(args)
     if args.x is None or args.y is None:
         raise AnalysisError("give both axes: --x NAME=LO:HI:N --y NAME=LO:HI:N")
@@ -105,8 +108,8 @@ def cmd_atlas(args) -> None:
     if gen:
         lo = min(gen, key=lambda s: s["alpha_lower"])
         hi = max(gen, key=lambda s: s["alpha_lower"])
-        lines.append(f"generic alpha from {float(lo['alpha_lower']):.4f} ({xn} = {sp.sstr(lo['p1'])}, "
-                     f"{yn} = {sp.sstr(lo['p2'])}) to {float(hi['alpha_lower']):.4f} "
+        lines.append(f"generic alpha from {fmt_lower(lo['alpha_lower'], 4)} ({xn} = {sp.sstr(lo['p1'])}, "
+                     f"{yn} = {sp.sstr(lo['p2'])}) to {fmt_lower(hi['alpha_lower'], 4)} "
                      f"({xn} = {sp.sstr(hi['p1'])}, {yn} = {sp.sstr(hi['p2'])})")
     lines.append(f"initial grid: largest j in {js} with certified C^j ('.' none, '?' undecided, "
                  f"'*' exceptional); rows {yn} (top = largest), columns {xn} increasing")
@@ -116,8 +119,8 @@ def cmd_atlas(args) -> None:
         " ".join(f"C^{j}" for j in js) + "  level"
     lines.append(head)
     for s in r.value:
-        al = "-" if s["alpha_lower"] is None else f"{float(s['alpha_lower']):.6f}"
-        au = "-" if s["alpha_upper"] is None else f"{float(s['alpha_upper']):.6f}"
+        al = "-" if s["alpha_lower"] is None else fmt_lower(s["alpha_lower"], 6)   # outward
+        au = "-" if s["alpha_upper"] is None else fmt_upper(s["alpha_upper"], 6)
         flags = ("  exceptional" if s.get("exceptional") else "") + (f"  ({s['note']})" if s.get("note") else "")
         lines.append(f"{sp.sstr(s['p1']):>10} {sp.sstr(s['p2']):>10}  {al:>12} {au:>12}  {s['status']:<12} "
                      + " ".join(f"{_verdict_char(s[f'C^{j}']):>{len(str(j)) + 2}}" for j in js)

@@ -23,7 +23,8 @@ import math
 
 import numpy as np
 
-from .jsonable import jsonable
+from .cli import _print, check_writable
+from .jsonable import fmt_lower, fmt_upper, jsonable
 from .result import AnalysisError
 
 
@@ -75,9 +76,9 @@ def _figure(plot, path: str, **kw) -> None:
 
 def _out(args, data, text: str) -> None:
     if args.json:
-        print(json.dumps(jsonable(data), indent=2))
+        _print(json.dumps(jsonable(data), indent=2))
     else:
-        print(text)
+        _print(text)
 
 
 def _points(text: str) -> np.ndarray:
@@ -93,12 +94,17 @@ def _points(text: str) -> np.ndarray:
 def cmd_refine(args) -> None:
     from . import nonuniform as nu
 
+    if args.output:
+        check_writable(args.output, "--output")
     P = _points(args.points)
     u = _floats(args.u, "--u")
     r = nu.refine(P, u, degree=_int(args.degree, "--degree", 2, 64), steps=_int(args.steps, "--steps", 0, 30),
                   closed=args.closed, rule=args.rule)
     if args.output:
-        np.savetxt(args.output, np.asarray(r.points, dtype=float), delimiter=",")
+        try:
+            np.savetxt(args.output, np.asarray(r.points, dtype=float), delimiter=",")
+        except OSError as exc:
+            raise AnalysisError(f"cannot write --output {args.output!r}: {exc.strerror or exc}") from None
     data = {"degree": r.degree, "rule": r.rule, "closed": r.closed, "steps": r.level, "count": len(r.points),
             "points": r.points.tolist(), "u": r.u.tolist()}
     lines = [f"NVPS degree {r.degree} ({r.rule}), {'closed' if r.closed else 'open'}: {len(P)} -> {len(r.points)} "
@@ -128,7 +134,8 @@ def cmd_decay(args) -> None:
                       levels=_int(args.levels, "--levels", 0, 30), closed=args.closed)
     lines = [f"sup_j ||S^k - S_a||_inf, NVPS degree {args.degree}, u0 = {args.u0}   [{r.status}]"]
     for row, sc in zip(r.witness["levels"], r.witness["scaled_4k_upper"]):
-        lines.append(f"  k = {row['k']:2d}: [{float(row['lower']):.6e}, {float(row['upper']):.6e}]   4^k upper = {sc:.6f}")
+        lines.append(f"  k = {row['k']:2d}: [{fmt_lower(row['lower'], 6, 'e')}, {fmt_upper(row['upper'], 6, 'e')}]"
+                     f"   4^k upper = {fmt_upper(sc, 6)}")
     lines.append(f"  ratios of consecutive upper bounds -> 1/4: {', '.join(f'{x:.5f}' for x in r.witness['ratios'][-3:])}")
     _out(args, r.to_json(), "\n".join(lines))
 
@@ -178,6 +185,8 @@ def cmd_reproduce(args) -> None:
 
     d = _int(args.degree, "--degree", 2, 16)
     levels = _int(args.levels, "--levels", 0, 20)
+    if args.figure:
+        check_writable(args.figure, "the figure")
     r = nu.reproduce(args.kind, degree=d, levels=levels)
     if args.figure:
         _figure(nu.plot_blended, args.figure, levels=min(levels, 7))
@@ -194,6 +203,8 @@ def cmd_chamfer(args) -> None:
     from . import nonuniform as nu
 
     levels = _int(args.levels, "--levels", 0, 16)
+    if args.figure:
+        check_writable(args.figure, "the figure")
     r = nu.chamfer_example(levels=levels, degree=_int(args.degree, "--degree", 2, 8))
     if args.figure:
         _figure(nu.plot_chamfer, args.figure, levels=min(levels, 8))

@@ -24,11 +24,13 @@ from __future__ import annotations
 
 import fnmatch
 import json
+import os
 import sys
 import time
 from pathlib import Path
 
 from .claims import compare_verdicts, evaluate_paper, get_paper, papers, verdicts_json
+from .cli import _print
 from .result import AnalysisError
 
 #: Default output folder: ``reports/`` beside the ``analysis`` package (the repository root).
@@ -74,6 +76,8 @@ def cmd_report(args) -> None:
                             f"{REPORTS} by a partial one; write elsewhere with --output DIR")
     if args.output and not outdir.is_dir():
         raise AnalysisError(f"output folder {outdir} does not exist")
+    if (args.claim is None or args.write) and not os.access(outdir, os.W_OK | os.X_OK):
+        raise AnalysisError(f"cannot write to the output folder {outdir}: permission denied")
     t0 = time.perf_counter()
     all_results = {}
     for paper in _papers_arg(args.paper):
@@ -86,19 +90,19 @@ def cmd_report(args) -> None:
         all_results[paper.id] = results
         if args.json:
             continue
-        print(f"\n== {paper.id}: {paper.title}")
-        print(_table(results))
+        _print(f"\n== {paper.id}: {paper.title}")
+        _print(_table(results))
         if only is not None:
             for ev in results:
                 v = ev.verdict
-                print(f"\n{ev.claim.id}: {v.label}\n  {v.summary}")
+                _print(f"\n{ev.claim.id}: {v.label}\n  {v.summary}")
                 for t, x in (("corrected", v.corrected), ("sharpness", v.sharpness), ("settle", v.settle)):
                     if x:
-                        print(f"  {t}: {x}")
+                        _print(f"  {t}: {x}")
                 for e in v.evidence:
-                    print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
+                    _print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
                 for n in v.numbers:
-                    print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
+                    _print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
     write = args.claim is None or args.write
     if write:
         from .report import render_paper
@@ -115,7 +119,7 @@ def cmd_report(args) -> None:
         golden.write_text(json.dumps(data, indent=1, ensure_ascii=False, sort_keys=True) + "\n", encoding="utf-8")
         print(f"wrote {golden}", file=sys.stderr)
     if args.json:
-        print(json.dumps(verdicts_json(all_results), indent=1, ensure_ascii=False))
+        _print(json.dumps(verdicts_json(all_results), indent=1, ensure_ascii=False))
     print(f"\n{sum(len(r) for r in all_results.values())} claims in {time.perf_counter() - t0:.1f} s",
           file=sys.stderr)
 
@@ -147,13 +151,19 @@ def cmd_check(args) -> None:
                                               if k in sel}} for pid in fresh_results}}
     diffs = compare_verdicts(golden, fresh, papers_=list(fresh_results))
     n = sum(len(v) for v in fresh_results.values())
+    if args.json:
+        _print(json.dumps({"golden": str(golden_path), "claims": n, "agree": not diffs,
+                           "differences": [str(d) for d in diffs], "verdicts": fresh}, indent=1, ensure_ascii=False))
+        if diffs:
+            raise SystemExit(1)
+        return
     if diffs:
-        print(f"subdiv check: {len(diffs)} difference(s) from {golden_path}:")
+        _print(f"subdiv check: {len(diffs)} difference(s) from {golden_path}:")
         for d in diffs:
-            print(f"  {d}")
-        print("If the change is intended, regenerate with `subdiv report all` and review the diff.")
+            _print(f"  {d}")
+        _print("If the change is intended, regenerate with `subdiv report all` and review the diff.")
         raise SystemExit(1)
-    print(f"subdiv check: {n} claims agree with {golden_path} ({time.perf_counter() - t0:.1f} s)")
+    _print(f"subdiv check: {n} claims agree with {golden_path} ({time.perf_counter() - t0:.1f} s)")
 
 
 def register(subparsers) -> None:
@@ -172,4 +182,5 @@ def register(subparsers) -> None:
     c.add_argument("--verdicts", metavar="FILE", help="golden file (default reports/verdicts.json)")
     c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")
     c.add_argument("--quiet", action="store_true")
+    c.add_argument("--json", action="store_true", help="print the comparison (and the fresh verdicts) as JSON")
     c.set_defaults(func=cmd_check)

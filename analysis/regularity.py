@@ -54,12 +54,56 @@ from .transition import transition_matrices
 iv = mpmath.iv
 
 
+class NotConvergent(AnalysisError):
+    """The scheme fails a sum rule, so it does not converge — a **certified** verdict, not bad
+    input. ``reason`` is the exact failure (``"a(-1) = 1/2 != 0"``, ``"a(1) = 5/2 != 2"``);
+    :meth:`result` is the verdict as a certified :class:`Result` (``value`` False).
+
+    A subclass of :class:`AnalysisError`, so callers that only ask for an exponent keep working;
+    callers that report regularity (``subdiv holder``, :func:`smoothness`) turn it into a result.
+    """
+
+    def __init__(self, reason: str, *, hint: str | None = None):
+        self.reason = reason
+        self.hint = hint
+        super().__init__(f"the scheme does not satisfy the sum rules a(1) = 2, a(-1) = 0 ({reason}): "
+                         "it does not converge" + (f"; {hint}" if hint else ""))
+
+    def result(self) -> Result:
+        return Result(value=False, status=CERTIFIED,
+                      witness={"convergent": False, "reason": f"not convergent: {self.reason}",
+                               **({"hint": self.hint} if self.hint else {})},
+                      provenance={"method": "exact sum rules a(1) = 2, a(-1) = 0 (necessary for convergence)"})
+
+
+def convergence_failure(a: LaurentSymbol) -> str | None:
+    """``None`` when ``a(1) = 2`` and ``a(-1) = 0`` exactly, else the reason, e.g.
+    ``"a(-1) = 1/2 != 0"`` (both sum rules are necessary for convergence).
+
+    >>> convergence_failure(LaurentSymbol.from_mask(["1/4", "1/2", "1", "1/4"]))
+    'a(-1) = 1/2 != 0'
+    """
+    a.require_numeric("the sum rules")
+    s1, sm1 = sp.expand(a(1)), sp.expand(a(-1))
+    bad = []
+    if s1 - 2 != 0:
+        t = sp.sstr(s1)
+        bad.append(f"a(1) = {t} != 2" if len(t) <= 24 else f"a(1) - 2 = {sp.sstr(sp.N(s1 - 2, 3))} != 0")
+    if sm1 != 0:
+        t = sp.sstr(sm1)
+        bad.append(f"a(-1) = {t} != 0" if len(t) <= 24 else f"a(-1) = {sp.sstr(sp.N(sm1, 3))} != 0")
+    return "; ".join(bad) or None
+
+
 def difference_mask(a: LaurentSymbol) -> tuple[int, LaurentSymbol]:
-    """``(k, c)`` with ``k = N - 1`` (``N`` factors ``(1+z)``) and ``c = 2^k a / (1+z)^(k+1)``."""
+    """``(k, c)`` with ``k = N - 1`` (``N`` factors ``(1+z)``) and ``c = 2^k a / (1+z)^(k+1)``.
+
+    Raises :class:`NotConvergent` (a certified verdict) when a sum rule fails."""
     a.require_numeric("a Hölder exponent")
+    why = convergence_failure(a)
+    if why is not None:
+        raise NotConvergent(why)
     N = smoothing_factor(a, exceptional=False).value
-    if N < 1 or sp.expand(a(1) - 2) != 0:
-        raise AnalysisError("the scheme does not satisfy the sum rules a(1) = 2, a(-1) = 0: it does not converge")
     return N - 1, factor_out(a, N) / 2
 
 
@@ -187,7 +231,10 @@ def smoothness(a: LaurentSymbol, j: int, *, budget_seconds: float = 20.0, max_le
     """
     if j < 0:
         raise AnalysisError("j must be >= 0")
-    k, c = difference_mask(a)
+    try:
+        k, c = difference_mask(a)
+    except NotConvergent as exc:          # certified: not even C^0
+        return exc.result()
     if j > k:
         return Result(value=False, status=CERTIFIED,
                       witness={"reason": f"only {k + 1} factors (1+z): alpha <= {k + 1} and C^{j} needs "
@@ -286,54 +333,17 @@ def _quick_verdict(a: LaurentSymbol, c: LaurentSymbol, k: int, j: int, *, max_L:
 # L2-Sobolev exponent
 # --------------------------------------------------------------------------------------------
 
-def sobolev_exponent(a: LaurentSymbol) -> Result:
-    """The L2-Sobolev exponent from the transition operator (a finite eigenvalue problem).
+def sobolev_exponent(a, **kwargs) -> Result:
+    """The certified L2-Sobolev exponent of the basic limit function, with or without stable
+    shifts: a thin wrapper of :func:`analysis.sobolev.sobolev_exponent` (see there for the
+    algorithm, the stability reduction and the references).
 
-    With the autocorrelation ``P(z) = a(z) a(1/z) / 2 = ((1+z)(1+1/z)/4)^N Q(z)``,
-    ``s_2 = N - (1/2) log2 rho(T_Q)``, ``T_Q = (Q_{2i-j})`` on the indices of Q's support.
-
-    Precision and caveats: the spectral radius is computed from the exact characteristic
-    polynomial (certified enclosure). The formula gives the Sobolev exponent when the shifts of
-    the basic limit function are stable; for masks with unstable shifts (e.g. a(z) with
-    symmetric zeros -z_0, z_0 on the unit circle, or masks of the form a(z^2)-type / "unstable
-    shifts") the eigenvalue problem sees spurious eigenvalues and the formula can
-    *underestimate* s_2; the witness flags ``"stable_shifts_checked": False``.
+    >>> sobolev_exponent(LaurentSymbol.from_mask([1, 0, 0, 1])).value      # box on [0, 3]
+    1/2
     """
-    a.require_numeric("a Sobolev exponent")
-    if not (a.domain.is_QQ or a.domain.is_ZZ):
-        raise AnalysisError("the Sobolev exponent is implemented for rational masks")
-    P = a * a.reversed() / 2
-    N = smoothing_factor(a, exceptional=False).value
-    sym = LaurentSymbol.from_mask([sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(1, 4)], start=-1)
-    # (1+z)(1+1/z)/4 = (z^-1 + 2 + z)/4
-    Q = P
-    for _ in range(N):
-        Q = factor_out(Q.shift(1), 2)  # Q / ((1+z)^2 / (4z)) = 4 z Q / (1+z)^2
-    if sym ** N * Q != P:  # pragma: no cover - algebra check
-        raise ArithmeticError("autocorrelation factorization failed")
-    lo, hi = Q.start, Q.end
-    idx = list(range(lo, hi + 1))
-    T = sp.Matrix(len(idx), len(idx), lambda i, j: Q.coeff(2 * idx[i] - idx[j]))
-    lam = sp.Symbol("lambda")
-    cp = sp.Poly(T.charpoly(lam).as_expr(), lam, domain=sp.QQ)
-    from flint import fmpq_poly, arb
+    from .sobolev import sobolev_exponent as _sobolev_exponent
 
-    coeffs = [sp.Rational(c) for c in reversed(cp.all_coeffs())]
-    den = 1
-    for c in coeffs:
-        den = sp.ilcm(den, c.q)
-    roots = fmpq_poly([int(c * den) for c in coeffs]).complex_roots()
-    from .jsr._exact import arb_to_fraction_bounds
-
-    bounds = [arb_to_fraction_bounds(abs(r)) for r, _ in roots]
-    rlo = max(b[0] for b in bounds)
-    rhi = max(b[1] for b in bounds)
-    l2lo, l2hi = _log2_interval(sp.Rational(rlo.numerator, rlo.denominator), sp.Rational(rhi.numerator, rhi.denominator))
-    return Result(lower=N - l2hi / 2, upper=N - l2lo / 2, status=CERTIFIED,
-                  witness={"N": N, "Q": Q, "transition_operator": T, "charpoly": cp.as_expr(),
-                           "stable_shifts_checked": False},
-                  provenance={"method": "s_2 = N - log2(rho(T_Q))/2 (Villemoes 1994; Eirola 1992)",
-                              "caveat": "valid for stable shifts; otherwise possibly an underestimate"})
+    return _sobolev_exponent(a, **kwargs)
 
 
 # --------------------------------------------------------------------------------------------

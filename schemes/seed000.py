@@ -94,6 +94,7 @@ def check(claim_id: str) -> Result:
 import math  # noqa: E402
 
 from analysis import claims as C  # noqa: E402
+from analysis.jsonable import roundoff_text  # noqa: E402
 
 from . import seed001 as _s001  # noqa: E402  (shared exact identities of the NVPS)
 
@@ -196,7 +197,7 @@ def _v_reproduction():
     ids, ev_exact = _s001._exp_evidence()
     r = nu.reproduce("circle", degree=2, levels=8)
     ev_num = C.Evidence("float64 replay, circle, d = 2, 8 levels (illustration)",
-                        text=f"form error of the level-8 polygon {r.witness['form_error'][-1]:.1e}")
+                        text=f"form error of the level-8 polygon {roundoff_text(r.witness['form_error'][-1])}")
     ok = all(ids[k] for k in ("geometric", "update", "factor"))
     fig = _s001._blended_figure("000-blended", "seed000")
     if ok:

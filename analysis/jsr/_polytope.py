@@ -45,6 +45,7 @@ Math. Softw. 46(3) (2020) 29.
 
 from __future__ import annotations
 
+import threading
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -97,6 +98,52 @@ class PolytopeState:
         return np.array(self.V).T if self.V else np.zeros((self.n, 0))
 
 
+#: HiGHS prints its banner ("Running HiGHS ...", "Includes third-party software ...") to the C
+#: stdout when the first ``Highs`` object of a process is constructed — before any option such
+#: as ``output_flag`` can be set; later constructions are silent.
+_HIGHS_BANNER_DONE = False
+_HIGHS_LOCK = threading.Lock()
+
+
+def _quiet_highs(highspy):
+    """A new ``highspy.Highs()``; the first one of the process is built with file descriptor 1
+    pointed at ``os.devnull`` so the banner reaches no one's stdout (``--json`` output stays JSON)."""
+    global _HIGHS_BANNER_DONE
+    with _HIGHS_LOCK:
+        if _HIGHS_BANNER_DONE:
+            return highspy.Highs()
+        import os
+        import sys
+
+        try:
+            sys.stdout.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        try:
+            saved = os.dup(1)
+        except OSError:                       # no fd 1 at all: nothing to protect
+            saved = None
+        if saved is None:
+            h = highspy.Highs()
+        else:
+            devnull = os.open(os.devnull, os.O_WRONLY)
+            try:
+                os.dup2(devnull, 1)
+                h = highspy.Highs()
+                try:                          # HiGHS flushes its log lines; make sure of it
+                    import ctypes
+
+                    ctypes.CDLL(None).fflush(None)
+                except (OSError, AttributeError, TypeError):  # pragma: no cover
+                    pass
+            finally:
+                os.dup2(saved, 1)
+                os.close(saved)
+                os.close(devnull)
+        _HIGHS_BANNER_DONE = True
+        return h
+
+
 class _WarmLP:
     """The membership LP ``min sum(l+ + l-) s.t. V (l+ - l-) = x, l+-, l- >= 0`` kept as one
     persistent HiGHS model (the ``highspy`` package): new vertices are appended as column pairs,
@@ -114,7 +161,7 @@ class _WarmLP:
             import highspy
         except ImportError:          # pragma: no cover - highspy is a dependency
             return None
-        h = highspy.Highs()
+        h = _quiet_highs(highspy)
         for key, val in (("output_flag", False), ("presolve", "off"), ("solver", "simplex"),
                          ("simplex_strategy", 1), ("primal_feasibility_tolerance", 1e-10),
                          ("dual_feasibility_tolerance", 1e-10)):
