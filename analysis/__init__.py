@@ -5,7 +5,7 @@ Conventions: ``(S_a f)_i = sum_j a_{i-2j} f_j`` and ``a(z) = sum_i a_i z^i`` (se
 """
 
 from .result import Result, AnalysisError, CERTIFIED, NUMERICAL, REFUTED, INCONCLUSIVE
-from .symbol import LaurentSymbol, Rules, Z, parse_coefficient
+from .algebra.symbol import LaurentSymbol, Rules, Z, parse_coefficient
 
 __all__ = ["Result", "AnalysisError", "CERTIFIED", "NUMERICAL", "REFUTED", "INCONCLUSIVE",
            "LaurentSymbol", "Rules", "Z", "parse_coefficient"]

@@ -9,9 +9,9 @@ import time
 
 import sympy as sp
 
-from analysis.bounds import check_inequality
-from analysis.levels import distance
-from analysis.series import weighted_series
+from analysis.levels.bounds import check_inequality
+from analysis.levels.level_dependent import distance
+from analysis.levels.series import weighted_series
 from schemes import seed003 as S
 
 BOX = {"alpha": (sp.Rational(1, 10), sp.pi / 3), "omega": sp.Rational(1, 100)}

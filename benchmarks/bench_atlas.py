@@ -37,7 +37,7 @@ def main() -> None:
     args = ap.parse_args()
 
     import schemes
-    from analysis.atlas import holder_atlas, plot_atlas
+    from analysis.regularity.atlas import holder_atlas, plot_atlas
 
     if args.without_exact_rho:
         import analysis.jsr as jsr

@@ -16,9 +16,9 @@ import time
 import sympy as sp
 
 import schemes
-from analysis.difference import scheme_norm
-from analysis.normset import norm_solution_set
-from analysis.symbol import LaurentSymbol
+from analysis.stationary.difference import scheme_norm
+from analysis.stationary.normset import norm_solution_set
+from analysis.algebra.symbol import LaurentSymbol
 
 
 def timed(fn, repeat: int) -> tuple[float, object]:

@@ -1,4 +1,4 @@
-"""Speed of :func:`analysis.scheme.refine` (float path); not a timed test.
+"""Speed of :func:`analysis.stationary.refinement.refine` (float path); not a timed test.
 
 Run: ``python benchmarks/bench_refine.py [--repeat 7]``. Prints one line per case, ready to paste
 into a README, e.g. ``refine closed 4-point 1e6 points: 0.031 s (median of 7)``.
@@ -22,8 +22,8 @@ from fractions import Fraction
 
 import numpy as np
 
-from analysis.scheme import refine
-from analysis.symbol import LaurentSymbol
+from analysis.stationary.refinement import refine
+from analysis.algebra.symbol import LaurentSymbol
 
 
 def median_time(fn, repeat: int) -> tuple[float, object]:

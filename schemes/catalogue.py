@@ -6,7 +6,7 @@ paper's rules, the stencils as printed. Classic schemes live in :mod:`schemes.cl
 paper has a module of its own (:mod:`schemes.seed003`, :mod:`schemes.seed004`) which will also
 hold that paper's claims.
 
-Convention (see :mod:`analysis.symbol`): ``(S_a f)_i = sum_j a_{i-2j} f_j``,
+Convention (see :mod:`analysis.algebra.symbol`): ``(S_a f)_i = sum_j a_{i-2j} f_j``,
 ``a(z) = sum_i a_i z^i``.
 
 Examples
@@ -41,7 +41,7 @@ from typing import Callable, Mapping
 import sympy as sp
 
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Rules, parse_coefficient
+from analysis.algebra.symbol import LaurentSymbol, Rules, parse_coefficient
 
 #: Modules that define catalogue entries, each with a module-level ``ENTRIES`` tuple, in the
 #: order in which :func:`names` lists them.

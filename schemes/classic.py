@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from analysis.symbol import LaurentSymbol, Rules, Z
+from analysis.algebra.symbol import LaurentSymbol, Rules, Z
 
 from .catalogue import SchemeEntry
 

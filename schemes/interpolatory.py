@@ -35,7 +35,7 @@ Algorithm
 ---------
 Lagrange weights ``w_p = prod_{q != p} (t - q)/(p - q)`` for the nodes ``p = -n+1, ..., n``,
 evaluated at ``t = 1/2`` (primal) or ``t = 1/4, 3/4`` (dual) in exact rational arithmetic, then
-:meth:`~analysis.symbol.LaurentSymbol.from_rules`. Nothing is typed in.
+:meth:`~analysis.algebra.symbol.LaurentSymbol.from_rules`. Nothing is typed in.
 
 References
 ----------
@@ -54,7 +54,7 @@ from __future__ import annotations
 import sympy as sp
 
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Rules
+from analysis.algebra.symbol import LaurentSymbol, Rules
 
 from .catalogue import SchemeEntry
 

@@ -31,7 +31,7 @@ import difflib
 
 import sympy as sp
 
-from analysis.levels import H, LevelDependentScheme
+from analysis.levels.level_dependent import H, LevelDependentScheme
 from analysis.result import AnalysisError
 
 #: the frequency / tension parameter

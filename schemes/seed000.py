@@ -9,7 +9,7 @@ Seed 000 writes the shape parameters ``lambda`` on the edges, ``eta(x) = 1/(2(1+
 (The abstract glosses ceil(x) as "the smallest integer larger than x"; with that reading tau_d is
 one larger for even d — again only an index shift.)
 
-The schemes are :class:`analysis.nonuniform.NVPS` objects with ``rule="seed000"`` (not catalogue
+The schemes are :class:`analysis.nonuniform.nvps.NVPS` objects with ``rule="seed000"`` (not catalogue
 ``SchemeEntry`` objects: the masks depend on level and location).
 
 Examples
@@ -88,7 +88,7 @@ def check(claim_id: str) -> Result:
 
 # ============================================================================================
 # The paper's claims (proof-check): PAPER = Paper(...), evaluated by `subdiv report 000`.
-# Verdicts come from the engine (analysis.nonuniform) and exact identities, never typed in.
+# Verdicts come from the engine (analysis.nonuniform.nvps) and exact identities, never typed in.
 # ============================================================================================
 
 import math  # noqa: E402
@@ -157,7 +157,7 @@ def _v_s_d():
                      result=C.exact_result(cmp_ok, "exact rational refinement")), ev_b]
     if r.status != "certified":
         return C.inconclusive("the relation of the two definitions is seen on an exact example but not proved "
-                              "symbolically", settle="a symbolic comparison (analysis.nonuniform.compare_definitions)",
+                              "symbolically", settle="a symbolic comparison (analysis.nonuniform.nvps.compare_definitions)",
                               evidence=ev)
     if cmp_ok and ok_b:
         return C.certified("True as a definition: (S_d f)_i is d - 2 pairwise averages of S_2 f (seed 001's (6)) "
@@ -268,6 +268,6 @@ PAPER = C.Paper(
     claims=PAPER_CLAIMS,
     source="shared/seeds/000_84b01bf47b0a175e.txt",
     notes=("The conference version of seed 001's NVPS, with shape parameters lambda (seed 001's u) on the edges. "
-           "The schemes are analysis.nonuniform.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
+           "The schemes are analysis.nonuniform.nvps.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
            "content is the definition (compared exactly with seed 001) and two informal claims."),
 )

@@ -1,7 +1,7 @@
 """Seed 001: M. Fang, B. Jeong, J. Yoon, *A non-uniform subdivision scheme with variable
 parameters for curve design* (preprint, 17 pp.) — the NVPS of degree d and its claims.
 
-The schemes are :class:`analysis.nonuniform.NVPS` objects (non-uniform: the mask depends on the
+The schemes are :class:`analysis.nonuniform.nvps.NVPS` objects (non-uniform: the mask depends on the
 level and the location through the edge parameters), so they are **not** catalogue
 ``SchemeEntry`` objects (those hold one Laurent symbol). Their limit masks are the uniform
 B-splines (catalogue ``bspline-d``, up to the shift ``z^{-d}`` vs the catalogue's centring).
@@ -45,7 +45,7 @@ def claim_rules() -> Result:
     ok = all(r.witness["one_step_equal_up_to_shift"] for r in rows.values())
     return Result(value={d: r.value for d, r in rows.items()}, status=CERTIFIED if ok else REFUTED,
                   witness={"per_degree": {d: r.to_json()["witness"] for d, r in rows.items()}},
-                  provenance={"method": "exact rational refinement (analysis.nonuniform.compare_definitions)"})
+                  provenance={"method": "exact rational refinement (analysis.nonuniform.nvps.compare_definitions)"})
 
 
 def claim_lemma_2_1() -> Result:
@@ -330,7 +330,7 @@ def _bspline_special_case(degrees=range(2, 8)):
                      "yes" if rows_ok else "NO", "yes" if cat_ok else "NO"))
     table = (("d", "mask (u = 1)", "support", "all locations equal", f"= catalogue bspline-d (shifted)"),) + tuple(rows)
     return ok, C.Evidence("u = 1: masks of the NVPS of degree d", table=table,
-                          result=C.exact_result(ok, "exact sympy masks (analysis.nonuniform.location_masks, "
+                          result=C.exact_result(ok, "exact sympy masks (analysis.nonuniform.nvps.location_masks, "
                                                     "arithmetic='exact') vs catalogue"),
                           latex=r"a(z)=z^{-d}\,(1+z)^{d+1}/2^{d}")
 
@@ -636,7 +636,7 @@ def _v_property_a_def():
                     rows.append((str(d), str(m), str(r_), f"{z0:+d}", res.value))
     const_ok = all(x[4] in ("identically zero", "nonzero at junctions") for x in rows)
     ev = [C.Evidence("d^(r)_m(+-1) of (14) for the NVPS (exact linear forms in delta_e = h_e - 1/4)",
-                     result=C.exact_result(const_ok, "analysis.nonuniform.property_a_structure"),
+                     result=C.exact_result(const_ok, "analysis.nonuniform.nvps.property_a_structure"),
                      table=(("d", "m", "r", "z0", "structure"),) + tuple(rows))]
     return C.inconclusive(
         "A definition quoted from Dyn-Levin-Yoon (2014); as extracted, (14) reads d_m(z) = sum_i (-1)^i binom(m,i) "
@@ -1009,7 +1009,7 @@ PAPER = C.Paper(
     claims=PAPER_CLAIMS,
     source="shared/seeds/001_6819d78b3590dec4.txt",
     notes=("The NVPS is non-uniform (masks depend on level and location through the edge parameters), so its "
-           "schemes are analysis.nonuniform.NVPS objects, not catalogue entries; its limit is the uniform B-spline "
+           "schemes are analysis.nonuniform.nvps.NVPS objects, not catalogue entries; its limit is the uniform B-spline "
            "of degree d. Convention: P^{k+1}_n = sum_i a^{k,n}_{n-2i} P^k_i; the degree-2 mask is "
            "{h, 1-h, 1-h, h}, h = 1/(2(1+u)), at exponents -2..1 ((11) writes it times z). The extraction flattened "
            "sub/superscripts; each claim keeps the printed text and says how it was read. Definition 3.1 is a "

@@ -34,7 +34,7 @@ from __future__ import annotations
 import sympy as sp
 
 from analysis.result import CERTIFIED, INCONCLUSIVE, Result
-from analysis.symbol import LaurentSymbol, Rules
+from analysis.algebra.symbol import LaurentSymbol, Rules
 
 from .catalogue import SchemeEntry
 
@@ -69,7 +69,7 @@ ENTRIES: tuple[SchemeEntry, ...] = (
 # the level-dependent forms (2), (3) and their normalizations (4), (5)
 # --------------------------------------------------------------------------------------------
 
-from analysis.levels import H, N, LevelDependentScheme  # noqa: E402
+from analysis.levels.level_dependent import H, N, LevelDependentScheme  # noqa: E402
 
 #: the angle parameter of the trigonometric/hyperbolic forms (positive)
 ALPHA = sp.Symbol("alpha", positive=True)
@@ -104,7 +104,7 @@ TRIGONOMETRIC = _form(BETA, "seed003-trigonometric", "trigonometric Chaikin pert
 HYPERBOLIC = _form(GAMMA, "seed003-hyperbolic", "hyperbolic Chaikin perturbation", 3)
 #: The stencil sums as the paper prints them (Section 4): beta^n = c(a/2^{n+2})/c(a/2^{n+1}),
 #: gamma^n = c'(a/2^{n+2})/c'(a/2^{n+1}). Proven equal to the sums of (2), (3) in
-#: ``tests/test_bounds.py`` (analysis.bounds.check_identity), so (4), (5) divide by them.
+#: ``tests/test_bounds.py`` (analysis.levels.bounds.check_identity), so (4), (5) divide by them.
 BETA_SUM = sp.cos(ALPHA / 2 ** (N + 2)) / sp.cos(ALPHA / 2 ** (N + 1))
 GAMMA_SUM = sp.cosh(ALPHA / 2 ** (N + 2)) / sp.cosh(ALPHA / 2 ** (N + 1))
 
@@ -245,7 +245,7 @@ def _diff_limit():
 def _c2_range():
     """Certified C^2 verdicts of rule (1) at grid points of (-1/20, 1/20) and certified boundaries
     (the ~25 s computation, shared by several claims): the interior between grid points is sampled."""
-    from analysis.regularity import ck_parameter_set
+    from analysis.regularity.holder import ck_parameter_set
 
     return ck_parameter_set(_stationary(), 2, within=(sp.Rational(-1, 20), sp.Rational(1, 20)), grid=10)
 
@@ -253,13 +253,13 @@ def _c2_range():
 @functools.lru_cache(maxsize=None)
 def _c2_interval():
     """C^2 proven on the whole open interval (0, 1/50) (exact norm sets + Arb norm boxes)."""
-    from analysis.ranges import verify_smoothness_interval
+    from analysis.regularity.ranges import verify_smoothness_interval
 
     return verify_smoothness_interval(_stationary(), 2, (0, _C2_PROVEN_HI))
 
 
 def _range_statement(star, right) -> str:
-    """What analysis.regularity.ck_parameter_set certifies, and no more."""
+    """What analysis.regularity.holder.ck_parameter_set certifies, and no more."""
     return (f"C^2 at every certified grid point of (0, omega*) and not C^2 at every grid point outside it "
             f"(in (-1/20, 1/20)); both boundaries 0 and omega* = {_s(star)} ≈ {_f(star, 12)} certified on both "
             f"sides within 1e-8 (omega* exact: {right['how']}); the interior between grid points is sampled, "
@@ -269,13 +269,13 @@ def _range_statement(star, right) -> str:
 def _interval_statement(r) -> str:
     if r.status == "certified" and r.value is True:
         return (f"C^2 is proven on the whole of (0, {_s(_C2_PROVEN_HI)}) ({r.witness.get('route')}; "
-                "analysis.ranges.verify_smoothness_interval)")
-    return f"C^2 on the whole of (0, {_s(_C2_PROVEN_HI)}): {r.status} (analysis.ranges.verify_smoothness_interval)"
+                "analysis.regularity.ranges.verify_smoothness_interval)")
+    return f"C^2 on the whole of (0, {_s(_C2_PROVEN_HI)}): {r.status} (analysis.regularity.ranges.verify_smoothness_interval)"
 
 
 @functools.lru_cache(maxsize=None)
 def _norm_sets():
-    from analysis.normset import norm_solution_set
+    from analysis.stationary.normset import norm_solution_set
 
     a = _stationary()
     return {L: norm_solution_set(a, m=3, L=L, within=(0, sp.oo)) for L in (1, 2, 3)}
@@ -287,7 +287,7 @@ def _only(result_dict, *keys):
 
 # -------------------------------------------------------------------------- Section 2
 def _sec2_omega0():
-    from analysis.regularity import holder_exponent, smoothness
+    from analysis.regularity.holder import holder_exponent, smoothness
     from schemes import get
 
     a0 = _stationary().subs({OMEGA: 0})
@@ -297,8 +297,8 @@ def _sec2_omega0():
     h = holder_exponent(a0)
     ev = [C.Evidence("rule (1) at omega = 0 vs the catalogue's Chaikin scheme", latex="a(z) = " + a0.latex(),
                      result=C.exact_result(same, "exact comparison of masks")),
-          C.Evidence("C^1 (analysis.regularity.smoothness)", result=c1, text=str(c1.witness.get("reason", ""))),
-          C.Evidence("C^2 (analysis.regularity.smoothness)", result=c2, text=str(c2.witness.get("reason", ""))),
+          C.Evidence("C^1 (analysis.regularity.holder.smoothness)", result=c1, text=str(c1.witness.get("reason", ""))),
+          C.Evidence("C^2 (analysis.regularity.holder.smoothness)", result=c2, text=str(c2.witness.get("reason", ""))),
           C.Evidence("Hölder exponent", result=h, text=f"alpha in [{_s(h.lower)}, {_s(h.upper)}]: C^1 with "
                      "Lipschitz derivative (the quadratic B-spline), not C^2")]
     nums = [C.Number("holder_lower", h.lower), C.Number("holder_upper", h.upper)]
@@ -313,7 +313,7 @@ def _alpha_figure(rng, claimed_hi, true_hi):
     rows = [(s["p"], s["alpha"][0], s["alpha"][1]) for s in rng.witness["samples"] if s.get("alpha")]
     # fixed extra points whose JSR certifies quickly (omega = 1/100 needs ~15 s: left out so that the
     # report does not depend on the machine's speed); only certified enclosures are shown
-    from analysis.regularity import holder_exponent
+    from analysis.regularity.holder import holder_exponent
 
     pts = [sp.Rational(k, 200) for k in (0, 1, 3, 4, 5, 6)]
     extra_rows = []
@@ -351,7 +351,7 @@ def _sec2_c2():
                                                     f"{_f(r.value.parts[0][1].expr) if r.value.parts else ''})" if r.value.parts else f"L = {L}: empty"
                                                     for L, r in sets.items())),
           C.Evidence("C^2 verdicts on a grid of (-1/20, 1/20) and certified boundaries "
-                     "(analysis.regularity.ck_parameter_set)", result=rng if rng.status == "certified" else None,
+                     "(analysis.regularity.holder.ck_parameter_set)", result=rng if rng.status == "certified" else None,
                      text=("" if rng.status == "certified" else f"[{rng.status} as a whole (the interior between "
                            "grid points is not proven), so not attached as evidence] ")
                           + f"{_range_statement(star, right)}; left end: {left['how']}; right end: "
@@ -359,7 +359,7 @@ def _sec2_c2():
                           f"(the s.m.p. eigenvalue crosses 1 exactly there)"),
           C.Evidence(f"C^2 on the whole interval (0, {_s(_C2_PROVEN_HI)})", result=whole,
                      text=_interval_statement(whole)),
-          C.Evidence(f"alpha(omega) at extra points (figure; analysis.regularity.holder_exponent, {extra.status})",
+          C.Evidence(f"alpha(omega) at extra points (figure; analysis.regularity.holder.holder_exponent, {extra.status})",
                      text="; ".join(f"{_s(r['p'])}: [{_f(r['lower'], 8)}, {_f(r['upper'], 8)}] ({r['status']})"
                                     for r in extra.value if r.get("lower") is not None))]
     nums = [C.Number("L2_right_end", hi.expr),
@@ -389,7 +389,7 @@ _XN = ALPHA / 2 ** N   # x = alpha/2^n: levels n >= 0 with alpha in [X/2, X] cov
 
 
 def _ineq(lhs, rhs, n0, box, strict, claim=""):
-    from analysis.bounds import check_inequality
+    from analysis.levels.bounds import check_inequality
 
     return check_inequality(lhs, rhs, n0, box, strict=strict, claim=claim)
 
@@ -419,7 +419,7 @@ def _ineq_trig(which: int):
     r3 = _cos_sinc()
     ok_d, ev_d = _sinc_derivative(sp.sin, "sin")
     ev = [C.Evidence("(3) cos x < sin x / x on (0, pi/2]: x = alpha/2^n, alpha in [pi/4, pi/2], all n >= 0",
-                     result=r3, text=f"analysis.bounds.check_inequality: {r3.status}"
+                     result=r3, text=f"analysis.levels.bounds.check_inequality: {r3.status}"
                                      f"{'; tail: ' + str(r3.witness.get('tail', {}).get('method')) if r3.witness.get('tail') else ''}")]
     nums = []
     if which != 3:
@@ -447,7 +447,7 @@ def _ineq_hyp(which: int):
     r6, ident = _cosh_sinhc()
     ok_d, ev_d = _sinc_derivative(sp.sinh, "sinh")
     ev = [C.Evidence("(6) on (0, 1]: x = alpha/2^n, alpha in [1/2, 1], all n >= 0", result=r6,
-                     text=f"analysis.bounds.check_inequality: {r6.status}"),
+                     text=f"analysis.levels.bounds.check_inequality: {r6.status}"),
           C.Evidence("(6) on [1, oo)", text="x cosh x >= cosh x > cosh x - e^(-x) = sinh x (exact identity "
                      "cosh x - sinh x = e^(-x))", result=C.exact_result(ident, "sympy simplification")),
           C.Evidence("the exclusion 'x in R+ \\ n'pi'", text="sinh has no zero on (0, oo): excluding the points "
@@ -469,11 +469,11 @@ def _ineq_hyp(which: int):
 
 # -------------------------------------------------------------------------- Lemma 3.1
 def _identity_item(lhs, rhs, text):
-    from analysis.bounds import check_identity
+    from analysis.levels.bounds import check_identity
 
     r = check_identity(lhs, rhs, claim=text)
     ev = [C.Evidence(text, latex=sp.latex(sp.sympify(lhs)) + " = " + sp.latex(sp.sympify(rhs)), result=r,
-                     text=f"analysis.bounds.check_identity: {r.status}"
+                     text=f"analysis.levels.bounds.check_identity: {r.status}"
                           + (f" (certified nonzero difference {r.witness['difference']} at {r.witness['point']})"
                              if r.status == "refuted" else ""))]
     if r.status == "certified":
@@ -539,7 +539,7 @@ _L32_X = {"ii": (3 * _XN ** 2 / (8 * sp.cos(_XN)), "C1 = 3 alpha^2/(8 cos alpha)
 
 
 def _lemma32(item: str):
-    from analysis.levels import leading_asymptotics
+    from analysis.levels.level_dependent import leading_asymptotics
 
     cid = f"003:Lemma3.2({item})"
     lhs, rhs, strict = LEMMA_3_2[cid]
@@ -556,7 +556,7 @@ def _lemma32(item: str):
                                       f"the lemma with {cname} for every 0 < alpha < pi/3 and n >= 0."),
           C.Evidence("direct check: alpha in [1/100, pi/3], all n >= 0", result=r_d,
                      text=f"{_s(lhs)} {'<' if strict else '<='} {_s(rhs)}: {r_d.status}"),
-          C.Evidence("exact asymptotics (analysis.levels.leading_asymptotics)", result=lead,
+          C.Evidence("exact asymptotics (analysis.levels.level_dependent.leading_asymptotics)", result=lead,
                      text=f"the h^2 coefficient of this mask entry is {_s(coeffs.get(lead_idx))}: 4^n x |difference| -> "
                           f"{_s(best)}, the smallest constant possible as n -> oo")]
     nums = [C.Number("asymptotic_constant_over_alpha2", sp.Rational(lead_num, 128))]
@@ -571,7 +571,7 @@ def _lemma32(item: str):
 
 # -------------------------------------------------------------------------- Lemma 3.3, Corollary 3.1
 def _factorization(form, coeffs, name):
-    from analysis.bounds import check_identity
+    from analysis.levels.bounds import check_identity
 
     e = lemma_3_3_e(coeffs)
     r = check_identity(form.symbol_expr(), (1 + _Z) / 2 * e, claim=name)
@@ -590,14 +590,14 @@ def _factorization(form, coeffs, name):
 
 
 def to_h_expr(e):
-    from analysis.levels import to_h
+    from analysis.levels.level_dependent import to_h
 
     return to_h(e)
 
 
 # -------------------------------------------------------------------------- Lemma 3.4
 def _lemma34_d():
-    from analysis.bounds import check_identity
+    from analysis.levels.bounds import check_identity
 
     e = _diff_limit()
     r = check_identity(LEMMA_3_4_D, e.expr())
@@ -622,10 +622,10 @@ def _lemma34_d():
 
 
 def _lemma34_c2():
-    from analysis.factorization import smoothing_factor, sum_rules
-    from analysis.normset import norm_solution_set
-    from analysis.regularity import smoothness
-    from analysis.symbol import LaurentSymbol
+    from analysis.algebra.factorization import smoothing_factor, sum_rules
+    from analysis.stationary.normset import norm_solution_set
+    from analysis.regularity.holder import smoothness
+    from analysis.algebra.symbol import LaurentSymbol
 
     e = _diff_limit()
     d = LaurentSymbol.from_mask([-c for c in e.mask], start=e.start, params=e.params)
@@ -675,7 +675,7 @@ def _omega_free(form) -> bool:
 
 
 def _theorem31_equivalence(form, name):
-    from analysis.series import weighted_series
+    from analysis.levels.series import weighted_series
 
     lim_ok = form.limit() == _stationary()
     r = weighted_series(form, {"alpha": (0, sp.pi / 3), "omega": sp.Rational(1, 100)}, 0)
@@ -695,14 +695,14 @@ def _theorem31_equivalence(form, name):
 
 
 def leading_of(form):
-    from analysis.levels import leading_asymptotics
+    from analysis.levels.level_dependent import leading_asymptotics
 
     return leading_asymptotics(form).value
 
 
 def _corrected_route(form):
     """C^2 of a level-dependent form via e^n = 2 a^n/(1+z): results over boxes and points."""
-    from analysis.series import smoothness
+    from analysis.levels.series import smoothness
 
     runs = [("alpha in [1/100, pi/3], omega = 1/100", {"alpha": _A_BOX, "omega": sp.Rational(1, 100)}),
             ("alpha = pi/5, omega in [1/1000, 18/1000]", {"alpha": sp.pi / 5, "omega": _OM_BOX}),
@@ -746,7 +746,7 @@ def _theorem31_c2(form, name):
 
 
 def _theorem31_proof():
-    from analysis.series import smoothness, weighted_series
+    from analysis.levels.series import smoothness, weighted_series
 
     b2lim = TRIGONOMETRIC.limit().coeff(-2)          # lim beta_2^n (coefficient of f_(i+1) in f_2i)
     printed_term_limit = sp.simplify(b2lim - sp.Rational(1, 2) - 3 * OMEGA)
@@ -794,7 +794,7 @@ def _theorem31_proof():
 
 # -------------------------------------------------------------------------- Section 4
 def _sum_identity(form, total, name):
-    from analysis.bounds import check_identity
+    from analysis.levels.bounds import check_identity
 
     r = check_identity(form.stencil_sum(), total)
     odd = sum(c for i, c in enumerate(form.mask) if (form.start + i) % 2)
@@ -811,8 +811,8 @@ def _sum_identity(form, total, name):
 
 
 def _normalized_constants():
-    from analysis.bounds import check_identity
-    from analysis.reproduction import reproduction
+    from analysis.levels.bounds import check_identity
+    from analysis.levels.reproduction import reproduction
 
     ev, ok = [], True
     for s in (TRIGONOMETRIC_NORMALIZED, HYPERBOLIC_NORMALIZED):
@@ -833,7 +833,7 @@ def _normalized_constants():
 
 
 def _normalized_convergence():
-    from analysis.series import smoothness
+    from analysis.levels.series import smoothness
 
     ev, ok, pts = [], True, []
     for s in (TRIGONOMETRIC_NORMALIZED, HYPERBOLIC_NORMALIZED):
@@ -871,7 +871,7 @@ def _levels_apply(masks_starts, f0_lo, f0):
 
 
 def _blf(form, vals, levels=7):
-    from analysis.reproduction import mask_floats
+    from analysis.levels.reproduction import mask_floats
 
     masks = [(mask_floats(form, n, vals), form.start) for n in range(levels)]
     lo, f = _levels_apply(masks, 0, [1.0])
@@ -881,7 +881,7 @@ def _blf(form, vals, levels=7):
 
 
 def _eq7():
-    from analysis.levels import ball
+    from analysis.levels.level_dependent import ball
 
     f10 = TRIGONOMETRIC.mask_at(0, _VALS)[list(range(TRIGONOMETRIC.start, TRIGONOMETRIC.end + 1)).index(0)]
     b = ball(f10 - 1)
@@ -905,14 +905,14 @@ def _eq7():
 
 
 def _theorem51():
-    from analysis.bounds import check_identity
-    from analysis.levels import ball
+    from analysis.levels.bounds import check_identity
+    from analysis.levels.level_dependent import ball
 
     m = TRIGONOMETRIC.mask
     sym_rs = [check_identity(m[i], m[len(m) - 1 - i]) for i in range(len(m) // 2)]
     sym_ok = all(r.status == "certified" for r in sym_rs)
     sym_res = (Result(value=True, status=CERTIFIED, witness={"pairs": len(sym_rs)},
-                      provenance={"method": "analysis.bounds.check_identity on every pair a_i, a_(-1-i)",
+                      provenance={"method": "analysis.levels.bounds.check_identity on every pair a_i, a_(-1-i)",
                                   "arithmetic": "exact"}) if sym_ok else
                next(r for r in sym_rs if r.status != "certified"))
     centre = sp.Rational(TRIGONOMETRIC.start + TRIGONOMETRIC.end, 2)
@@ -976,7 +976,7 @@ _CMP_ALPHA = {"circle": sp.pi / 5, "ellipse": sp.pi / 5, "cardioid": sp.pi / 5, 
 
 @functools.lru_cache(maxsize=None)
 def _deviation_table(curve: str):
-    from analysis.reproduction import curve_deviation
+    from analysis.levels.reproduction import curve_deviation
 
     out = {}
     for name, s in _CMP:
@@ -1011,7 +1011,7 @@ def _cmp_figure(curves, name, title):
 
 def _curves_figure(curve):
     import numpy as np
-    from analysis.reproduction import _curve, refine_closed
+    from analysis.levels.reproduction import _curve, refine_closed
 
     f = _curve(curve)
     t0 = 2 * np.pi * np.arange(10) / 10
@@ -1045,7 +1045,7 @@ def _winners(wins) -> str:
 
 
 def _sec6_conics():
-    from analysis.reproduction import generation
+    from analysis.levels.reproduction import generation
 
     curves = ("circle", "ellipse")
     gens = {(n, _s(om)): generation(s, [sp.I * ALPHA, -sp.I * ALPHA], {"omega": om} if s is not JENA_11 else None)
@@ -1292,7 +1292,7 @@ PAPER = C.Paper(
     notes=("Not checked: Definitions 1.1-1.3 and Theorem 1.1 are quoted results (Daniel-Shunmugaraj; Dyn-Levin 1995); "
            "the claims model has no 'cited theorem' kind, so they are not entered as claims. Definition 1.1's rule and "
            "Definition 1.3's norm are exactly our conventions ((S_a f)_i = sum_j a_{i-2j} f_j, ||S_a|| = max over the "
-           "two residues), and Theorem 1.1 is the theorem analysis.series.smoothness applies (its hypotheses are "
+           "two residues), and Theorem 1.1 is the theorem analysis.levels.series.smoothness applies (its hypotheses are "
            "checked there). Statements are quoted from the extracted LaTeX. Notation: beta_i^n, gamma_i^n are the "
            "coefficients of (2), (3); a = rule (1); e^n = 2 d^n/(1+z) (Lemma 3.3); omega* ≈ 0.0214640075 is the certified "
            "right boundary of the C^2 grid verdicts of rule (1) near 0 (see claim 003:Sec2(C2) for what is proven "

@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from analysis.symbol import LaurentSymbol, Rules
+from analysis.algebra.symbol import LaurentSymbol, Rules
 
 from .catalogue import SchemeEntry
 
@@ -177,8 +177,8 @@ ENTRIES: tuple[SchemeEntry, ...] = (
 import functools  # noqa: E402
 
 from analysis import claims as C  # noqa: E402
-from analysis.algebraic import sign as _sign  # noqa: E402
-from analysis.derivation import (LinearForm, displacement_construction, end_rules,  # noqa: E402
+from analysis.algebra.algebraic import sign as _sign  # noqa: E402
+from analysis.algebra.linear_forms import (LinearForm, displacement_construction, end_rules,  # noqa: E402
                                  read_garbled_linear)
 from analysis.result import CERTIFIED as _CERT  # noqa: E402
 
@@ -193,7 +193,7 @@ def _form(stencil, first) -> LinearForm:
 
 @functools.lru_cache(maxsize=None)
 def construction() -> dict:
-    """Steps 1-4 of Sect. 3, symbolically (``analysis.derivation``): every intermediate form."""
+    """Steps 1-4 of Sect. 3, symbolically (``analysis.algebra.linear_forms``): every intermediate form."""
     Qe, Qo = _form(RULE_3_1.even, -1), _form(RULE_3_1.odd, -1)
     Re, Ro = _form(RULE_3_2.even, -1), _form(RULE_3_2.odd, -1)
     return displacement_construction(Qe, Qo, Re, Ro, {-1: MU, 0: NU, 1: OMEGA},
@@ -222,7 +222,7 @@ def _forms_table(rows):
 
 # -------------------------------------------------------------------------- (2.2)-(2.3) sum rules
 def _sum_rules():
-    from analysis.factorization import sum_rules
+    from analysis.algebra.factorization import sum_rules
     ev, nums, ok = [], [], True
     for slug in ("seed004-design-control", "seed004-t-nu", "seed004-l-mu"):
         r = sum_rules(_sym(slug))
@@ -273,7 +273,7 @@ def _displacements(printed: dict, what: str):
         agree = reading == derived
         ok &= agree
         rows.append((name, garbled, _s(reading.to_expr()), _s(derived.to_expr()), "yes" if agree else "NO"))
-    res = C.exact_result(ok, "sympy linear forms: D = Q - R and index shifts (analysis.derivation)")
+    res = C.exact_result(ok, "sympy linear forms: D = Q - R and index shifts (analysis.algebra.linear_forms)")
     ev = [C.Evidence(f"{what}: derived from (3.1)-(3.2) vs printed", result=res, table=_forms_table(rows)),
           C.Evidence("D_{2i} derived", latex=r"D_{2i}^{k+1} = " + built["D_{2i}"].latex())]
     if ok:
@@ -305,7 +305,7 @@ def _rule_3_6():
     ok = True
     ok &= (E == printed_even) and (O == printed_odd)
     sym = _from(RULE_3_6)
-    res = C.exact_result(ok, "Steps 1-4 in sympy (analysis.derivation.displacement_construction)",
+    res = C.exact_result(ok, "Steps 1-4 in sympy (analysis.algebra.linear_forms.displacement_construction)",
                          P_even=E, P_odd=O)
     ev = [C.Evidence("Step 3-4: P_{2i} = Q_{2i} - DE, DE = mu D_{2i-2} + nu D_{2i} + omega D_{2i+2}",
                      latex=r"P_{2i}^{k+1} = " + E.latex(), result=res),
@@ -348,7 +348,7 @@ def _matrix_rows_printed():
 
 
 def _matrix_3_6():
-    from analysis.transition import local_subdivision_matrix
+    from analysis.stationary.transition import local_subdivision_matrix
     a = _from(RULE_3_6)
     M, win = local_subdivision_matrix(a, window=(-4, 5))
     coeff = {lab: A_3_6[lab] for lab in A_3_6}
@@ -451,7 +451,7 @@ def _parents():
 
 
 def _symmetry():
-    from analysis.factorization import symmetry
+    from analysis.algebra.factorization import symmetry
     ev, ok = [], True
     for slug in ("seed004-design-control", "seed004-t-nu", "seed004-l-mu"):
         r = symmetry(_sym(slug))
@@ -503,7 +503,7 @@ _END_STATEMENT = {
 
 @functools.lru_cache(maxsize=None)
 def derived_end_rules() -> dict:
-    """(3.9)-(3.10) substituted into (3.6): the ten boundary rules (``analysis.derivation``)."""
+    """(3.9)-(3.10) substituted into (3.6): the ten boundary rules (``analysis.algebra.linear_forms``)."""
     b = construction()
     return end_rules(b["P_{2i}"], b["P_{2i+1}"])
 
@@ -515,7 +515,7 @@ def _engine_end_points():
     import numpy as np
     from fractions import Fraction
 
-    from analysis.scheme import refine
+    from analysis.stationary.refinement import refine
     vals = {MU: sp.Rational(1, 10), NU: sp.Rational(6, 5), OMEGA: sp.Rational(1, 10)}
     data = [Fraction(v) for v in (3, -1, 4, 1, -5, 9, 2, -6, 5, 3, 5, 8)]
     out = refine(_from(RULE_3_6).subs(vals), np.array(data, dtype=object), 1, closed=False,
@@ -566,7 +566,7 @@ def _end_rule(label: str):
                                data[(0 if not label.startswith("P2n") else n) + q].denominator) * c
                    for q, c in f.items()), sp.Integer(0))
         eng = sp.Rational(pts[k].numerator, pts[k].denominator)
-        ev.append(C.Evidence("engine cross-check (analysis.scheme.refine, end_rule='extrapolate')",
+        ev.append(C.Evidence("engine cross-check (analysis.stationary.refinement.refine, end_rule='extrapolate')",
                              text=f"at (mu, nu, omega) = (1/10, 6/5, 1/10) on 12 rational points: derived "
                                   f"rule gives {_s(val)}, the engine's point {k} is {_s(eng)}: "
                                   f"{'equal' if val == eng else 'DIFFERENT'}",
@@ -579,7 +579,7 @@ def _end_rule(label: str):
     nums = [C.Number("derived_sum_of_coefficients", derived.total())]
     if not ok_engine:
         return C.inconclusive("the derivation and the engine's refinement disagree",
-                              settle="find the bug in analysis.derivation or analysis.scheme",
+                              settle="find the bug in analysis.algebra.linear_forms or analysis.stationary.refinement",
                               evidence=ev, numbers=nums)
     if ok:
         return C.certified("The printed rule is the derived one after restoring the lost minus signs.",
@@ -596,7 +596,7 @@ def _end_rule(label: str):
 
 # -------------------------------------------------------------------------- support (Sect. 4)
 def _lemma_steps(L: int):
-    from analysis.difference import iterated_symbol
+    from analysis.stationary.difference import iterated_symbol
     a = _from(RULE_3_6)
     it = iterated_symbol(a, L)
     s, e = it.start, it.end
@@ -620,7 +620,7 @@ def _lemma_steps(L: int):
 
 
 def _blf_figure(name, title, symbols_labels, level=7):
-    from analysis.scheme import basic_limit_function
+    from analysis.stationary.refinement import basic_limit_function
     series = []
     for lab, sym in symbols_labels:
         x, v = basic_limit_function(sym, level, centre=True)
@@ -629,7 +629,7 @@ def _blf_figure(name, title, symbols_labels, level=7):
 
 
 def _support(slug: str, width_claim: int, name: str, fig_params):
-    from analysis.transition import basic_limit_support
+    from analysis.stationary.transition import basic_limit_support
     a = _sym(slug)
     r = basic_limit_support(a)
     w = r.witness["width"]
@@ -652,7 +652,7 @@ def _support(slug: str, width_claim: int, name: str, fig_params):
 
 # -------------------------------------------------------------------------- eigenvalues (Sect. 5)
 def _eigen_t():
-    from analysis.transition import local_eigenvalues
+    from analysis.stationary.transition import local_eigenvalues
     r = local_eigenvalues(_sym("seed004-t-nu"))
     printed = [sp.Integer(1), sp.Rational(1, 2), sp.Rational(1, 4), sp.Rational(1, 8), sp.Rational(1, 16),
                sp.Rational(9, 64) - 7 * NU / 64]
@@ -713,13 +713,13 @@ def _thm51_necessary():
 
 
 def _norm_sets(slug, m, Ls, param):
-    from analysis.normset import norm_solution_set
+    from analysis.stationary.normset import norm_solution_set
     return {L: norm_solution_set(_sym(slug), m=m, L=L) for L in Ls}
 
 
 def _norm_figure(name, title, slug, ms, L, param, xr, claimed, extra_bands=()):
     import numpy as np
-    from analysis.normset import norm_function
+    from analysis.stationary.normset import norm_function
     p = {"nu": NU, "mu": MU}[param]
     xs = np.linspace(xr[0], xr[1], 801)
     series = []
@@ -750,7 +750,7 @@ def _true_ck(slug, j, within, grid):
     key = (slug, j, within, grid)
     if key in _TRUE_CACHE:
         return _TRUE_CACHE[key]
-    from analysis.regularity import ck_parameter_set
+    from analysis.regularity.holder import ck_parameter_set
     r = ck_parameter_set(_sym(slug), j, within=within, grid=grid)
     parts, nums = [], []
     for k, run in enumerate(r.value):
@@ -779,7 +779,7 @@ def _true_ck(slug, j, within, grid):
 
 def _thm52(m: int):
     claimed = (sp.Rational(5, 7), sp.Rational(13, 7))
-    from analysis.difference import difference_symbol
+    from analysis.stationary.difference import difference_symbol
     sets = _norm_sets("seed004-t-nu", m, (1, 2, 3), "nu")
     s1 = sets[1].value
     ok = C.contains_interval(s1, *claimed)
@@ -882,7 +882,7 @@ def inequality_sets() -> dict:
 
 
 def _eigen_l():
-    from analysis.transition import local_eigenvalues
+    from analysis.stationary.transition import local_eigenvalues
     r = local_eigenvalues(_sym("seed004-l-mu"))
     eng = [lam for lam, m in r.value.items() for _ in range(m)]
     printed_count = 11
@@ -902,10 +902,10 @@ def _eigen_l():
 def _printed_interval_check(key: str, readings: dict, note: str):
     s = inequality_sets()[key]
     r = C.exact_result(s, "exact sign decisions at rationals and algebraic critical points "
-                          "(analysis.claims.exact_set)")
+                          "(analysis.claims.model.exact_set)")
     verdicts = {}
     for name, parts in readings.items():
-        from analysis.algebraic import IntervalSet, RealAlgebraic as RA
+        from analysis.algebra.algebraic import IntervalSet, RealAlgebraic as RA
         iset = IntervalSet([(None if lo is None else RA.from_expr(lo), None if hi is None else RA.from_expr(hi),
                              False, False) for lo, hi in parts])
         verdicts[name] = (str(iset) == str(s)) or (all(C.contains_interval(s, lo if lo is not None else -10**6,
@@ -1029,9 +1029,9 @@ def _thm54():
 
 # -------------------------------------------------------------------------- C^6 (Sect. 7), tables
 def _c6():
-    from analysis.difference import difference_norm
-    from analysis.factorization import factor_out, smoothing_factor
-    from analysis.transition import transition_matrices
+    from analysis.stationary.difference import difference_norm
+    from analysis.algebra.factorization import factor_out, smoothing_factor
+    from analysis.stationary.transition import transition_matrices
     a = _from(RULE_3_6)
     f = smoothing_factor(a)
 
@@ -1095,7 +1095,7 @@ def zeta_conditions(a: LaurentSymbol, k: int) -> dict:
     """``zeta_l^[k](i)`` of Amat-Ruiz-Trillo for the k-step mask ``a(z) a(z^2) ... a(z^(2^(k-1)))``:
     ``sum_{tau <= i} a^[k]_{2^k tau + l}`` for ``i < 0``, ``sum_{tau >= i}`` for ``i > 0``
     (``0 <= l < 2^k``). Returns ``{(l, i): expression}`` for the ``i`` where it can be nonzero."""
-    from analysis.difference import iterated_symbol
+    from analysis.stationary.difference import iterated_symbol
     ak = iterated_symbol(a, k) if k > 1 else a
     M = 2 ** k
     out = {}
@@ -1126,7 +1126,7 @@ def _zeta_set(a: LaurentSymbol, k: int, p):
 
 def _gibbs_figure():
     import numpy as np
-    from analysis.scheme import refine
+    from analysis.stationary.refinement import refine
     xs = np.linspace(0, 1, 11)
     ys = np.where(xs <= 0.5, np.sin(np.pi * xs), -np.sin(np.pi * xs))
     pts = np.stack([xs, ys], axis=1)

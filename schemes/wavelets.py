@@ -14,7 +14,7 @@ The masks are **computed**, never typed in: the roots of the spectral polynomial
 by Arb (python-flint) with certified error balls, the roots outside the unit circle are kept
 (Daubechies' extremal-phase choice, ``a_0`` the first coefficient, exactly as in her tables),
 and the coefficients come out as real :class:`flint.arb` balls that are guaranteed to contain
-the true coefficients. Only D4 has an exact :class:`~analysis.symbol.LaurentSymbol` here (over
+the true coefficients. Only D4 has an exact :class:`~analysis.algebra.symbol.LaurentSymbol` here (over
 ``QQ(sqrt 3)``); the others are catalogued as :class:`~schemes.catalogue.NumericSchemeEntry`.
 
 Examples
@@ -72,7 +72,7 @@ import mpmath
 import sympy as sp
 
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Z
+from analysis.algebra.symbol import LaurentSymbol, Z
 
 from .catalogue import NumericSchemeEntry
 

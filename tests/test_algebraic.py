@@ -4,7 +4,7 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
 
-from analysis.algebraic import IntervalSet, RealAlgebraic, enclose, sign, _q
+from analysis.algebra.algebraic import IntervalSet, RealAlgebraic, enclose, sign, _q
 
 x = sp.Symbol("x")
 

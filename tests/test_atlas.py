@@ -1,4 +1,4 @@
-"""Tests of analysis.atlas (two-parameter Hölder atlases) and the `subdiv atlas` command.
+"""Tests of analysis.regularity.atlas (two-parameter Hölder atlases) and the `subdiv atlas` command.
 
 The family ``a(z) = (1+z)^2/(2z) (1 + s (z - 2 + 1/z) + t (z^2 - 2 + z^-2))`` passes through the
 linear (s = t = 0, alpha = 1), cubic (s = 1/4, t = 0) and quintic (s = 1/4, t = 1/16) B-splines;
@@ -13,10 +13,10 @@ import json
 import pytest
 import sympy as sp
 
-from analysis.atlas import _disagree, evaluate_point, holder_atlas, parse_axis, plot_atlas
+from analysis.regularity.atlas import _disagree, evaluate_point, holder_atlas, parse_axis, plot_atlas
 from analysis.cli import main
 from analysis.result import CERTIFIED, AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 
 Z, S, T = sp.symbols("z s t")
 FAMILY = LaurentSymbol.from_expr((1 + Z)**2 / (2 * Z) * (1 + S * (Z - 2 + 1 / Z) + T * (Z**2 - 2 + Z**-2)))
@@ -160,7 +160,7 @@ def test_parse_axis():
 # ------------------------------------------------------------------------------- CLI
 
 def _run(capsys, *argv):
-    code = main(list(argv), extra_modules=["analysis.cli_atlas"])
+    code = main(list(argv), extra_modules=["analysis.cli.atlas"])
     out, err = capsys.readouterr()
     return code, out, err
 

@@ -1,12 +1,12 @@
-"""Tests of analysis.bounds on seed 003's lemmas and identities (verdicts computed, not typed in)."""
+"""Tests of analysis.levels.bounds on seed 003's lemmas and identities (verdicts computed, not typed in)."""
 
 from __future__ import annotations
 
 import pytest
 import sympy as sp
 
-from analysis.bounds import check_identity, check_inequality
-from analysis.levels import N
+from analysis.levels.bounds import check_identity, check_inequality
+from analysis.levels.level_dependent import N
 from schemes import seed003 as S
 
 BOX = {"alpha": ("1/100", "pi/3"), "omega": "1/100"}

@@ -15,7 +15,7 @@ import sympy as sp
 
 import schemes
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Rules
+from analysis.algebra.symbol import LaurentSymbol, Rules
 from schemes import classic, seed003, seed004
 from schemes.catalogue import SchemeEntry
 

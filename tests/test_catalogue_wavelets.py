@@ -13,9 +13,9 @@ import pytest
 import sympy as sp
 
 import schemes
-from analysis.factorization import smoothing_factor
+from analysis.algebra.factorization import smoothing_factor
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 from schemes import seed004
 from schemes.catalogue import NumericSchemeEntry
 from schemes.interpolatory import (dual_lagrange_rules, dual_lagrange_symbol,

@@ -172,7 +172,7 @@ def test_inequality_5_7_against_float_eigenvalues():
 
 
 def test_c6_claim_is_refuted_by_a_c7_member():
-    from analysis.difference import difference_norm
+    from analysis.stationary.difference import difference_norm
     a = seed004.get_entry("seed004-design-control").symbol_at(mu="-1/56", nu="29/28", omega="-1/56")
     assert difference_norm(a, 8, 1).value < 1            # C^7 by Dyn-Levin
     v = _verdict("004:Sec7(C6)")
@@ -180,7 +180,7 @@ def test_c6_claim_is_refuted_by_a_c7_member():
 
 
 def test_theorem_5_3_eigenvalue_list_is_refuted_for_the_double_one_over_64():
-    from analysis.transition import local_eigenvalues
+    from analysis.stationary.transition import local_eigenvalues
     r = local_eigenvalues(seed004.get_entry("seed004-l-mu").symbol)
     assert r.value[sp.Rational(1, 64)] == 1 and sum(r.value.values()) == 10
     assert _verdict("004:Theorem5.3(eigenvalues)").status == REFUTED

@@ -9,7 +9,7 @@ from pathlib import Path
 import pytest
 import sympy as sp
 
-from analysis.claims import compare_verdicts, evaluate_claim, verdicts_json
+from analysis.claims.model import compare_verdicts, evaluate_claim, verdicts_json
 from schemes import seed003 as S
 
 PAPER = S.PAPER
@@ -55,7 +55,7 @@ def test_matches_golden_file(evaluated):
 
 def test_l2_norm_set_is_exactly_the_printed_interval(evaluated):
     """Independent: ||(1/2 S_(a_3))^2|| at the printed endpoint is exactly 1, and < 1 just inside."""
-    from analysis.difference import difference_norm
+    from analysis.stationary.difference import difference_norm
 
     a = S._stationary()
     end = (sp.sqrt(6) - 1) / 80
@@ -209,7 +209,7 @@ def test_comparisons_recomputed_independently(evaluated, cid, curve):
 
 
 def test_jena_scheme_reconstruction_reproduces_circles():
-    from analysis.reproduction import generation
+    from analysis.levels.reproduction import generation
 
     assert generation(S.JENA_11, [sp.I * S.ALPHA, -sp.I * S.ALPHA]).status == "certified"
     import schemes

@@ -4,7 +4,7 @@ Each command runs as ``python -m analysis ...`` so that output written by compil
 the file-descriptor level (HiGHS prints its banner to the C stdout) is caught too. The inputs
 exercise the solver paths: the warm-started HiGHS LP (real invariant polytope), Clarabel's SOCP
 (complex invariant polytope), Arb ball arithmetic (Daubechies D6), local worker processes and a
-Dask cluster. The second half tests the guard of :func:`analysis.cli.main` itself: whatever a
+Dask cluster. The second half tests the guard of :func:`analysis.cli.main.main` itself: whatever a
 library prints (Python ``print``, ``os.write(1, ...)``, C ``puts``) goes to stderr, in a
 subprocess and under pytest's ``capsys``/``capfd``, and ``subdiv ... | head`` stays quiet.
 """
@@ -109,7 +109,7 @@ def test_every_command_is_covered():
     """The table above (with `report` below) has a case for every command and `nonuniform` sub-command."""
     import argparse
 
-    from analysis.cli import build_parser
+    from analysis.cli.main import build_parser
 
     def commands(parser, prefix=()):
         out = set()
@@ -177,7 +177,7 @@ NOISY = textwrap.dedent('''
         sys.stdout.flush()
         os.write(1, b"fd1-write-from-library\\n")
         ctypes.CDLL(None).puts(b"c-puts-from-library")      # C stdio, buffered
-        from analysis.cli import _emit
+        from analysis.cli.main import _emit
         _emit(args, {"ok": True}, "own text output")
 
 
@@ -198,7 +198,7 @@ def noisy(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("json_mode", [True, False])
 def test_library_output_never_reaches_stdout(noisy, json_mode):
-    code = ("import sys\nfrom analysis.cli import main\n"
+    code = ("import sys\nfrom analysis.cli.main import main\n"
             "sys.exit(main(sys.argv[1:], extra_modules=['noisy_cmd']))")
     p = subprocess.run([sys.executable, "-c", code, "noisy", *(["--json"] if json_mode else [])],
                        capture_output=True, text=True, cwd=noisy, timeout=120,

@@ -118,18 +118,18 @@ BAD = "/nonexistent/dir/x.png"
 
 @pytest.mark.parametrize("argv, module, name", [
     (["range", "--scheme", "four-point", "--C", "1", "--within=-1/8,1/4", "--figure", BAD],
-     "analysis.regularity", "ck_parameter_set"),
+     "analysis.regularity.holder", "ck_parameter_set"),
     (["atlas", "--scheme", "seed004-design-control", "--param", "omega=0", "--x", "mu=0:1/5:3", "--y", "nu=0:2:3",
-      "--figure", BAD], "analysis.atlas", "holder_atlas"),
+      "--figure", BAD], "analysis.regularity.atlas", "holder_atlas"),
     (["refine", "--scheme", "chaikin", "--points", "0,0;1,0;1,1", "--output", "/nonexistent/x.csv"],
-     "analysis.scheme", "refine"),
+     "analysis.stationary.refinement", "refine"),
     (["nonuniform", "refine", "--points", "0,0;1,0;1,1", "--u", "1", "--output", "/nonexistent/x.csv"],
-     "analysis.nonuniform", "refine"),
-    (["nonuniform", "reproduce", "--figure", BAD], "analysis.nonuniform", "reproduce"),
-    (["nonuniform", "chamfer", "--figure", BAD], "analysis.nonuniform", "chamfer_example"),
+     "analysis.nonuniform.nvps", "refine"),
+    (["nonuniform", "reproduce", "--figure", BAD], "analysis.nonuniform.nvps", "reproduce"),
+    (["nonuniform", "chamfer", "--figure", BAD], "analysis.nonuniform.nvps", "chamfer_example"),
     (["reproduce", "--scheme", "exp-chaikin-trig", "--lambdas", "I*t,-I*t", "--param", "t=1", "--plot", BAD],
-     "analysis.reproduction", "generation"),
-    (["report", "000", "--output", "/nonexistent/dir"], "analysis.cli_report", "evaluate_paper"),
+     "analysis.levels.reproduction", "generation"),
+    (["report", "000", "--output", "/nonexistent/dir"], "analysis.cli.report", "evaluate_paper"),
 ], ids=["range", "atlas", "refine", "nonuniform-refine", "nonuniform-reproduce", "nonuniform-chamfer",
         "reproduce", "report"])
 def test_unwritable_output_fails_before_computing(capsys, monkeypatch, argv, module, name):
@@ -140,7 +140,7 @@ def test_unwritable_output_fails_before_computing(capsys, monkeypatch, argv, mod
 
 
 def test_output_path_that_is_a_directory_is_refused(capsys, monkeypatch, tmp_path):
-    _forbid(monkeypatch, "analysis.regularity", "ck_parameter_set")
+    _forbid(monkeypatch, "analysis.regularity.holder", "ck_parameter_set")
     code, out, err = call(capsys, "range", "--scheme", "four-point", "--C", "1", "--within=0,1/4",
                           "--figure", str(tmp_path))
     one_line_error(code, err, "it is a directory")

@@ -1,7 +1,7 @@
 """Certified Hölder exponents of Daubechies' scaling functions from ball-valued masks.
 
 The masks D6 ... D54 are known only by certified Arb enclosures (``schemes.wavelets``); the
-exponents come from :func:`analysis.regularity.holder_exponent_enclosure` (JSR bounds valid for
+exponents come from :func:`analysis.regularity.holder.holder_exponent_enclosure` (JSR bounds valid for
 every mask in the balls). They are compared with the published values in
 ``tests/data/daubechies_holder.csv`` to the published digits, and for D4 with the closed form
 ``2 - log2(1 + sqrt 3)`` (Daubechies–Lagarias 1992).
@@ -20,7 +20,7 @@ import sympy as sp
 
 import schemes
 from analysis.jsr import jsr_bounds
-from analysis.regularity import (ball_divide_by_one_plus_z, ball_transition_matrices,
+from analysis.regularity.holder import (ball_divide_by_one_plus_z, ball_transition_matrices,
                                  holder_exponent, holder_exponent_enclosure)
 
 DATA = Path(__file__).parent / "data" / "daubechies_holder.csv"

@@ -1,4 +1,4 @@
-"""analysis.derivation: linear forms, ghost points, garbled readings (exact identities)."""
+"""analysis.algebra.linear_forms: linear forms, ghost points, garbled readings (exact identities)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import pytest
 import sympy as sp
 from hypothesis import given, strategies as st
 
-from analysis.derivation import (LinearForm, N_SYM, displacement_construction, end_rules,
+from analysis.algebra.linear_forms import (LinearForm, N_SYM, displacement_construction, end_rules,
                                  ghost_substitute, read_garbled_linear)
 
 mu, nu = sp.symbols("mu nu")

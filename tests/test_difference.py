@@ -4,9 +4,9 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
 
-from analysis.difference import difference_norm, difference_symbol, iterated_symbol, scheme_norm
+from analysis.stationary.difference import difference_norm, difference_symbol, iterated_symbol, scheme_norm
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 
 Q = sp.Rational
 w = sp.Symbol("omega")

@@ -4,10 +4,10 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
 
-from analysis.factorization import (factor_out, polynomial_generation, polynomial_reproduction,
+from analysis.algebra.factorization import (factor_out, polynomial_generation, polynomial_reproduction,
                                     smoothing_factor, sum_rules, symmetry)
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Z
+from analysis.algebra.symbol import LaurentSymbol, Z
 
 w = sp.Symbol("omega")
 Q = sp.Rational

@@ -15,10 +15,10 @@ import pytest
 import sympy as sp
 
 from analysis.cli import main
-from analysis.closed_form import ClosedFormMask, is_zero
-from analysis.regularity import NotConvergent, difference_mask, holder_exponent, smoothness
+from analysis.algebra.closed_form import ClosedFormMask, is_zero
+from analysis.regularity.holder import NotConvergent, difference_mask, holder_exponent, smoothness
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 from schemes.wavelets import daubechies_enclosure
 
 
@@ -145,7 +145,7 @@ def test_closed_form_branch_cut_and_conjugate_rewrites():
     """The zero test's building blocks: a base exactly on the branch cut written with I, Cardano's
     cube root in the casus irreducibilis (conj(C) = rho / C, proven), conjugate CRootOf pairs, and
     the root-separation fallback with its (tightened) degree bound."""
-    from analysis.closed_form import _Algebra, _ir, _sub, degree_bound
+    from analysis.algebra.closed_form import _Algebra, _ir, _sub, degree_bound
 
     cut = sp.sqrt(sp.Mul(1 + sp.I, sp.I - 1, evaluate=False))          # sqrt(-2) = I sqrt(2)
     assert is_zero(cut - sp.I * sp.sqrt(2)) and not is_zero(cut + sp.I * sp.sqrt(2))
@@ -189,7 +189,7 @@ def test_masks_copied_from_tables(capsys):
     lo, hi = _interval(alpha)
     assert lo <= ref[1] and ref[0] <= hi and abs(float(lo) - 1.6179263111) < 1e-9
     # the witness mask: exact, in the balls, with a(1) = 2 and (1+z)^N | a
-    from analysis.approx import approximate_reading, typed_radius
+    from analysis.algebra.approx import approximate_reading, typed_radius
 
     r = approximate_reading(mask.split(","))
     N, w = r.witness["sum_rules"], r.witness["witness_mask"]

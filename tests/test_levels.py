@@ -1,4 +1,4 @@
-"""Tests of analysis.levels: limits, exact asymptotics, cancellation-safe norms, Taylor models."""
+"""Tests of analysis.levels.level_dependent: limits, exact asymptotics, cancellation-safe norms, Taylor models."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 import pytest
 import sympy as sp
 
-from analysis.levels import (H, LevelDependentScheme, distance, leading_asymptotics, taylor_models,
+from analysis.levels.level_dependent import (H, LevelDependentScheme, distance, leading_asymptotics, taylor_models,
                              to_h, workprec)
 from analysis.result import AnalysisError
 from schemes import seed003

@@ -13,7 +13,7 @@ from analysis import nonuniform as nu
 from analysis.cli import main
 from analysis.result import AnalysisError
 
-X = ["analysis.cli_nonuniform"]
+X = ["analysis.cli.nonuniform"]
 
 
 # --------------------------------------------------------------------------------------------
@@ -91,7 +91,7 @@ def test_refine_matches_direct_closed_seed000(d):
 @pytest.mark.parametrize("d", [2, 3, 4, 5], ids=lambda d: f"d{d}")
 @pytest.mark.parametrize("closed", [False, True], ids=["open", "closed"])
 def test_u_equal_one_is_uniform_bspline(d, closed):
-    from analysis.scheme import refine as refine_stationary
+    from analysis.stationary.refinement import refine as refine_stationary
     from schemes import get
 
     P = [Fraction(v) for v in (3, -1, 4, 1, -5, 9, 2, 6)]

@@ -4,10 +4,10 @@ import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
 
-from analysis.difference import difference_norm
-from analysis.normset import norm_function, norm_solution_set
+from analysis.stationary.difference import difference_norm
+from analysis.stationary.normset import norm_function, norm_solution_set
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 
 Q = sp.Rational
 w, nu = sp.symbols("omega nu")
@@ -39,7 +39,7 @@ def test_seed003_L1_gives_nothing_and_L3_more():
 
 
 def RealAlgebraicOf(x):
-    from analysis.algebraic import RealAlgebraic
+    from analysis.algebra.algebraic import RealAlgebraic
     return RealAlgebraic.from_expr(x)
 
 
@@ -65,7 +65,7 @@ def test_piecewise_norm_agrees_with_direct_norm(v, m, L):
     q = Q(v.numerator, v.denominator)
     pieces = norm_function(t_nu(), m, L).value
     direct = difference_norm(t_nu().subs({"nu": q}), m, L).value
-    from analysis.algebraic import RealAlgebraic
+    from analysis.algebra.algebraic import RealAlgebraic
     x = RealAlgebraic.rational(q)
     for p in pieces:
         inside = (p.lo is None or p.lo.compare(x) <= 0) and (p.hi is None or p.hi.compare(x) >= 0)

@@ -1,11 +1,11 @@
-"""Verification of claimed C^k parameter intervals (analysis.ranges)."""
+"""Verification of claimed C^k parameter intervals (analysis.regularity.ranges)."""
 
 import pytest
 import sympy as sp
 
 import schemes
-from analysis.ranges import verify_smoothness_interval
-from analysis.regularity import smoothness
+from analysis.regularity.ranges import verify_smoothness_interval
+from analysis.regularity.holder import smoothness
 from analysis.result import AnalysisError
 
 Q = sp.Rational

@@ -4,10 +4,10 @@ import pytest
 import sympy as sp
 
 import schemes
-from analysis.algebraic import RealAlgebraic
-from analysis.regularity import (ck_parameter_set, holder_exponent, smoothness, sobolev_exponent)
+from analysis.algebra.algebraic import RealAlgebraic
+from analysis.regularity.holder import ck_parameter_set, holder_exponent, smoothness, sobolev_exponent
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol
+from analysis.algebra.symbol import LaurentSymbol
 
 Q = sp.Rational
 

@@ -13,7 +13,7 @@ import pytest
 
 from analysis.cli import main
 
-EXTRA = ["analysis.cli_report"]
+EXTRA = ["analysis.cli.report"]
 FAST = ["004:(3.6)", "004:(3.6)matrix", "004:(3.9)-(3.10)/P2n-4", "004:Lemma4.1", "004:Theorem4.4",
         "004:Theorem5.1", "004:Sec7(C6)", "004:Table1"]
 REPO_VERDICTS = Path(__file__).resolve().parent.parent / "reports" / "verdicts.json"

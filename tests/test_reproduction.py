@@ -1,4 +1,4 @@
-"""Tests of analysis.reproduction and the `subdiv series/bound/reproduce` commands."""
+"""Tests of analysis.levels.reproduction and the `subdiv series/bound/reproduce` commands."""
 
 from __future__ import annotations
 
@@ -8,12 +8,12 @@ import pytest
 import sympy as sp
 
 from analysis.cli import main
-from analysis.reproduction import curve_deviation, generation, reproduction
+from analysis.levels.reproduction import curve_deviation, generation, reproduction
 from schemes import seed003 as S
 from schemes.level_dependent import T, get
 
 A = S.ALPHA
-EXTRA = ["analysis.cli_asymptotic"]
+EXTRA = ["analysis.cli.levels"]
 
 
 @pytest.mark.parametrize("slug, lambdas", [("exp-chaikin-hyp", [0, T, -T]), ("exp-chaikin-trig", [0, sp.I * T, -sp.I * T]),

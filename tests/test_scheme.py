@@ -1,4 +1,4 @@
-"""Tests of analysis.scheme: refinement of polygons and basic limit functions.
+"""Tests of analysis.stationary.refinement: refinement of polygons and basic limit functions.
 
 Convention: (S_a f)_k = sum_j a_{k-2j} f_j, a(z) = sum_i a_i z^i.
 """
@@ -12,8 +12,8 @@ import pytest
 import sympy as sp
 
 from analysis.result import AnalysisError
-from analysis.scheme import basic_limit_function, point_reflection, refine, refined_indices
-from analysis.symbol import LaurentSymbol
+from analysis.stationary.refinement import basic_limit_function, point_reflection, refine, refined_indices
+from analysis.algebra.symbol import LaurentSymbol
 
 # ---------------------------------------------------------------------------------------------
 # schemes

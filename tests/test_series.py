@@ -1,13 +1,13 @@
-"""Tests of analysis.series: verdicts, enclosures, divergence witnesses, smoothness routes."""
+"""Tests of analysis.levels.series: verdicts, enclosures, divergence witnesses, smoothness routes."""
 
 from __future__ import annotations
 
 import pytest
 import sympy as sp
 
-from analysis.levels import distance
+from analysis.levels.level_dependent import distance
 from analysis.result import AnalysisError
-from analysis.series import smoothness, stationary_smoothness, weighted_series
+from analysis.levels.series import smoothness, stationary_smoothness, weighted_series
 from schemes import seed003
 from schemes.level_dependent import get
 
@@ -102,7 +102,7 @@ def test_disjoint_enclosures_are_a_certification_bug(monkeypatch):
     """Direct and Taylor-model enclosures that do not overlap must not be silently ignored."""
     import flint
 
-    from analysis import series
+    from analysis.levels import series
 
     real = series.coefficient_differences
     monkeypatch.setattr(series, "coefficient_differences",

@@ -9,12 +9,12 @@ import sympy as sp
 
 import schemes
 from analysis.cli import main
-from analysis.regularity import sobolev_exponent as regularity_sobolev_exponent
+from analysis.regularity.holder import sobolev_exponent as regularity_sobolev_exponent
 from analysis.result import AnalysisError
-from analysis.sobolev import (_log2_bounds, berlekamp_massey, sobolev_exponent, sobolev_stable_formula,
+from analysis.regularity.sobolev import (_log2_bounds, berlekamp_massey, sobolev_exponent, sobolev_stable_formula,
                               sobolev_stable_formula_exact)
-from analysis.stability import stable_shifts
-from analysis.symbol import LaurentSymbol
+from analysis.regularity.stability import stable_shifts
+from analysis.algebra.symbol import LaurentSymbol
 
 Q = sp.Rational
 D4 = ["(1+sqrt(3))/4", "(3+sqrt(3))/4", "(3-sqrt(3))/4", "(1-sqrt(3))/4"]
@@ -37,7 +37,7 @@ def test_sobolev_of_box_on_0_3_is_one_half_not_zero():
     # the stable-case formula, wrongly applied, gives 0 (the bug): the two methods differ here
     N, lo, hi, k = sobolev_stable_formula_exact(a)
     assert N + Q(k, 2) == 0                                 # rho(T_Q) = 4 = 2^-k
-    # the public name in analysis.regularity is the same function
+    # the public name in analysis.regularity.holder is the same function
     exact(regularity_sobolev_exponent(a), Q(1, 2))
 
 

@@ -5,8 +5,8 @@ import sympy as sp
 
 import schemes
 from analysis.result import AnalysisError
-from analysis.stability import stable_shifts, unit_circle_zero
-from analysis.symbol import LaurentSymbol, Z
+from analysis.regularity.stability import stable_shifts, unit_circle_zero
+from analysis.algebra.symbol import LaurentSymbol, Z
 
 Q = sp.Rational
 D4 = ["(1+sqrt(3))/4", "(3+sqrt(3))/4", "(3-sqrt(3))/4", "(1-sqrt(3))/4"]

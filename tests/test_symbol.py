@@ -7,7 +7,7 @@ import sympy as sp
 from hypothesis import given, settings, strategies as st
 
 from analysis.result import AnalysisError
-from analysis.symbol import LaurentSymbol, Z, parse_coefficient
+from analysis.algebra.symbol import LaurentSymbol, Z, parse_coefficient
 
 w, mu = sp.symbols("omega mu")
 Q = sp.Rational

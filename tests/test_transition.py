@@ -1,4 +1,4 @@
-"""Tests of analysis.transition: transition matrices, local subdivision matrices and their
+"""Tests of analysis.stationary.transition: transition matrices, local subdivision matrices and their
 eigenvalues, and the support of the basic limit function.
 
 Everything algebraic is compared exactly (``==`` on sympy objects after ``expand``); the only
@@ -15,8 +15,8 @@ import pytest
 import sympy as sp
 
 from analysis.result import CERTIFIED, AnalysisError, Result
-from analysis.symbol import Z, LaurentSymbol
-from analysis.transition import (LAMBDA, basic_limit_support, invariant_window, is_invariant_window,
+from analysis.algebra.symbol import Z, LaurentSymbol
+from analysis.stationary.transition import (LAMBDA, basic_limit_support, invariant_window, is_invariant_window,
                                  local_eigenvalues, local_subdivision_matrix, transition_matrices)
 
 R = sp.Rational

@@ -281,7 +281,7 @@ def _entry(x: Any) -> tuple[str, Any]:
             raise AnalysisError(f"matrix entry {x!r} is not finite")
         return "f", Fraction(float(x))
     if isinstance(x, str):
-        from ..symbol import parse_coefficient
+        from ..algebra.symbol import parse_coefficient
         x = parse_coefficient(x)
     if isinstance(x, sp.Basic):
         x = sp.sympify(x)
@@ -490,7 +490,7 @@ def exact_rho_expression(F: Family, word: Sequence[int]) -> sp.Expr | None:
         m, fac, root = best
         d = fac.degree()
         if root.imag.is_zero() or (d % 2 == 1 and fac.count_roots() == d):
-            from ..algebraic import RealAlgebraic
+            from ..algebra.algebraic import RealAlgebraic
 
             target = float(root.real.mid())
             reals = RealAlgebraic.roots_of(fac)

@@ -1,0 +1,188 @@
+"""``subdiv series``, ``subdiv bound``, ``subdiv reproduce``: level-dependent schemes on the command line.
+
+Level-dependent schemes are named from :mod:`schemes.level_dependent` (``--scheme
+seed003-trigonometric``); parameters are exact values (``--param alpha=pi/5``) or, for one
+parameter, a closed box (``--box alpha=1/10,pi/3``).
+
+Examples
+--------
+::
+
+    subdiv series --scheme seed003-trigonometric --param alpha=1 --param omega=1/100 --m 0,1,2
+    subdiv series --scheme seed003-trigonometric --box alpha=1/10,pi/3 --param omega=1/100 --m 1 --pieces 8
+    subdiv bound --claim "003:Lemma3.1(iii)-upper" --box alpha=1/100,pi/3 --param omega=1/100
+    subdiv bound --lhs "3/4" --rhs "sin(3*alpha/2**(n+2))/sin(alpha/2**n)" --n0 1 --box alpha=1/100,1
+    subdiv reproduce --scheme exp-chaikin-trig --lambdas "I*t,-I*t" --curve circle --param t=pi/4 --points 8
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .main import _emit, _parse_params, check_writable
+from ..jsonable import fmt_lower, fmt_upper
+from ..result import AnalysisError
+from ..algebra.symbol import parse_coefficient
+
+
+def _level_scheme(name):
+    from schemes.level_dependent import get
+
+    if not name:
+        raise AnalysisError("give --scheme NAME (a level-dependent scheme)")
+    return get(name)
+
+
+def _box(items):
+    out = {}
+    for item in items or []:
+        if "=" not in item or "," not in item:
+            raise AnalysisError(f"malformed --box {item!r}: use NAME=LOW,HIGH, e.g. alpha=1/10,pi/3")
+        name, rng = (x.strip() for x in item.split("=", 1))
+        lo, hi = (parse_coefficient(x.strip()) for x in rng.split(",", 1))
+        if lo.free_symbols or hi.free_symbols:
+            raise AnalysisError(f"the box for {name} must have numeric ends")
+        if name in out:
+            raise AnalysisError(f"--box {name} is given twice: give it once")
+        out[name] = (lo, hi)
+    return out
+
+
+def _values(args):
+    v = _parse_params(args.param)
+    box = _box(args.box)
+    both = sorted(set(v) & set(box))
+    if both:
+        raise AnalysisError(f"{both[0]} is given both by --param and by --box: give one of them")
+    v.update(box)
+    return v
+
+
+def _ints(text, what):
+    try:
+        return [int(x) for x in str(text).split(",")]
+    except ValueError:
+        raise AnalysisError(f"{what} must be integers like 0,1,2, not {text!r}") from None
+
+
+def cmd_series(args) -> None:
+    from ..levels.level_dependent import leading_asymptotics
+    from ..levels.series import weighted_series
+
+    s = _level_scheme(args.scheme)
+    if args.difference < 0:
+        raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
+    if args.pieces < 1:
+        raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
+    if args.difference:
+        s = s.difference(args.difference)
+    vals = _values(args)
+    lead = leading_asymptotics(s)
+    rows, lines = [], [f"scheme {s.slug}: ||S_(a^n) - S_a|| ~ {lead.witness['rate']} (exact)"]
+    for m in _ints(args.m, "--m"):
+        r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces)
+        rows.append({"m": m, **r.to_json()})
+        v = r.witness.get("verdict")
+        if v == "convergent":
+            lines.append(f"m = {m}: convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, {fmt_upper(r.upper, 15, 'g')}] "
+                         f"({r.status}; tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')})")
+        elif v == "divergent":
+            lines.append(f"m = {m}: divergent ({r.status}): terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')} "
+                         f"for n >= {r.witness['tail']['N'] if 'tail' in r.witness else args.N}; "
+                         f"leading constant {r.witness['leading_constant']}")
+        else:
+            lines.append(f"m = {m}: {r.status}")
+    _emit(args, {"scheme": s.slug, "leading": lead.to_json(), "series": rows}, "\n".join(lines))
+
+
+def cmd_bound(args) -> None:
+    from ..levels.bounds import check_inequality
+
+    vals = _values(args)
+    if args.claim:
+        from schemes import seed003
+
+        table = {**seed003.LEMMA_3_1, **seed003.LEMMA_3_1_CORRECTED, **seed003.LEMMA_3_2}
+        if args.claim not in table:
+            raise AnalysisError(f"unknown claim {args.claim!r}; known: {', '.join(table)}")
+        lhs, rhs, strict = table[args.claim]
+        n0 = 1 if "3.1" in args.claim else 0
+        vals.setdefault("omega", sp.Rational(1, 100))
+        vals = {k: v for k, v in vals.items()
+                if k in {x.name for x in (sp.sympify(lhs).free_symbols | sp.sympify(rhs).free_symbols)}}
+    else:
+        if args.lhs is None or args.rhs is None:
+            raise AnalysisError("give --claim ID, or --lhs EXPR and --rhs EXPR")
+        lhs, rhs = (parse_coefficient(x, locals_={"n": sp.Symbol("n")}) for x in (args.lhs, args.rhs))
+        strict, n0 = args.strict, args.n0
+    if n0 < 0:
+        raise AnalysisError(f"--n0 must be a non-negative level, not {n0}")
+    r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "")
+    text = f"{r.witness['statement']}: {r.status}"
+    if "counterexample" in r.witness:
+        text += f"\ncounterexample: {r.witness['counterexample']}"
+    _emit(args, r.to_json(), text)
+
+
+def cmd_reproduce(args) -> None:
+    from ..levels.reproduction import check_curve_options, curve_deviation, generation, reproduction
+
+    if args.plot:
+        check_writable(args.plot, "the plot")
+    s = _level_scheme(args.scheme)
+    if args.curve:
+        check_curve_options(args.points, args.steps, args.plot)
+    vals = _parse_params(args.param)
+    lams = [parse_coefficient(x, locals_={p.name: p for p in s.params})
+            for x in args.lambdas.split(",")] if args.lambdas else []
+    out, lines = {"scheme": s.slug}, []
+    if lams:
+        g = generation(s, lams, vals or None)
+        rr = reproduction(s, lams, vals or None)
+        out["generation"], out["reproduction"] = g.to_json(), rr.to_json()
+        lines.append(f"generation of exp(lambda x), lambda in {args.lambdas}: {g.status}")
+        lines.append(f"reproduction: {rr.status}")
+    if args.curve:
+        c = curve_deviation(s, args.curve, vals, points=args.points, steps=args.steps, plot=args.plot)
+        out["curve"] = c.to_json()
+        lines.append(f"{args.curve}: deviation {c.value:.6g} (Hausdorff {c.witness['hausdorff']:.6g}; "
+                     f"{c.status}, float64)")
+    if len(out) == 1:
+        raise AnalysisError("give --lambdas and/or --curve")
+    _emit(args, out, "\n".join(lines))
+
+
+def register(sub) -> None:
+    """Add the sub-commands to the ``subdiv`` parser."""
+    s = sub.add_parser("series", help="weighted series sum 2^(mn)||S_(a^n) - S_a||: verdict and enclosure")
+    s.add_argument("--scheme", metavar="NAME", help="level-dependent scheme (schemes.level_dependent)")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
+    s.add_argument("--m", default="0,1,2", help="weights, e.g. 0,1,2")
+    s.add_argument("--difference", type=int, default=0, help="k: use the k-th divided difference scheme")
+    s.add_argument("--N", type=int, default=40, help="levels summed explicitly")
+    s.add_argument("--pieces", type=int, default=1, help="sub-boxes of the parameter box")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=cmd_series)
+
+    s = sub.add_parser("bound", help="prove/refute f(n,p) <= g(n,p) for n >= n0 over a parameter box")
+    s.add_argument("--claim", metavar="ID", help='a seed 003 lemma item, e.g. "003:Lemma3.2(ii)"')
+    s.add_argument("--lhs", metavar="EXPR")
+    s.add_argument("--rhs", metavar="EXPR")
+    s.add_argument("--n0", type=int, default=0, help="first level n (>= 0)")
+    s.add_argument("--strict", action="store_true")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=cmd_bound)
+
+    s = sub.add_parser("reproduce", help="exponential generation/reproduction; distance to curves")
+    s.add_argument("--scheme", metavar="NAME")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--lambdas", metavar="LIST", help='e.g. "I*t,-I*t" or "0,t,-t"')
+    s.add_argument("--curve", choices=("circle", "ellipse", "cardioid", "astroid", "lemniscate"))
+    s.add_argument("--points", type=int, default=10, help="control points on the curve (>= 3)")
+    s.add_argument("--steps", type=int, default=6, help="refinement steps (0..12)")
+    s.add_argument("--plot", metavar="FILE", help="write the curve and curvature plot (PNG)")
+    s.add_argument("--json", action="store_true")
+    s.set_defaults(func=cmd_reproduce)

@@ -1,0 +1,369 @@
+"""``subdiv holder`` and ``subdiv range``: certified Hölder exponents and C^k parameter ranges.
+
+Examples
+--------
+::
+
+    subdiv holder --scheme four-point --param w=1/16
+    subdiv holder --scheme dfh-chaikin-perturbation --param omega=1/50 --C 2
+    subdiv range --scheme dfh-chaikin-perturbation --C 2 --within=-1/20,1/20 --figure alpha.png
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .main import _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
+from ..jsonable import _as_fraction, fmt_bound
+from ..result import AnalysisError
+from ..algebra.symbol import LaurentSymbol
+
+
+def _fmt(x, side: str | None = None, digits: int = 10) -> str:
+    """``x`` with ``digits`` decimals, never ``-0.0...``. An end of an enclosure is rounded outward
+    exactly: ``_fmt(lower, "lower")`` down, ``_fmt(upper, "upper")`` up (so the printed interval
+    contains the true one); without ``side`` (an approximation) to nearest."""
+    if x is None:
+        return "?"
+    if side is not None:
+        return fmt_bound(x, side, digits)
+    lo, hi = fmt_bound(x, "lower", digits), fmt_bound(x, "upper", digits)
+    if lo == hi:                              # exactly representable
+        return lo
+    from fractions import Fraction
+
+    q = Fraction(lo) + Fraction(hi)           # nearest of the two (ties: the upper one)
+    return hi if 2 * _as_fraction(x, "lower") >= q else lo
+
+
+def _numeric_entry(args):
+    """The catalogue entry when --scheme names a scheme known only by enclosures (Daubechies)."""
+    if getattr(args, "scheme", None) is None:
+        return None
+    import schemes
+    from schemes.catalogue import NumericSchemeEntry
+
+    entry = schemes.get(args.scheme)
+    return entry if isinstance(entry, NumericSchemeEntry) else None
+
+
+def _part(name: str, compute, lines: list, data: dict) -> None:
+    """Run one part of ``subdiv holder`` (alpha, C^k, Sobolev): each reports its own result, or its
+    own inconclusive with the reason, so that one failing part never hides the others."""
+    try:
+        part_lines, part_data = compute()
+    except AnalysisError as exc:
+        lines.append(f"{name}: inconclusive — {exc}")
+        data[name] = {"status": "inconclusive", "reason": str(exc)}
+        return
+    lines.extend(part_lines)
+    data[name] = part_data
+
+
+def _alpha_part(args, a, budget):
+    from ..regularity.holder import NotConvergent
+
+    try:
+        h = _holder(a, budget, args)
+    except NotConvergent as exc:           # a certified verdict, not an error
+        hint = exc.hint
+        if hint is None and getattr(args, "mask", None) is not None:
+            from ..algebra.approx import sum_rule_hint
+            from .main import _split_list
+
+            hint = sum_rule_hint(_split_list(args.mask, "mask"))
+        lines = [f"not convergent [certified]: {exc.reason}"]
+        if hint:
+            lines.append(f"  {hint}")
+        r = exc.result()
+        data = {**r.to_json(), "convergent": False, "reason": exc.reason}
+        if hint:
+            data["hint"] = hint
+        return lines, data
+    lines = []
+    if h.value is not None:
+        lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
+    else:
+        lines.append(f"Hölder exponent alpha in [{_fmt(h.lower, 'lower')}, {_fmt(h.upper, 'upper')}]   [{h.status}]")
+    w = h.witness
+    prod = w.get("product")
+    if prod and w.get("k") is not None:
+        lines.append(f"  c(z) = 2^{w['k']} a(z)/(1+z)^{w['k'] + 1};  spectrum-maximizing product T_{''.join(map(str, prod))}"
+                     + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
+    if "message" in h.provenance:
+        lines.append(f"  {h.provenance['message']}")
+    data = h.to_json()
+    data["convergent"] = True
+    return lines, data
+
+
+def _holder(a, budget, args=None):
+    """The alpha Result of ``a`` (cached on ``args`` so that --C reuses it)."""
+    from ..regularity.holder import holder_exponent, holder_exponent_enclosure
+
+    cache = getattr(args, "_holder_cache", None) if args is not None else None
+    if cache is not None and cache[0] is a:
+        return cache[1]
+    if isinstance(a, LaurentSymbol):
+        h = holder_exponent(a, budget_seconds=budget)
+    elif hasattr(a, "holder"):             # closed-form or approximate reading (ball route)
+        h = a.holder(budget_seconds=budget)
+    else:  # a catalogue entry known by enclosures (Daubechies)
+        h = holder_exponent_enclosure(a, budget_seconds=budget)
+    if args is not None:
+        args._holder_cache = (a, h)
+    return h
+
+
+def _smoothness_part(args, a, budget):
+    from ..regularity.holder import NotConvergent, smoothness
+
+    j = _int_arg(args.C, "--C")
+    if j < 0:
+        raise AnalysisError("--C must be >= 0")
+    if not isinstance(a, LaurentSymbol):
+        try:
+            h = _holder(a, budget, args)
+        except NotConvergent as exc:
+            s = exc.result()
+        else:
+            s = _verdict_from_enclosure(h, j)
+    else:
+        s = smoothness(a, j, budget_seconds=budget)
+    verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
+    return ([f"{verdict}   [{s.status}] — {s.witness.get('reason')}"],
+            {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason"),
+             **({"convergent": False} if s.witness.get("convergent") is False else {})})
+
+
+def _verdict_from_enclosure(h, j: int):
+    """C^j iff alpha > j, from a rigorous enclosure of alpha (ball masks)."""
+    from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, Result
+
+    jsr = h.witness.get("jsr")
+    rigorous = jsr is None or jsr.provenance.get("input_kind") != "float"
+    lo, hi = h.lower, h.upper
+    if rigorous and lo is not None and lo > j:
+        return Result(value=True, status=CERTIFIED,
+                      witness={"reason": f"alpha >= {_fmt(lo, 'lower')} > {j} (certified enclosure)"})
+    if rigorous and hi is not None and hi <= j:
+        return Result(value=False, status=CERTIFIED,
+                      witness={"reason": f"alpha <= {_fmt(hi, 'upper')} <= {j} (certified enclosure)"})
+    return Result(value=None, status=INCONCLUSIVE if rigorous else NUMERICAL,
+                  witness={"reason": f"alpha in [{_fmt(lo, 'lower')}, {_fmt(hi, 'upper')}] does not decide "
+                                     f"alpha > {j}: a longer budget would settle it"})
+
+
+def _alternative_reading(args):
+    """``(a, label, first line)`` for a --mask read approximately (--approx) or in closed form
+    with nested radicals / I / CRootOf (the certified ball route); None otherwise."""
+    if getattr(args, "mask", None) is None or args.param:
+        return None
+    from .main import _split_list
+
+    if "(" in args.mask and "CRootOf" in args.mask:      # commas inside CRootOf(p, k)
+        from ..algebra.closed_form import split_mask
+
+        mask = split_mask(args.mask)
+    else:
+        mask = _split_list(args.mask, "mask")
+    start = _int_arg(args.start, "--start")
+    if getattr(args, "approx", False):
+        from ..algebra.approx import ApproximateMask
+
+        return (ApproximateMask(mask, start), "mask (approximate reading)",
+                "scheme: mask   (approximate reading: each decimal a ball of half a unit in its last digit)")
+    from ..algebra.closed_form import ClosedFormMask, needs_ball_route
+
+    if needs_ball_route(mask):
+        cf = ClosedFormMask(mask, start)
+        return cf, "mask (closed form)", "scheme: mask   (closed form; certified ball route)"
+    return None
+
+
+def _sobolev_part(args, a, budget):
+    """s_2 of the basic limit function (exact symbols: exact transfer-operator sequence, correct
+    with or without stable shifts; ball catalogue entries: stable-case formula after certified
+    stability), plus one line on the shifts."""
+    from ..regularity.sobolev import sobolev_exponent
+
+    s2 = sobolev_exponent(a)
+    if s2.value is not None:
+        head = f"L2-Sobolev exponent s_2 = {sp.sstr(s2.value)} exactly   [{s2.status}]"
+    elif s2.lower is not None or s2.upper is not None:
+        head = f"L2-Sobolev exponent s_2 in [{_fmt(s2.lower, 'lower')}, {_fmt(s2.upper, 'upper')}]   [{s2.status}]"
+    else:
+        head = f"L2-Sobolev exponent s_2: [{s2.status}]"
+    lines = [head]
+    if s2.witness.get("reason"):
+        lines.append(f"  {s2.witness['reason']}")
+    st = s2.witness.get("stable_shifts")
+    if st is not None:
+        if st.value is True:
+            lines.append(f"  shifts of phi stable [{st.status}]; method: {s2.witness.get('method')}")
+        elif st.value is False:
+            lines.append(f"  shifts of phi unstable [{st.status}]: phi_a = q(tau) phi_b / q(1) with q(z) = "
+                         f"{s2.witness['q'].pretty()}, b(z) = {s2.witness['reduced_mask'].pretty()} (stable); "
+                         "s_2 from the exact transfer-operator sequence of h = (2-z-1/z)^r q(z) q(1/z)")
+    return lines, s2.to_json()
+
+
+def _cycle_text(n: int) -> str:
+    """The squaring cycle through e^(2πi/n) (n odd), e.g. ``{e^(2πi/3), e^(4πi/3)}``.
+
+    >>> _cycle_text(3), _cycle_text(7)
+    ('{e^(2πi/3), e^(4πi/3)}', '{e^(2πi/7), e^(4πi/7), e^(8πi/7)}')
+    """
+    ks, k = [], 1
+    while k not in ks:
+        ks.append(k)
+        k = 2 * k % n
+    return "{" + ", ".join(f"e^({2 * k}πi/{n})" for k in ks) + "}"
+
+
+def _stability_part(args, a, budget):
+    """Are the integer shifts of the basic limit function phi stable (Jia–Wang, exact)?
+
+    The Hölder exponent alpha = k - log2 JSR and the C^k verdicts are properties of the SCHEME
+    (uniform convergence of the divided-difference schemes, Dyn–Levin) and need no stability
+    hypothesis; only reading alpha as the Hölder exponent of phi itself needs stable shifts.
+    When the shifts are unstable, phi_a = q(tau) phi_b / q(1) is a finite combination of shifts
+    of the stable phi_b, and phi_a is one limit of the scheme, so its exponent is >= alpha.
+    """
+    from ..regularity.stability import stable_shifts
+
+    st = stable_shifts(a)
+    w = st.witness
+    if st.value is True:
+        line = (f"basic limit function: shifts stable [{st.status}] ({w['reason']}): "
+                "alpha (when the scheme converges) is also the Hölder exponent of phi")
+        lines = [line]
+    elif st.value is False:
+        parts = []
+        for h in w.get("symmetric_zeros_on_circle", []):
+            parts.append(f"symmetric zeros on the unit circle (H(z^2) | a(z), H = {sp.sstr(h)})")
+        for n in w.get("blocking_cycles", []):
+            parts.append(f"the blocking cycle {_cycle_text(n)} (Phi_{2 * n} | a)")
+        lines = [f"basic limit function: shifts unstable [{st.status}]: a(z) has " + " and ".join(parts)
+                 + f"; phi_a = q(tau) phi_b / q(1), q(z) = {w['q'].pretty()}, b(z) = {w['reduced_mask'].pretty()} "
+                 "(stable)",
+                 "  alpha above is the Hölder exponent of the scheme (all its limits); "
+                 "the Hölder exponent of phi_a is >= alpha"]
+    else:
+        lines = [f"basic limit function: stability of the shifts undecided [{st.status}] — {w.get('reason')}"]
+    return lines, st.to_json()
+
+
+def cmd_holder(args) -> None:
+    budget = float(args.budget)
+    entry = _numeric_entry(args)
+    if entry is not None:
+        if args.param:
+            raise AnalysisError(f"{entry.slug} is known by certified enclosures only: --param is not available for it")
+        if getattr(args, "approx", False):
+            raise AnalysisError("--approx needs --mask (a typed decimal table)")
+        a, label = entry, entry.slug
+        lines = [f"scheme: {entry.slug}   (mask known by Arb ball enclosures)"]
+    elif (alt := _alternative_reading(args)) is not None:    # --approx, or nested radicals / I / CRootOf
+        a, label, first = alt
+        lines = [first]
+    else:
+        if getattr(args, "approx", False):
+            raise AnalysisError("--approx needs --mask (a typed decimal table)")
+        a, label = scheme_from_args(args)
+        lines = [f"scheme: {label}   (domain {a.domain})"]
+    data: dict = {"scheme": label}
+    _part("alpha", lambda: _alpha_part(args, a, budget), lines, data)
+    _part("stability", lambda: _stability_part(args, a, budget), lines, data)
+    if args.C is not None:
+        _part("smoothness", lambda: _smoothness_part(args, a, budget), lines, data)
+    if args.sobolev:
+        _part("sobolev", lambda: _sobolev_part(args, a, budget), lines, data)
+    _emit(args, data, "\n".join(lines))
+
+
+def cmd_range(args) -> None:
+    from ..regularity.holder import alpha_curve, ck_parameter_set
+
+    if args.figure:
+        check_writable(args.figure, "the figure")
+    a, label = scheme_from_args(args)
+    j = _int_arg(args.C, "--C")
+    within = _parse_within(args.within)
+    if not all(w.is_finite for w in within):
+        raise AnalysisError("--within needs finite bounds for a parameter range, e.g. -1/20,1/20")
+    grid = _int_arg(args.grid, "--grid")
+    if grid < 2 or grid > 400:
+        raise AnalysisError("--grid must be between 2 and 400")
+    try:
+        tol = float(args.tol)
+    except ValueError:
+        raise AnalysisError(f"--tol must be a number, not {args.tol!r}") from None
+    if not (1e-30 <= tol <= 1):
+        raise AnalysisError("--tol must be between 1e-30 and 1")
+    r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
+                         budget_seconds=float(args.budget))
+    p = r.witness["parameter"]
+    lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
+             f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
+    if not r.value:
+        lines.append("  nowhere on the grid")
+    for run in r.value:
+        def end(b, which):
+            if "open_end" in b:
+                return f"~{sp.sstr(b['open_end'])} (grid end)"
+            if "exact" in b:
+                return f"{sp.sstr(b['exact'])} ~ {b['exact_float']:.12g} [exact]"
+            lo, hi = b["bracket"]
+            return f"in [{fmt_bound(lo, 'lower', 12, 'g')}, {fmt_bound(hi, 'upper', 12, 'g')}]"
+        lines.append(f"  C^{j} from {end(run['left'], 'left')} to {end(run['right'], 'right')}")
+    for b in r.witness["boundaries"]:
+        lo, hi = b["bracket"]
+        lines.append(f"  boundary: certified C^{j} at {sp.sstr(b.get('certified_C^j_at'))}, certified not C^{j} at "
+                     f"{sp.sstr(b.get('certified_not_C^j_at'))} ({b.get('how', b['status'])})")
+    if r.witness["undecided"]:
+        lines.append("  undecided grid points: " + ", ".join(sp.sstr(x) for x in r.witness["undecided"]))
+    for run in r.value:
+        it = run.get("interior")
+        if it:
+            # rounded inward: the printed interval lies inside the one the statement is about
+            lines.append(f"  interior [{fmt_bound(it['from'], 'upper', 10, 'g')}, {fmt_bound(it['to'], 'lower', 10, 'g')}]: "
+                         + ("proven C^%d on the whole interval (%s)" % (j, it["route"]) if it["proven"] else
+                            "certified at the grid points only (the norm tests do not cover it)"))
+    if "message" in r.provenance:
+        lines.append(f"  {r.provenance['message']}")
+    data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
+    if args.figure:
+        curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget_seconds=float(args.budget))
+        from ..report.plots import plot_alpha_curve
+
+        try:
+            plot_alpha_curve(curve, args.figure, j=j, boundaries=r.witness["boundaries"], label=label)
+        except OSError as exc:
+            raise AnalysisError(f"cannot write {args.figure}: {exc.strerror or exc}") from None
+        lines.append(f"figure written to {args.figure}")
+        data["figure"] = args.figure
+    _emit(args, data, "\n".join(lines))
+
+
+def register(sub) -> None:
+    s = sub.add_parser("holder", help="certified Hölder exponent (joint spectral radius), C^k verdict, Sobolev exponent")
+    _add_scheme_args(s)
+    s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
+    s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
+    s.add_argument("--budget", default="20", help="seconds for the joint spectral radius (default 20)")
+    s.add_argument("--approx", action="store_true",
+                   help="approximate reading of a decimal --mask: each coefficient a ball of half a unit in its "
+                        "last digit, sum rules imposed inside the balls (alpha certified for every such mask)")
+    s.set_defaults(func=cmd_holder)
+
+    s = sub.add_parser("range", help="where a one-parameter family is C^k: boundaries certified on both sides")
+    _add_scheme_args(s)
+    s.add_argument("--C", metavar="K", required=True, help="smoothness order k")
+    s.add_argument("--param-name", metavar="NAME", help="the free parameter (default: the only one)")
+    s.add_argument("--within", metavar="LOW,HIGH", required=True, help="finite parameter interval (use --within=-1,1)")
+    s.add_argument("--grid", default="16", help="number of grid cells (default 16)")
+    s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
+    s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
+    s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
+    s.set_defaults(func=cmd_range)

@@ -1,0 +1,186 @@
+"""``subdiv report`` and ``subdiv check``: proof-check reports of papers and their regression.
+
+* ``subdiv report 004`` (or ``all``) evaluates every claim of the paper(s), writes
+  ``reports/<paper>.md``, ``reports/<paper>.html``, ``reports/figures/`` and the golden file
+  ``reports/verdicts.json`` (statuses and key numbers of every claim), prints progress on stderr
+  and the verdict table on stdout. ``--claim ID`` (repeatable; shell patterns allowed) evaluates
+  and prints only those claims (no files are written unless ``--write``).
+* ``subdiv check`` re-evaluates every claim recorded in ``reports/verdicts.json`` and compares:
+  exit code 0 when everything agrees, 1 with a readable diff when a status changed or a number
+  moved beyond its tolerance.
+
+The golden file is what the code computed, reviewed in the diff of a commit — never typed by hand.
+
+Examples
+--------
+::
+
+    subdiv report all
+    subdiv report 004 --claim '004:Theorem5.2(m=1)'
+    subdiv check
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import json
+import os
+import sys
+import time
+from pathlib import Path
+
+from ..claims.model import compare_verdicts, evaluate_paper, get_paper, papers, verdicts_json
+from .main import _print
+from ..result import AnalysisError
+
+#: Default output folder: ``reports/`` of the current directory.
+REPORTS = Path("reports")
+
+
+def _select(paper, patterns):
+    if not patterns:
+        return None
+    ids = [c.id for c in paper.claims if any(fnmatch.fnmatchcase(c.id, p) or c.id == p for p in patterns)]
+    return ids
+
+
+def _progress(quiet: bool):
+    def show(k, n, ev):
+        if not quiet:
+            print(f"  [{k:>2}/{n}] {ev.claim.id:<34} {ev.verdict.label:<15} {ev.seconds:6.2f} s",
+                  file=sys.stderr, flush=True)
+    return show
+
+
+def _table(results) -> str:
+    rows = [(ev.claim.id, ev.verdict.label, ev.verdict.summary) for ev in results]
+    w0 = max([len(r[0]) for r in rows] + [5])
+    w1 = max([len(r[1]) for r in rows] + [7])
+    out = [f"{'claim':<{w0}}  {'verdict':<{w1}}  summary", "-" * (w0 + w1 + 60)]
+    for cid, lab, summ in rows:
+        s = summ if len(summ) <= 110 else summ[:107] + "..."
+        out.append(f"{cid:<{w0}}  {lab:<{w1}}  {s}")
+    return "\n".join(out)
+
+
+def _papers_arg(arg: str):
+    if arg == "all":
+        return list(papers().values())
+    return [get_paper(arg)]
+
+
+def cmd_report(args) -> None:
+    outdir = Path(args.output) if args.output else REPORTS
+    if args.claim and args.write and not args.output:
+        raise AnalysisError("--write with --claim would replace the paper's report and golden verdicts in "
+                            f"{REPORTS} by a partial one; write elsewhere with --output DIR")
+    if args.output and not outdir.is_dir():
+        raise AnalysisError(f"output folder {outdir} does not exist")
+    if (args.claim is None or args.write) and not os.access(outdir, os.W_OK | os.X_OK):
+        raise AnalysisError(f"cannot write to the output folder {outdir}: permission denied")
+    t0 = time.perf_counter()
+    all_results = {}
+    for paper in _papers_arg(args.paper):
+        only = _select(paper, args.claim)
+        if only is not None and not only:
+            raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
+        print(f"paper {paper.id}: {paper.title} ({len(only) if only is not None else len(paper.claims)} claims)",
+              file=sys.stderr, flush=True)
+        results = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+        all_results[paper.id] = results
+        if args.json:
+            continue
+        _print(f"\n== {paper.id}: {paper.title}")
+        _print(_table(results))
+        if only is not None:
+            for ev in results:
+                v = ev.verdict
+                _print(f"\n{ev.claim.id}: {v.label}\n  {v.summary}")
+                for t, x in (("corrected", v.corrected), ("sharpness", v.sharpness), ("settle", v.settle)):
+                    if x:
+                        _print(f"  {t}: {x}")
+                for e in v.evidence:
+                    _print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
+                for n in v.numbers:
+                    _print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
+    write = args.claim is None or args.write
+    if write:
+        from ..report.render import render_paper
+
+        for pid, results in all_results.items():
+            for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures):
+                print(f"wrote {p}", file=sys.stderr)
+        golden = outdir / "verdicts.json"
+        data = verdicts_json(all_results)
+        if golden.exists() and args.paper != "all":       # keep the other papers' entries
+            old = json.loads(golden.read_text(encoding="utf-8"))
+            old.get("papers", {}).update(data["papers"])
+            data["papers"] = dict(sorted(old.get("papers", {}).items()))
+        golden.write_text(json.dumps(data, indent=1, ensure_ascii=False, sort_keys=True) + "\n", encoding="utf-8")
+        print(f"wrote {golden}", file=sys.stderr)
+    if args.json:
+        _print(json.dumps(verdicts_json(all_results), indent=1, ensure_ascii=False))
+    print(f"\n{sum(len(r) for r in all_results.values())} claims in {time.perf_counter() - t0:.1f} s",
+          file=sys.stderr)
+
+
+def cmd_check(args) -> None:
+    golden_path = Path(args.verdicts) if args.verdicts else REPORTS / "verdicts.json"
+    if not golden_path.is_file():
+        raise AnalysisError(f"no golden file {golden_path}: run `subdiv report all` and review it")
+    try:
+        golden = json.loads(golden_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise AnalysisError(f"cannot read the golden file {golden_path}: {str(exc).splitlines()[0]}") from None
+    if not isinstance(golden, dict) or not isinstance(golden.get("papers"), dict):
+        raise AnalysisError(f"{golden_path} is not a verdicts file (expected {{\"papers\": {{...}}}})")
+    t0 = time.perf_counter()
+    fresh_results = {}
+    pids = args.paper or sorted(golden.get("papers", {}))
+    for pid in pids:
+        paper = get_paper(pid)
+        only = _select(paper, args.claim)
+        if only is not None and not only:
+            raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
+        print(f"checking paper {paper.id} ...", file=sys.stderr, flush=True)
+        fresh_results[paper.id] = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+    fresh = verdicts_json(fresh_results)
+    if args.claim:   # compare only the selected claims
+        sel = {ev.claim.id for evs in fresh_results.values() for ev in evs}
+        golden = {"papers": {pid: {"claims": {k: v for k, v in golden["papers"].get(pid, {}).get("claims", {}).items()
+                                              if k in sel}} for pid in fresh_results}}
+    diffs = compare_verdicts(golden, fresh, papers_=list(fresh_results))
+    n = sum(len(v) for v in fresh_results.values())
+    if args.json:
+        _print(json.dumps({"golden": str(golden_path), "claims": n, "agree": not diffs,
+                           "differences": [str(d) for d in diffs], "verdicts": fresh}, indent=1, ensure_ascii=False))
+        if diffs:
+            raise SystemExit(1)
+        return
+    if diffs:
+        _print(f"subdiv check: {len(diffs)} difference(s) from {golden_path}:")
+        for d in diffs:
+            _print(f"  {d}")
+        _print("If the change is intended, regenerate with `subdiv report all` and review the diff.")
+        raise SystemExit(1)
+    _print(f"subdiv check: {n} claims agree with {golden_path} ({time.perf_counter() - t0:.1f} s)")
+
+
+def register(subparsers) -> None:
+    """Add ``report`` and ``check`` to the ``subdiv`` command."""
+    s = subparsers.add_parser("report", help="proof-check report of a paper (or all): verdicts, Markdown, HTML")
+    s.add_argument("paper", help="paper id (e.g. 004) or 'all'")
+    s.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns); print details")
+    s.add_argument("--write", action="store_true", help="with --claim and --output: write a partial report there")
+    s.add_argument("--output", metavar="DIR", help=f"output folder (default {REPORTS})")
+    s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
+    s.add_argument("--quiet", action="store_true", help="no per-claim progress")
+    s.add_argument("--json", action="store_true", help="print the verdicts as JSON")
+    s.set_defaults(func=cmd_report)
+    c = subparsers.add_parser("check", help="recompute every claim and compare with reports/verdicts.json")
+    c.add_argument("paper", nargs="*", help="paper ids (default: all in the golden file)")
+    c.add_argument("--verdicts", metavar="FILE", help="golden file (default reports/verdicts.json)")
+    c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")
+    c.add_argument("--quiet", action="store_true")
+    c.add_argument("--json", action="store_true", help="print the comparison (and the fresh verdicts) as JSON")
+    c.set_defaults(func=cmd_check)

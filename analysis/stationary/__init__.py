@@ -1,0 +1,10 @@
+"""Stationary schemes: difference schemes and norm tests, transition and local matrices, refinement.
+
+What lives here: difference symbols in both spellings and exact L-step norms
+(:mod:`.difference`), the norm as an exact piecewise function of one parameter and the exact set
+where the Dyn–Levin test holds (:mod:`.normset`), transition matrices, local subdivision matrices,
+exact eigenvalues and supports (:mod:`.transition`), refinement of closed and open polygons and
+basic limit functions (:mod:`.refinement`).
+
+Layering: may import :mod:`analysis.algebra` (and the results contract) only.
+"""
