@@ -317,28 +317,36 @@ class Paper:
         raise KeyError(cid)
 
 
-def papers(package: str = "schemes") -> dict[str, Paper]:
-    """All papers: every module of ``package`` with a module-level ``PAPER`` (sorted by id).
+#: Packages searched for papers: each module or sub-package with a module-level ``PAPER``.
+PAPER_PACKAGES: tuple[str, ...] = ("papers", "schemes")
 
-    A new paper needs nothing but its module ``schemes/<name>.py`` defining ``PAPER``.
+
+def papers(packages: str | Sequence[str] = PAPER_PACKAGES) -> dict[str, Paper]:
+    """All papers: every module or sub-package of ``packages`` with a module-level ``PAPER``
+    (sorted by id). A new paper needs nothing but its folder ``papers/<name>/`` whose
+    ``__init__.py`` defines ``PAPER``.
     """
-    pkg = importlib.import_module(package)
     found: dict[str, Paper] = {}
-    for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda m: m.name):
-        mod = importlib.import_module(f"{package}.{info.name}")
-        paper = getattr(mod, "PAPER", None)
-        if isinstance(paper, Paper):
-            if paper.id in found:
-                raise RuntimeError(f"two modules define paper {paper.id}")
-            found[paper.id] = paper
+    for package in ([packages] if isinstance(packages, str) else packages):
+        try:
+            pkg = importlib.import_module(package)
+        except ModuleNotFoundError:
+            continue
+        for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda m: m.name):
+            mod = importlib.import_module(f"{package}.{info.name}")
+            paper = getattr(mod, "PAPER", None)
+            if isinstance(paper, Paper):
+                if paper.id in found:
+                    raise RuntimeError(f"two modules define paper {paper.id}")
+                found[paper.id] = paper
     return dict(sorted(found.items()))
 
 
-def get_paper(pid: str, package: str = "schemes") -> Paper:
+def get_paper(pid: str, packages: str | Sequence[str] = PAPER_PACKAGES) -> Paper:
     """The paper with id ``pid`` (``"004"``; ``"4"`` and ``"seed004"`` are accepted too)."""
     from ..result import AnalysisError
 
-    allp = papers(package)
+    allp = papers(packages)
     key = str(pid).strip().lower().removeprefix("seed")
     if key.isdigit():
         key = key.zfill(3)
