@@ -4,8 +4,8 @@
    representative value, listed in the table): certified alpha with gap <= 1e-6
    (:func:`analysis.regularity.holder.holder_exponent`: invariant polytope JSR, exact/Arb certificate).
 2. Daubechies D4 ... D54 from certified ball masks
-   (:func:`analysis.regularity.holder.holder_exponent_enclosure`).
-3. Seed 003's C^2 boundary located to 1e-8 (:func:`analysis.regularity.holder.ck_parameter_set`).
+   (:func:`analysis.regularity.holder_exponent`).
+3. Seed 003's C^2 boundary located to 1e-8 (:func:`analysis.regularity.ck_parameter_set`).
 4. In the same run, the textbook approach on the same schemes: the exact Dyn–Levin norm
    ``||(1/2 S_{a_N})^L||_inf^(1/L)`` (an upper bound of the JSR; catalogue schemes) or the float
    max norm over all ``2^L`` products (Daubechies), with the float brute-force spectral radius
@@ -29,12 +29,10 @@ import sympy as sp
 
 import schemes
 from analysis.stationary.difference import difference_norm
-from analysis.algebra.factorization import smoothing_factor
 from analysis.jsr import brute_force_bounds
-from analysis.regularity.holder import (ball_divide_by_one_plus_z, ball_transition_matrices,
-                                 ck_parameter_set, holder_exponent, holder_exponent_enclosure)
+from analysis.regularity import ck_parameter_set, difference_mask, holder_exponent
+from analysis.regularity.balls import ball_divide_by_one_plus_z, ball_transition_matrices
 from analysis.stationary.transition import transition_matrices
-from analysis.regularity.holder import difference_mask
 
 R = sp.Rational
 #: representative parameter values where the catalogue has no default (or a special one)
@@ -108,7 +106,7 @@ def catalogue_row(label, a, cap):
 def daubechies_row(N, budget, cap):
     e = schemes.get(f"daubechies-{2 * N}")
     t = time.perf_counter()
-    h = holder_exponent_enclosure(e, budget_seconds=budget, rel_gap=5e-7)
+    h = holder_exponent(e, budget_seconds=budget, rel_gap=5e-7)
     dt = time.perf_counter() - t
     import flint
     with flint.ctx.workprec(256):

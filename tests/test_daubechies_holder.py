@@ -1,7 +1,7 @@
 """Certified Hölder exponents of Daubechies' scaling functions from ball-valued masks.
 
 The masks D6 ... D54 are known only by certified Arb enclosures (``schemes.wavelets``); the
-exponents come from :func:`analysis.regularity.holder.holder_exponent_enclosure` (JSR bounds valid for
+exponents come from :func:`analysis.regularity.holder_exponent` (ball route) (JSR bounds valid for
 every mask in the balls). They are compared with the published values in
 ``tests/data/daubechies_holder.csv`` to the published digits, and for D4 with the closed form
 ``2 - log2(1 + sqrt 3)`` (Daubechies–Lagarias 1992).
@@ -20,8 +20,8 @@ import sympy as sp
 
 import schemes
 from analysis.jsr import jsr_bounds
-from analysis.regularity.holder import (ball_divide_by_one_plus_z, ball_transition_matrices,
-                                 holder_exponent, holder_exponent_enclosure)
+from analysis.regularity import holder_exponent
+from analysis.regularity.balls import ball_divide_by_one_plus_z, ball_transition_matrices
 
 DATA = Path(__file__).parent / "data" / "daubechies_holder.csv"
 PUBLISHED = {row["slug"]: row for row in csv.DictReader(DATA.open())}
@@ -29,7 +29,7 @@ PUBLISHED = {row["slug"]: row for row in csv.DictReader(DATA.open())}
 
 def _certified(slug: str, budget: float = 30.0):
     t = time.perf_counter()
-    r = holder_exponent_enclosure(schemes.get(slug), budget_seconds=budget, rel_gap=1e-8)
+    r = holder_exponent(schemes.get(slug), budget_seconds=budget, rel_gap=1e-8)
     return r, time.perf_counter() - t
 
 
@@ -57,9 +57,9 @@ def test_d4_closed_form_and_backends_agree():
     end); both contain 2 - log2(1 + sqrt 3)."""
     exact_alpha = 2 - sp.log(1 + sp.sqrt(3), 2)
     e = schemes.get("daubechies-4")
-    rb = holder_exponent_enclosure(e)
+    rb = holder_exponent(e)
     rx = holder_exponent(e.symbol)
-    rs = holder_exponent_enclosure(e.symbol)          # exact symbol, enclosed in balls
+    rs = holder_exponent(e.symbol, arithmetic="ball")          # exact symbol, enclosed in balls
     for r in (rb, rx, rs):
         assert r.status == "certified"
         assert bool(sp.Le(r.lower, exact_alpha)) and bool(sp.Le(exact_alpha, r.upper))
@@ -73,12 +73,12 @@ def test_intervals_agree_across_precisions_and_tighten():
     """Bounds valid at any precision; wider balls give wider (but overlapping) intervals, and
     more effort (tighter target) never loosens them."""
     e = schemes.get("daubechies-8")
-    coarse = holder_exponent_enclosure(e, prec=40)
-    fine = holder_exponent_enclosure(e, prec=200)
+    coarse = holder_exponent(e, prec=40)
+    fine = holder_exponent(e, prec=200)
     assert coarse.lower <= fine.upper and fine.lower <= coarse.upper
     assert float(coarse.upper - coarse.lower) >= float(fine.upper - fine.lower)
-    loose = holder_exponent_enclosure(e, rel_gap=1e-2, budget_seconds=5)
-    tight = holder_exponent_enclosure(e, rel_gap=1e-10, budget_seconds=30)
+    loose = holder_exponent(e, rel_gap=1e-2, budget_seconds=5)
+    tight = holder_exponent(e, rel_gap=1e-10, budget_seconds=30)
     assert loose.lower <= tight.lower <= tight.upper <= loose.upper or (
         float(tight.upper - tight.lower) <= float(loose.upper - loose.lower))
 
@@ -106,9 +106,9 @@ def test_division_rejects_wrong_sum_rule_order():
     from analysis import AnalysisError
 
     with pytest.raises(AnalysisError):
-        holder_exponent_enclosure(schemes.get("daubechies-6").enclosure(100), sum_rules=4)
+        holder_exponent(schemes.get("daubechies-6").enclosure(100), sum_rules=4)
     with pytest.raises(AnalysisError):
-        holder_exponent_enclosure(schemes.get("daubechies-6").enclosure(100))   # N missing
+        holder_exponent(schemes.get("daubechies-6").enclosure(100))   # N missing
 
 
 @pytest.mark.parametrize("N", [7, 8, 9])

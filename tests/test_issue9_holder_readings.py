@@ -16,7 +16,7 @@ import sympy as sp
 
 from analysis.cli import main
 from analysis.algebra.closed_form import ClosedFormMask, is_zero
-from analysis.regularity.holder import NotConvergent, difference_mask, holder_exponent, smoothness
+from analysis.regularity import NotConvergent, difference_mask, holder_exponent, smoothness
 from analysis.result import AnalysisError
 from analysis.algebra.symbol import LaurentSymbol
 from schemes.wavelets import daubechies_enclosure
@@ -79,7 +79,7 @@ def test_masks_with_nested_radicals_finish(capsys):
     cf = ClosedFormMask(_daubechies_radicals(3))
     assert cf.sum_rules == 3 and any("decided exactly" in h for h in cf.how)
     assert any("proven real" in h for h in cf.how)
-    h = cf.holder(budget_seconds=10)
+    h = holder_exponent(cf, budget_seconds=10)
     assert "enclosed in Arb balls" in h.provenance["source"]
 
 
@@ -131,7 +131,7 @@ def test_daubechies_d8_wrong_closed_form_is_never_certified(capsys):
     assert cf.undecided is None and cf.failure is not None
     assert "a(-1) in [2.82842712475e-100 +/- " in cf.failure
     with pytest.raises(NotConvergent):
-        cf.holder(budget_seconds=5)
+        holder_exponent(cf, budget_seconds=5)
     # a true identity that is neither formal (it needs Vieta: the roots of the D12 quintic sum to
     # -1/2) nor within the root-separation budget (degree <= 23040): inconclusive, with the reason
     roots = "+".join(f"CRootOf(252*x**5 + 126*x**4 + 56*x**3 + 21*x**2 + 6*x + 1, {j})" for j in range(5))
@@ -189,9 +189,10 @@ def test_masks_copied_from_tables(capsys):
     lo, hi = _interval(alpha)
     assert lo <= ref[1] and ref[0] <= hi and abs(float(lo) - 1.6179263111) < 1e-9
     # the witness mask: exact, in the balls, with a(1) = 2 and (1+z)^N | a
-    from analysis.algebra.approx import approximate_reading, typed_radius
+    from analysis.algebra.approx import ApproximateMask, typed_radius
+    from analysis.regularity import holder_exponent
 
-    r = approximate_reading(mask.split(","))
+    r = holder_exponent(ApproximateMask(mask.split(",")))
     N, w = r.witness["sum_rules"], r.witness["witness_mask"]
     assert N == 4
     assert sum(w) == 2 and all(sum((-1) ** k * k**j * x for k, x in enumerate(w)) == 0 for j in range(N))

@@ -5,7 +5,7 @@ import sympy as sp
 
 import schemes
 from analysis.regularity.ranges import verify_smoothness_interval
-from analysis.regularity.holder import smoothness
+from analysis.regularity import smoothness
 from analysis.result import AnalysisError
 
 Q = sp.Rational

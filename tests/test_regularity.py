@@ -5,7 +5,7 @@ import sympy as sp
 
 import schemes
 from analysis.algebra.algebraic import RealAlgebraic
-from analysis.regularity.holder import ck_parameter_set, holder_exponent, smoothness, sobolev_exponent
+from analysis.regularity import ck_parameter_set, holder_exponent, smoothness, sobolev_exponent
 from analysis.result import AnalysisError
 from analysis.algebra.symbol import LaurentSymbol
 

@@ -9,7 +9,7 @@ import sympy as sp
 
 import schemes
 from analysis.cli import main
-from analysis.regularity.holder import sobolev_exponent as regularity_sobolev_exponent
+from analysis.regularity import sobolev_exponent as regularity_sobolev_exponent
 from analysis.result import AnalysisError
 from analysis.regularity.sobolev import (_log2_bounds, berlekamp_massey, sobolev_exponent, sobolev_stable_formula,
                               sobolev_stable_formula_exact)

@@ -6,18 +6,21 @@ rules by about ``1e-43`` and the typed mask itself does not converge (certified)
 (integers, fractions and formulas stay exact), and the question becomes: what is alpha for the
 masks in those balls that satisfy the sum rules?
 
-:func:`approximate_reading` answers it honestly:
+:class:`ApproximateMask` answers it honestly:
 
 1. for ``N = 1, 2, ...`` it constructs an **exact rational** mask with ``a(1) = 2`` and
    ``(1+z)^N | a`` -- the least-norm correction of the typed mask (weighted by the radii) onto
    that affine space -- and checks **exactly** that it lies in the balls; ``N`` is the largest
    order for which this witness exists (so the balls are proven to contain such a mask);
-2. :func:`analysis.regularity.holder.holder_exponent_enclosure` on the balls with ``sum_rules=N``
-   certifies alpha for **every** mask in the balls with ``a(1) = 2`` and ``(1+z)^N | a``.
+2. :func:`analysis.regularity.holder_exponent` on an :class:`ApproximateMask` (the ball route,
+   ``sum_rules=N``) certifies alpha for **every** mask in the balls with ``a(1) = 2`` and
+   ``(1+z)^N | a``; so do the stability and Sobolev routines for their results.
 
->>> r = approximate_reading(["0.25", "0.75", "0.75", "0.25"], start=-2)   # Chaikin to 2 decimals
->>> r.witness["sum_rules"], r.lower <= 2 <= r.upper, float(r.upper - r.lower) > 0.01  # wide balls: +-0.005
-(3, True, True)
+>>> m = ApproximateMask(["0.25", "0.75", "0.75", "0.25"], start=-2)   # Chaikin to 2 decimals
+>>> m.sum_rules, m.radius[0]                     # (1+z)^3 | a for a mask in the balls of +-0.005
+(3, Fraction(1, 200))
+
+``analysis.regularity.holder_exponent(m)`` then certifies alpha for every such mask.
 """
 
 from __future__ import annotations
@@ -28,7 +31,7 @@ from typing import Sequence
 
 import sympy as sp
 
-from ..result import AnalysisError, Result
+from ..result import AnalysisError
 
 _DECIMAL = re.compile(r"^\s*[+-]?(\d*)\.(\d+)(?:[eE]([+-]?\d+))?\s*$|^\s*[+-]?(\d+)\.?()[eE]([+-]?\d+)\s*$")
 
@@ -172,35 +175,17 @@ class ApproximateMask:
                 f"max deviation {float(maxdev):.3g} = {float(in_radii):.3g} radii); "
                 + (self.next_order or f"N = {self.sum_rules} is the largest order"))
 
-    def holder(self, budget_seconds: float = 20.0) -> Result:
-        """Certified alpha for every mask in the balls with N sum rules
-        (:func:`analysis.regularity.holder.holder_exponent_enclosure` on the balls)."""
-        from ..regularity.holder import holder_exponent_enclosure
-
-        N = self.sum_rules
-        prec = 128 + 4 * N
-        h = holder_exponent_enclosure(self.enclosure(prec), sum_rules=N, prec=prec, budget_seconds=budget_seconds)
+    def witness(self) -> dict:
+        """What a result on :meth:`enclosure` adds to its witness: N, the exact witness mask in
+        the balls, its deviation (absolute and in radii), the radii, why N + 1 was not taken."""
         maxdev = max(self.deviation)
         in_radii = max((d / r for d, r in zip(self.deviation, self.radius) if r), default=Fraction(0))
-        witness = {**h.witness, "reading": "approximate", "sum_rules": N,
-                   "witness_mask": [sp.Rational(x.numerator, x.denominator) for x in self.witness_mask],
-                   "max_deviation": sp.Rational(maxdev.numerator, maxdev.denominator),
-                   "max_deviation_in_radii": sp.Rational(in_radii.numerator, in_radii.denominator),
-                   "radii": [sp.Rational(r.numerator, r.denominator) for r in self.radius],
-                   "next_order": self.next_order}
-        prov = {**h.provenance, "message": self.description()}
-        return Result(value=None, lower=h.lower, upper=h.upper, status=h.status, witness=witness, provenance=prov)
-
-
-def approximate_reading(mask: Sequence, start: int = 0, *, budget_seconds: float = 20.0) -> Result:
-    """Certified alpha under the approximate reading of a typed decimal mask (module docstring).
-
-    ``witness``: ``sum_rules`` (N), ``witness_mask`` (the exact rational mask in the balls),
-    ``max_deviation`` (its largest ``|a_k - typed_k|``), ``max_deviation_in_radii``, ``radii``,
-    ``next_order`` (why N + 1 was not taken), plus the witness of
-    :func:`~analysis.regularity.holder.holder_exponent_enclosure`.
-    """
-    return ApproximateMask(mask, start).holder(budget_seconds=budget_seconds)
+        return {"reading": "approximate", "sum_rules": self.sum_rules,
+                "witness_mask": [sp.Rational(x.numerator, x.denominator) for x in self.witness_mask],
+                "max_deviation": sp.Rational(maxdev.numerator, maxdev.denominator),
+                "max_deviation_in_radii": sp.Rational(in_radii.numerator, in_radii.denominator),
+                "radii": [sp.Rational(r.numerator, r.denominator) for r in self.radius],
+                "next_order": self.next_order}
 
 
 def _digits(text: str) -> int:

@@ -9,7 +9,7 @@ spectral factorisation is not). The Hölder exponent only needs
    decided **exactly** here by :func:`is_zero`, a rigorous zero test of algebraic expressions
    (below), and
 2. certified balls around the coefficients (:meth:`_Algebra.enclose`, Arb), for
-   :func:`analysis.regularity.holder.holder_exponent_enclosure` -- the same certificate as for the
+   :func:`analysis.regularity.holder_exponent` (ball route) -- the same certificate as for the
    catalogue's Daubechies masks.
 
 Values and branches
@@ -904,7 +904,7 @@ class ClosedFormMask:
 
     ``sum_rules`` (``N``) and ``a(1) = 2`` are decided exactly (:func:`is_zero`); reality of each
     coefficient is proven the same way (``x - conj(x) = 0``) when it is not real by construction.
-    ``enclosure(prec)`` gives Arb balls for :func:`analysis.regularity.holder.holder_exponent_enclosure`.
+    ``enclosure(prec)`` gives Arb balls for :func:`analysis.regularity.holder_exponent` (the ball route).
 
     >>> m = ClosedFormMask(["(1+sqrt(3))/4", "(3+sqrt(3))/4", "(3-sqrt(3))/4", "(1-sqrt(3))/4"])
     >>> m.sum_rules
@@ -1017,25 +1017,14 @@ class ClosedFormMask:
                 out = [self.algebra.enclose(node, 2 * prec + 128).real for node in self.nodes]
         return out
 
-    def holder(self, budget_seconds: float = 20.0, prec: int | None = None) -> Result:
-        """Certified alpha by the ball route (:func:`holder_exponent_enclosure`)."""
-        from ..regularity.holder import NotConvergent, holder_exponent_enclosure
-
-        if self.undecided is not None:
-            raise AnalysisError(f"{self.undecided} (the ball route needs N decided exactly; "
-                                "a ball containing 0 is no proof of zero)")
-        if self.failure is not None:
-            raise NotConvergent(self.failure)
-        prec = prec if prec is not None else 128 + 4 * self.sum_rules
-        h = holder_exponent_enclosure(self, budget_seconds=budget_seconds, prec=prec)
-        prov = dict(h.provenance)
-        prov["source"] = (f"exact algebraic mask enclosed in Arb balls at {prec} bits; "
-                          + "; ".join(self.how))
-        prov["message"] = ("exact algebraic mask enclosed in Arb balls at "
-                           f"{prec} bits; N = {self.sum_rules} decided exactly by the zero test "
-                           f"({_method_text(self.algebra.methods)})")
-        return Result(value=h.value, lower=h.lower, upper=h.upper, status=h.status,
-                      witness={**h.witness, "reading": "closed form, ball route"}, provenance=prov)
+    def description(self, prec: int) -> tuple[str, str]:
+        """``(source, message)`` for the provenance of a result computed on :meth:`enclosure`
+        at ``prec`` bits: how N, ``a(1) = 2`` and reality were decided exactly."""
+        source = f"exact algebraic mask enclosed in Arb balls at {prec} bits; " + "; ".join(self.how)
+        message = ("exact algebraic mask enclosed in Arb balls at "
+                   f"{prec} bits; N = {self.sum_rules} decided exactly by the zero test "
+                   f"({_method_text(self.algebra.methods)})")
+        return source, message
 
 
 def _cut(e) -> str:

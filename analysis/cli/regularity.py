@@ -61,7 +61,7 @@ def _part(name: str, compute, lines: list, data: dict) -> None:
 
 
 def _alpha_part(args, a, budget):
-    from ..regularity.holder import NotConvergent
+    from ..regularity import NotConvergent
 
     try:
         h = _holder(a, budget, args)
@@ -99,24 +99,20 @@ def _alpha_part(args, a, budget):
 
 def _holder(a, budget, args=None):
     """The alpha Result of ``a`` (cached on ``args`` so that --C reuses it)."""
-    from ..regularity.holder import holder_exponent, holder_exponent_enclosure
+    from ..regularity import holder_exponent
 
     cache = getattr(args, "_holder_cache", None) if args is not None else None
     if cache is not None and cache[0] is a:
         return cache[1]
-    if isinstance(a, LaurentSymbol):
-        h = holder_exponent(a, budget_seconds=budget)
-    elif hasattr(a, "holder"):             # closed-form or approximate reading (ball route)
-        h = a.holder(budget_seconds=budget)
-    else:  # a catalogue entry known by enclosures (Daubechies)
-        h = holder_exponent_enclosure(a, budget_seconds=budget)
+    h = holder_exponent(a, budget_seconds=budget)
     if args is not None:
         args._holder_cache = (a, h)
     return h
 
 
 def _smoothness_part(args, a, budget):
-    from ..regularity.holder import NotConvergent, smoothness
+    from ..regularity import NotConvergent, smoothness
+    from ..regularity.holder import verdict_from_enclosure
 
     j = _int_arg(args.C, "--C")
     if j < 0:
@@ -127,31 +123,13 @@ def _smoothness_part(args, a, budget):
         except NotConvergent as exc:
             s = exc.result()
         else:
-            s = _verdict_from_enclosure(h, j)
+            s = verdict_from_enclosure(h, j)
     else:
         s = smoothness(a, j, budget_seconds=budget)
     verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
     return ([f"{verdict}   [{s.status}] — {s.witness.get('reason')}"],
             {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason"),
              **({"convergent": False} if s.witness.get("convergent") is False else {})})
-
-
-def _verdict_from_enclosure(h, j: int):
-    """C^j iff alpha > j, from a rigorous enclosure of alpha (ball masks)."""
-    from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, Result
-
-    jsr = h.witness.get("jsr")
-    rigorous = jsr is None or jsr.provenance.get("input_kind") != "float"
-    lo, hi = h.lower, h.upper
-    if rigorous and lo is not None and lo > j:
-        return Result(value=True, status=CERTIFIED,
-                      witness={"reason": f"alpha >= {_fmt(lo, 'lower')} > {j} (certified enclosure)"})
-    if rigorous and hi is not None and hi <= j:
-        return Result(value=False, status=CERTIFIED,
-                      witness={"reason": f"alpha <= {_fmt(hi, 'upper')} <= {j} (certified enclosure)"})
-    return Result(value=None, status=INCONCLUSIVE if rigorous else NUMERICAL,
-                  witness={"reason": f"alpha in [{_fmt(lo, 'lower')}, {_fmt(hi, 'upper')}] does not decide "
-                                     f"alpha > {j}: a longer budget would settle it"})
 
 
 def _alternative_reading(args):
@@ -283,7 +261,7 @@ def cmd_holder(args) -> None:
 
 
 def cmd_range(args) -> None:
-    from ..regularity.holder import alpha_curve, ck_parameter_set
+    from ..regularity import alpha_curve, ck_parameter_set
 
     if args.figure:
         check_writable(args.figure, "the figure")

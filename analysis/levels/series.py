@@ -308,7 +308,7 @@ def _holder_hook(a: LaurentSymbol, m: int) -> Result | None:
     """The JSR-based verdict of :func:`analysis.regularity.holder.smoothness` (certified C^m or not)."""
     if not a.is_numeric:
         return None
-    from ..regularity.holder import smoothness
+    from ..regularity import smoothness
 
     r = smoothness(a, m)
     if r.value is None:

@@ -9,3 +9,14 @@ claimed interval (:mod:`.ranges`); two-parameter atlases (:mod:`.atlas`).
 
 Layering: may import :mod:`analysis.algebra`, :mod:`analysis.stationary` and :mod:`analysis.jsr`.
 """
+
+from .atlas import holder_atlas
+from .convergence import NotConvergent, convergence_failure, difference_mask
+from .holder import holder_exponent, smoothness
+from .ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
+from .sobolev import sobolev_exponent
+from .stability import stable_shifts
+
+__all__ = ["NotConvergent", "alpha_curve", "ck_parameter_set", "convergence_failure", "difference_mask",
+           "holder_atlas", "holder_exponent", "smoothness", "sobolev_exponent", "stable_shifts",
+           "verify_smoothness_interval"]

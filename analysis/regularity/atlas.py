@@ -192,7 +192,8 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
     >>> p["alpha"], p["C^2"], p["C^3"], p["status"]
     (3, True, False, 'certified')
     """
-    from .holder import difference_mask, holder_exponent
+    from .convergence import difference_mask
+    from .holder import holder_exponent
 
     t0 = time.perf_counter()
     a = symbol.subs(dict(values)) if values else symbol

@@ -205,9 +205,9 @@ def _max_modulus(mu: sp.Poly):
 
 
 def _log2_bounds(lo: Fraction, hi: Fraction):
-    from .holder import _log2_interval
+    from .convergence import log2_interval
 
-    return _log2_interval(sp.Rational(lo.numerator, lo.denominator), sp.Rational(hi.numerator, hi.denominator))
+    return log2_interval(sp.Rational(lo.numerator, lo.denominator), sp.Rational(hi.numerator, hi.denominator))
 
 
 # --------------------------------------------------------------------------------------------
@@ -293,7 +293,7 @@ def sobolev_stable_formula(balls, N: int, *, prec: int = 192):
     import flint
 
     from ..jsr._exact import arb_to_fraction_bounds
-    from .holder import ball_divide_by_one_plus_z
+    from .balls import ball_divide_by_one_plus_z
 
     for wp in (prec, 2 * prec, 4 * prec):
         with flint.ctx.workprec(wp):

@@ -301,7 +301,7 @@ def _stable_shifts_balls(scheme: Any, *, sum_rules: int | None = None, prec: int
     """Ball masks: certified stable when every root of ``a/(1+z)^N`` is certified off the circle."""
     import flint
 
-    from .holder import ball_divide_by_one_plus_z
+    from .balls import ball_divide_by_one_plus_z
 
     balls, N, prec, source = ball_mask(scheme, sum_rules=sum_rules, prec=prec)
     for wp in (prec + 64, 2 * prec + 64, 4 * prec + 64):
