@@ -24,7 +24,7 @@ import sympy as sp
 
 from analysis.cli import main
 from analysis.jsonable import fmt_bound
-from analysis.algebra.closed_form import enclose
+from analysis.algebra.zero_test import enclose
 
 
 def daubechies_closed_form(N: int) -> list[str]:

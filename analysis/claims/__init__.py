@@ -7,8 +7,8 @@ regularity, levels, nonuniform), never :mod:`analysis.report` or :mod:`analysis.
 
 from .model import (KINDS, LABELS, Claim, Evaluated, Evidence, Figure, Number, Paper, Series, Verdict,
                     certified, compare_verdicts, contains_interval, evaluate_claim, evaluate_paper,
-                    exact_result, exact_set, get_paper, inconclusive, papers, refuted, verdicts_json)
+                    exact_result, exact_set, get_paper, golden_path, inconclusive, papers, refuted, verdicts_json)
 
 __all__ = ["KINDS", "LABELS", "Claim", "Evaluated", "Evidence", "Figure", "Number", "Paper", "Series",
            "Verdict", "certified", "compare_verdicts", "contains_interval", "evaluate_claim", "evaluate_paper",
-           "exact_result", "exact_set", "get_paper", "inconclusive", "papers", "refuted", "verdicts_json"]
+           "exact_result", "exact_set", "get_paper", "golden_path", "inconclusive", "papers", "refuted", "verdicts_json"]

@@ -66,6 +66,7 @@ from __future__ import annotations
 
 import importlib
 import math
+from pathlib import Path
 import pkgutil
 import time
 from dataclasses import dataclass, field
@@ -76,7 +77,7 @@ import sympy as sp
 from ..jsonable import jsonable
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, STATUSES, Result
 
-__all__ = ["KINDS", "LABELS", "Number", "Evidence", "Series", "Figure", "Verdict", "Claim", "Paper",
+__all__ = ["golden_path", "KINDS", "LABELS", "Number", "Evidence", "Series", "Figure", "Verdict", "Claim", "Paper",
            "Evaluated", "papers", "get_paper", "evaluate_claim", "evaluate_paper", "verdicts_json",
            "compare_verdicts", "exact_set", "contains_interval", "certified", "refuted",
            "inconclusive", "exact_result"]
@@ -299,6 +300,8 @@ class Paper:
     claims: tuple = ()
     source: str = ""
     notes: str = ""
+    #: the module that defines ``PAPER`` (set when the paper is found by :func:`papers`)
+    origin: str = field(default="", compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "claims", tuple(self.claims))
@@ -338,8 +341,22 @@ def papers(packages: str | Sequence[str] = PAPER_PACKAGES) -> dict[str, Paper]:
             if isinstance(paper, Paper):
                 if paper.id in found:
                     raise RuntimeError(f"two modules define paper {paper.id}")
+                if not paper.origin:
+                    object.__setattr__(paper, "origin", mod.__name__)
                 found[paper.id] = paper
     return dict(sorted(found.items()))
+
+
+def golden_path(paper: Paper) -> Path | None:
+    """The paper's golden verdicts, ``verdicts.json`` in its folder (package data, shipped with
+    the wheel); ``None`` for a paper defined by a single module (no folder of its own)."""
+    if not paper.origin:
+        return None
+    mod = importlib.import_module(paper.origin)
+    f = getattr(mod, "__file__", None)
+    if not f or Path(f).name != "__init__.py":
+        return None
+    return Path(f).parent / "verdicts.json"
 
 
 def get_paper(pid: str, packages: str | Sequence[str] = PAPER_PACKAGES) -> Paper:

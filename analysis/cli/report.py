@@ -1,15 +1,19 @@
 """``subdiv report`` and ``subdiv check``: proof-check reports of papers and their regression.
 
 * ``subdiv report 004`` (or ``all``) evaluates every claim of the paper(s), writes
-  ``reports/<paper>.md``, ``reports/<paper>.html``, ``reports/figures/`` and the golden file
-  ``reports/verdicts.json`` (statuses and key numbers of every claim), prints progress on stderr
-  and the verdict table on stdout. ``--claim ID`` (repeatable; shell patterns allowed) evaluates
-  and prints only those claims (no files are written unless ``--write``).
-* ``subdiv check`` re-evaluates every claim recorded in ``reports/verdicts.json`` and compares:
-  exit code 0 when everything agrees, 1 with a readable diff when a status changed or a number
-  moved beyond its tolerance.
+  ``<output>/<paper>.md``, ``<output>/<paper>.html``, ``<output>/figures/`` and
+  ``<output>/verdicts.json`` (statuses and key numbers of every claim; ``<output>`` is
+  ``--output DIR`` or ``reports/`` of the current directory), prints progress on stderr and the
+  verdict table on stdout. ``--claim ID`` (repeatable; shell patterns allowed) evaluates and
+  prints only those claims (no files are written unless ``--write``). ``--update-golden`` also
+  writes each paper's golden verdicts, ``papers/<paper>/verdicts.json`` (in a source checkout).
+* ``subdiv check`` re-evaluates every claim of the bundled papers and compares with their golden
+  verdicts (shipped inside ``papers/``, so an installed wheel can check itself; ``--verdicts
+  FILE`` compares with another file): exit code 0 when everything agrees, 1 with a readable diff
+  when a status changed or a number moved beyond its tolerance.
 
-The golden file is what the code computed, reviewed in the diff of a commit — never typed by hand.
+Every file is written atomically (temporary file, then rename). The golden files are what the
+code computed, reviewed in the diff of a commit — never typed by hand.
 
 Examples
 --------
@@ -29,9 +33,10 @@ import sys
 import time
 from pathlib import Path
 
-from ..claims.model import compare_verdicts, evaluate_paper, get_paper, papers, verdicts_json
-from .main import _print
+from ..claims.model import compare_verdicts, evaluate_paper, get_paper, golden_path, papers, verdicts_json
+from ..report.files import atomic_write_text
 from ..result import AnalysisError
+from .main import _print
 
 #: Default output folder: ``reports/`` of the current directory.
 REPORTS = Path("reports")
@@ -69,18 +74,37 @@ def _papers_arg(arg: str):
     return [get_paper(arg)]
 
 
+def _dump(data: dict) -> str:
+    return json.dumps(data, indent=1, ensure_ascii=False, sort_keys=True) + "\n"
+
+
 def cmd_report(args) -> None:
     outdir = Path(args.output) if args.output else REPORTS
     if args.claim and args.write and not args.output:
         raise AnalysisError("--write with --claim would replace the paper's report and golden verdicts in "
                             f"{REPORTS} by a partial one; write elsewhere with --output DIR")
+    if args.claim and args.update_golden:
+        raise AnalysisError("--update-golden needs every claim of the paper: drop --claim")
+    write = args.claim is None or args.write
     if args.output and not outdir.is_dir():
         raise AnalysisError(f"output folder {outdir} does not exist")
-    if (args.claim is None or args.write) and not os.access(outdir, os.W_OK | os.X_OK):
+    if write and not args.output:
+        try:
+            outdir.mkdir(exist_ok=True)
+        except OSError as exc:
+            raise AnalysisError(f"cannot create the output folder {outdir}: {exc.strerror}") from None
+    if write and not os.access(outdir, os.W_OK | os.X_OK):
         raise AnalysisError(f"cannot write to the output folder {outdir}: permission denied")
+    selected = _papers_arg(args.paper)
+    if args.update_golden:
+        for paper in selected:
+            g = golden_path(paper)
+            if g is None or not os.access(g.parent, os.W_OK):
+                raise AnalysisError(f"cannot update the golden verdicts of paper {paper.id}: "
+                                    + ("it has no folder of its own" if g is None else f"{g.parent} is not writable"))
     t0 = time.perf_counter()
     all_results = {}
-    for paper in _papers_arg(args.paper):
+    for paper in selected:
         only = _select(paper, args.claim)
         if only is not None and not only:
             raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
@@ -103,37 +127,66 @@ def cmd_report(args) -> None:
                     _print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
                 for n in v.numbers:
                     _print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
-    write = args.claim is None or args.write
     if write:
         from ..report.render import render_paper
 
         for pid, results in all_results.items():
             for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures):
                 print(f"wrote {p}", file=sys.stderr)
-        golden = outdir / "verdicts.json"
+        combined = outdir / "verdicts.json"
         data = verdicts_json(all_results)
-        if golden.exists() and args.paper != "all":       # keep the other papers' entries
-            old = json.loads(golden.read_text(encoding="utf-8"))
+        if combined.exists() and args.paper != "all":       # keep the other papers' entries
+            try:
+                old = json.loads(combined.read_text(encoding="utf-8"))
+            except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+                old = {}
             old.get("papers", {}).update(data["papers"])
             data["papers"] = dict(sorted(old.get("papers", {}).items()))
-        golden.write_text(json.dumps(data, indent=1, ensure_ascii=False, sort_keys=True) + "\n", encoding="utf-8")
-        print(f"wrote {golden}", file=sys.stderr)
+        atomic_write_text(combined, _dump(data))
+        print(f"wrote {combined}", file=sys.stderr)
+    if args.update_golden:
+        for pid, results in all_results.items():
+            g = golden_path(get_paper(pid))
+            atomic_write_text(g, _dump(verdicts_json({pid: results})))
+            print(f"wrote {g} (golden verdicts: review the diff)", file=sys.stderr)
     if args.json:
         _print(json.dumps(verdicts_json(all_results), indent=1, ensure_ascii=False))
     print(f"\n{sum(len(r) for r in all_results.values())} claims in {time.perf_counter() - t0:.1f} s",
           file=sys.stderr)
 
 
-def cmd_check(args) -> None:
-    golden_path = Path(args.verdicts) if args.verdicts else REPORTS / "verdicts.json"
-    if not golden_path.is_file():
-        raise AnalysisError(f"no golden file {golden_path}: run `subdiv report all` and review it")
+def _read_golden(path: Path) -> dict:
+    if not path.is_file():
+        raise AnalysisError(f"no golden file {path}: run `subdiv report ... --update-golden` and review it")
     try:
-        golden = json.loads(golden_path.read_text(encoding="utf-8"))
+        golden = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
-        raise AnalysisError(f"cannot read the golden file {golden_path}: {str(exc).splitlines()[0]}") from None
+        raise AnalysisError(f"cannot read the golden file {path}: {str(exc).splitlines()[0]}") from None
     if not isinstance(golden, dict) or not isinstance(golden.get("papers"), dict):
-        raise AnalysisError(f"{golden_path} is not a verdicts file (expected {{\"papers\": {{...}}}})")
+        raise AnalysisError(f"{path} is not a verdicts file (expected {{\"papers\": {{...}}}})")
+    return golden
+
+
+def bundled_golden(pids=None) -> tuple[dict, str]:
+    """The golden verdicts shipped in the paper folders (all papers, or ``pids``), merged."""
+    chosen = [get_paper(p) for p in pids] if pids else list(papers().values())
+    merged: dict = {"papers": {}}
+    where = []
+    for paper in chosen:
+        g = golden_path(paper)
+        if g is None:
+            raise AnalysisError(f"paper {paper.id} has no golden verdicts of its own: give --verdicts FILE")
+        merged["papers"].update(_read_golden(g)["papers"])
+        where.append(str(g))
+    return merged, ", ".join(where) if len(where) <= 1 else f"the golden verdicts of {len(where)} papers"
+
+
+def cmd_check(args) -> None:
+    if args.verdicts:
+        golden_path_ = Path(args.verdicts)
+        golden, where = _read_golden(golden_path_), str(golden_path_)
+    else:
+        golden, where = bundled_golden(args.paper)
     t0 = time.perf_counter()
     fresh_results = {}
     pids = args.paper or sorted(golden.get("papers", {}))
@@ -152,18 +205,18 @@ def cmd_check(args) -> None:
     diffs = compare_verdicts(golden, fresh, papers_=list(fresh_results))
     n = sum(len(v) for v in fresh_results.values())
     if args.json:
-        _print(json.dumps({"golden": str(golden_path), "claims": n, "agree": not diffs,
+        _print(json.dumps({"golden": where, "claims": n, "agree": not diffs,
                            "differences": [str(d) for d in diffs], "verdicts": fresh}, indent=1, ensure_ascii=False))
         if diffs:
             raise SystemExit(1)
         return
     if diffs:
-        _print(f"subdiv check: {len(diffs)} difference(s) from {golden_path}:")
+        _print(f"subdiv check: {len(diffs)} difference(s) from {where}:")
         for d in diffs:
             _print(f"  {d}")
-        _print("If the change is intended, regenerate with `subdiv report all` and review the diff.")
+        _print("If the change is intended, regenerate with `subdiv report all --update-golden` and review the diff.")
         raise SystemExit(1)
-    _print(f"subdiv check: {n} claims agree with {golden_path} ({time.perf_counter() - t0:.1f} s)")
+    _print(f"subdiv check: {n} claims agree with {where} ({time.perf_counter() - t0:.1f} s)")
 
 
 def register(subparsers) -> None:
@@ -172,14 +225,17 @@ def register(subparsers) -> None:
     s.add_argument("paper", help="paper id (e.g. 004) or 'all'")
     s.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns); print details")
     s.add_argument("--write", action="store_true", help="with --claim and --output: write a partial report there")
-    s.add_argument("--output", metavar="DIR", help=f"output folder (default {REPORTS})")
+    s.add_argument("--output", metavar="DIR", help="output folder (default: reports/ of the current directory)")
+    s.add_argument("--update-golden", action="store_true",
+                   help="also write each paper's golden verdicts (papers/<paper>/verdicts.json) for review")
     s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
     s.add_argument("--quiet", action="store_true", help="no per-claim progress")
     s.add_argument("--json", action="store_true", help="print the verdicts as JSON")
     s.set_defaults(func=cmd_report)
-    c = subparsers.add_parser("check", help="recompute every claim and compare with reports/verdicts.json")
-    c.add_argument("paper", nargs="*", help="paper ids (default: all in the golden file)")
-    c.add_argument("--verdicts", metavar="FILE", help="golden file (default reports/verdicts.json)")
+    c = subparsers.add_parser("check", help="recompute every claim and compare with the golden verdicts")
+    c.add_argument("paper", nargs="*", help="paper ids (default: every bundled paper, or all in --verdicts)")
+    c.add_argument("--verdicts", metavar="FILE",
+                   help="golden file to compare with (default: each paper's papers/<paper>/verdicts.json)")
     c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")
     c.add_argument("--quiet", action="store_true")
     c.add_argument("--json", action="store_true", help="print the comparison (and the fresh verdicts) as JSON")

@@ -85,24 +85,24 @@ from __future__ import annotations
 
 import itertools
 import time
-from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Any, Sequence
 
 import numpy as np
 import sympy as sp
-from flint import arb, arb_mat, fmpq, fmpq_mat
+from flint import fmpq_mat
 
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
-from ._exact import (Family, arb_precision, arb_to_fraction_bounds, exact_rho_expression,
-                     parse_family, rho_enclosure, root_lower, root_upper, round_down, round_up)
+from ._bounds import _Bounds, _lower_from_word, _rho_word, _time_left
+from ._norms import _solve_norms, arithmetic_of, rigorous_norm_upper
+from ._exact import Family, exact_rho_expression, parse_family, rho_enclosure, round_down, round_up
 from ._hp import certify_polytope_hp
 from ._polytope import build_polytope, certify_polytope, leading_is_real
 from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family
-from ._search import balancing_transform, brute_force_bounds, canonical_word, smp_search
+from ._search import brute_force_bounds, canonical_word, smp_search
 
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
 
@@ -116,115 +116,13 @@ SUBSPACE_MAX_N = 40
 THIN_COND = 1e10
 
 
-@dataclass
-class _Bounds:
-    """Internal: rigorous bounds for the exact family ``F`` (``upper`` may be ``None``)."""
-
-    lower: Fraction
-    upper: Fraction | None
-    word: tuple[int, ...]
-    rho_product: tuple[Fraction, Fraction]
-    method: str
-    arithmetic: str
-    witness: dict = field(default_factory=dict)
-    notes: list[str] = field(default_factory=list)
-
-
-def _time_left(deadline: float) -> float:
-    return deadline - time.perf_counter()
-
-
-def _lower_from_word(F: Family, word: Sequence[int]) -> tuple[Fraction, tuple[Fraction, Fraction]]:
-    lo, hi = rho_enclosure(F, word)
-    return root_lower(lo, len(word)), (lo, hi)
-
-
-def _rho_word(mats: Sequence[np.ndarray], word: Sequence[int]) -> float:
-    """Float ``rho(P_w)^(1/|w|)`` of the canonical rotation of ``w`` (deterministic)."""
-    w = canonical_word(word)
-    P = np.eye(mats[0].shape[0])
-    for i in w:
-        P = P @ mats[i]
-    return float(np.max(np.abs(np.linalg.eigvals(P)))) ** (1.0 / len(w))
-
-
-# --------------------------------------------------------------------------------------------
-# rigorous norm bounds (textbook, in a balanced basis, Arb)
-# --------------------------------------------------------------------------------------------
-
-def _balanced_arb(F: Family) -> list[arb_mat]:
-    """Arb enclosures of ``R A_i R^{-1}`` for a dyadic ``R`` near the sum-of-squares transform."""
-    R, _ = balancing_transform(F.floats)
-    n = F.n
-    Rq = fmpq_mat([[fmpq(*Fraction(float(x)).as_integer_ratio()) for x in row] for row in R])
-    try:
-        Rinv = Rq.inv()
-    except ZeroDivisionError:  # pragma: no cover - R is positive definite
-        Rq = fmpq_mat([[1 if a == b else 0 for b in range(n)] for a in range(n)])
-        Rinv = Rq
-    with arb_precision():
-        Ra, Ria = arb_mat(Rq), arb_mat(Rinv)
-        return [Ra * F.arb(i) * Ria for i in range(F.k)]
-
-
-def _inf_norm_upper(M: arb_mat) -> Fraction:
-    n = M.nrows()
-    with arb_precision():
-        best = Fraction(0)
-        for a in range(n):
-            s = arb(0)
-            for b in range(M.ncols()):
-                s += abs(M[a, b])
-            best = max(best, arb_to_fraction_bounds(s)[1])
-    return best
-
-
-def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
-                        max_products: int = 1 << 14) -> tuple[Fraction, int]:
-    """``min_{l <= L} max_{|w| = l} ||P_w||^(1/l)`` (rigorous, Arb) in a balanced basis; returns
-    ``(bound, l)``. Stops at the time ``deadline`` or when ``k^l`` exceeds ``max_products``, but
-    always completes ``l = 1``."""
-    B = _balanced_arb(F)
-    best = root_upper(max(_inf_norm_upper(M) for M in B), 1)
-    best_l = 1
-    level = B
-    with arb_precision():
-        for l in range(2, max_length + 1):
-            if len(level) * F.k > max_products or _time_left(deadline) <= 0:
-                break
-            new, mx = [], Fraction(0)
-            for P in level:
-                for M in B:
-                    Q = P * M
-                    new.append(Q)
-                    mx = max(mx, _inf_norm_upper(Q))
-                if _time_left(deadline) <= 0:
-                    break
-            else:
-                u = root_upper(mx, l)
-                if u < best:
-                    best, best_l = u, l
-                level = new
-                continue
-            break
-    return best, best_l
-
-
 # --------------------------------------------------------------------------------------------
 # the solvers
 # --------------------------------------------------------------------------------------------
 
-def _arith(F: Family) -> str:
-    if F.kind == "ball":
-        return ("Arb ball arithmetic over the input balls (the bounds hold for every family of "
-                "real matrices with entries in the balls)")
-    return ("exact rational (FLINT fmpq)" if F.exact_q is not None
-            else "Arb ball arithmetic enclosing the exact entries")
-
-
 def _single(F: Family, i: int) -> _Bounds:
     lo, hi = rho_enclosure(F, (i,))
-    return _Bounds(lo, hi, (i,), (lo, hi), "spectral radius (single matrix)", _arith(F),
+    return _Bounds(lo, hi, (i,), (lo, hi), "spectral radius (single matrix)", arithmetic_of(F),
                    {"closed": True, "polytope_vertices": 0})
 
 
@@ -276,7 +174,7 @@ def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap:
             best = max(parts, key=lambda b: b.lower)
             up = max(b.upper for b in parts)
             return _Bounds(best.lower, up, best.word, best.rho_product,
-                           "commuting family: JSR = max_i rho(A_i)", _arith(F),
+                           "commuting family: JSR = max_i rho(A_i)", arithmetic_of(F),
                            {"closed": True, "polytope_vertices": 0})
     if method == "norms":
         return _solve_norms(F, max_length=max_length, deadline=deadline)
@@ -296,7 +194,7 @@ def _combine(F: Family, parts: list[tuple[Any, _Bounds]], method: str, key: str,
     notes = [f"block {b}: {nt}" for b, bb in parts for nt in bb.notes]
     # rho of the witness product for the whole family: max over the blocks (block triangular)
     rp = _lower_from_word(F, best.word)[1]
-    return _Bounds(best.lower, up, best.word, rp, method, _arith(F), wit, notes)
+    return _Bounds(best.lower, up, best.word, rp, method, arithmetic_of(F), wit, notes)
 
 
 def _solve_parts(subs: list[tuple[Any, Family]], kw: dict) -> list[tuple[Any, _Bounds]]:
@@ -340,19 +238,6 @@ def _solve_subspace(F: Family, W: fmpq_mat, **kw: Any) -> _Bounds:
                                 "blocks": [{"block": b, "size": sz, "lower": bb.lower,
                                             "upper": bb.upper, "method": bb.method}
                                            for (b, bb), sz in zip(ps, sizes)]})
-
-
-def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
-    L = max_length
-    while F.k ** L > (1 << 16) and L > 1:
-        L -= 1
-    bf = brute_force_bounds(F.floats, L)
-    word = bf["lower_word"]
-    lower, rp = _lower_from_word(F, word)
-    up, up_l = rigorous_norm_upper(F, max_length, deadline)
-    return _Bounds(lower, up, word, rp, "norms of all products (textbook brute force)",
-                   _arith(F), {"closed": False, "polytope_vertices": 0, "norm_length": up_l,
-                               "products_enumerated_to": L})
 
 
 def _certify_closed(F: Family, r: Fraction, st, cands, lower: Fraction, rel_gap: float):
@@ -581,7 +466,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
             method = "norms of products in a balanced basis (polytope inconclusive)"
             witness["norm_length"] = nl_
     witness.update(cert_info)
-    return _Bounds(lower, upper, word, rp, method, _arith(F), witness, notes)
+    return _Bounds(lower, upper, word, rp, method, arithmetic_of(F), witness, notes)
 
 
 def _solve_zero(F: Family, word, lower, rp, witness, max_length, deadline) -> _Bounds:
@@ -602,11 +487,11 @@ def _solve_zero(F: Family, word, lower, rp, witness, max_length, deadline) -> _B
             witness.update({"closed": True, "polytope_vertices": 0})
             return _Bounds(Fraction(0), Fraction(0), word, rp,
                            f"jointly nilpotent: every product of length n = {n} vanishes (exact)",
-                           _arith(F), witness)
+                           arithmetic_of(F), witness)
     up, l = rigorous_norm_upper(F, max_length, deadline)
     witness.update({"closed": False, "polytope_vertices": 0, "norm_length": l})
     return _Bounds(lower, up, word, rp, "norms of products (no product with rho > 0 found)",
-                   _arith(F), witness)
+                   arithmetic_of(F), witness)
 
 
 # --------------------------------------------------------------------------------------------

@@ -31,11 +31,13 @@ from __future__ import annotations
 
 import hashlib
 import html as _html
+import io
 import os
 from pathlib import Path
 from typing import Mapping, Sequence
 
 from ..claims.model import Evaluated, Figure, Paper
+from .files import atomic_write_bytes, atomic_write_text
 
 __all__ = ["render_paper", "markdown", "html", "render_figure", "render_formula", "summary_table"]
 
@@ -63,8 +65,10 @@ def render_formula(latex: str, outdir: Path) -> str | None:
     try:
         fig.text(0, 0, f"${latex}$", fontsize=12)
         outdir.mkdir(parents=True, exist_ok=True)
-        fig.savefig(path, format="svg", bbox_inches="tight", pad_inches=0.03, transparent=True,
+        buf = io.BytesIO()
+        fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.03, transparent=True,
                     metadata={"Date": None})
+        atomic_write_bytes(path, buf.getvalue())
     except Exception:  # noqa: BLE001 - mathtext cannot parse this formula: text only
         if path.exists():
             path.unlink()
@@ -96,8 +100,10 @@ def render_figure(fig: Figure, outdir: Path) -> str:
     outdir.mkdir(parents=True, exist_ok=True)
     name = f"{fig.name}.png"
     f.tight_layout()
-    f.savefig(outdir / name, metadata={"Software": None})
+    buf = io.BytesIO()
+    f.savefig(buf, format="png", metadata={"Software": None})
     plt.close(f)
+    atomic_write_bytes(outdir / name, buf.getvalue())
     return name
 
 
@@ -295,6 +301,6 @@ def render_paper(paper: Paper, results: Sequence[Evaluated], outdir: str | os.Pa
     written = []
     for ext, fn in (("md", markdown), ("html", html)):
         p = out / f"{paper.id}.{ext}"
-        p.write_text(fn(paper, results, figures, formulas), encoding="utf-8")
+        atomic_write_text(p, fn(paper, results, figures, formulas))
         written.append(p)
     return written

@@ -1,0 +1,93 @@
+"""Rigorous norm bounds of all products (the textbook method, Arb, in a balanced basis): the
+``method="norms"`` solver and the fallback upper bound of the polytope solver."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from flint import arb, arb_mat, fmpq, fmpq_mat
+
+from ._bounds import _Bounds, _lower_from_word, _time_left
+from ._exact import Family, arb_precision, arb_to_fraction_bounds, root_upper
+from ._search import balancing_transform, brute_force_bounds
+
+
+
+def _balanced_arb(F: Family) -> list[arb_mat]:
+    """Arb enclosures of ``R A_i R^{-1}`` for a dyadic ``R`` near the sum-of-squares transform."""
+    R, _ = balancing_transform(F.floats)
+    n = F.n
+    Rq = fmpq_mat([[fmpq(*Fraction(float(x)).as_integer_ratio()) for x in row] for row in R])
+    try:
+        Rinv = Rq.inv()
+    except ZeroDivisionError:  # pragma: no cover - R is positive definite
+        Rq = fmpq_mat([[1 if a == b else 0 for b in range(n)] for a in range(n)])
+        Rinv = Rq
+    with arb_precision():
+        Ra, Ria = arb_mat(Rq), arb_mat(Rinv)
+        return [Ra * F.arb(i) * Ria for i in range(F.k)]
+
+
+def _inf_norm_upper(M: arb_mat) -> Fraction:
+    n = M.nrows()
+    with arb_precision():
+        best = Fraction(0)
+        for a in range(n):
+            s = arb(0)
+            for b in range(M.ncols()):
+                s += abs(M[a, b])
+            best = max(best, arb_to_fraction_bounds(s)[1])
+    return best
+
+
+def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
+                        max_products: int = 1 << 14) -> tuple[Fraction, int]:
+    """``min_{l <= L} max_{|w| = l} ||P_w||^(1/l)`` (rigorous, Arb) in a balanced basis; returns
+    ``(bound, l)``. Stops at the time ``deadline`` or when ``k^l`` exceeds ``max_products``, but
+    always completes ``l = 1``."""
+    B = _balanced_arb(F)
+    best = root_upper(max(_inf_norm_upper(M) for M in B), 1)
+    best_l = 1
+    level = B
+    with arb_precision():
+        for l in range(2, max_length + 1):
+            if len(level) * F.k > max_products or _time_left(deadline) <= 0:
+                break
+            new, mx = [], Fraction(0)
+            for P in level:
+                for M in B:
+                    Q = P * M
+                    new.append(Q)
+                    mx = max(mx, _inf_norm_upper(Q))
+                if _time_left(deadline) <= 0:
+                    break
+            else:
+                u = root_upper(mx, l)
+                if u < best:
+                    best, best_l = u, l
+                level = new
+                continue
+            break
+    return best, best_l
+
+
+def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
+    L = max_length
+    while F.k ** L > (1 << 16) and L > 1:
+        L -= 1
+    bf = brute_force_bounds(F.floats, L)
+    word = bf["lower_word"]
+    lower, rp = _lower_from_word(F, word)
+    up, up_l = rigorous_norm_upper(F, max_length, deadline)
+    return _Bounds(lower, up, word, rp, "norms of all products (textbook brute force)",
+                   arithmetic_of(F), {"closed": False, "polytope_vertices": 0, "norm_length": up_l,
+                               "products_enumerated_to": L})
+
+
+def arithmetic_of(F: Family) -> str:
+    """How the family's entries are represented (for the provenance)."""
+    if F.kind == "ball":
+        return ("Arb ball arithmetic over the input balls (the bounds hold for every family of "
+                "real matrices with entries in the balls)")
+    return ("exact rational (FLINT fmpq)" if F.exact_q is not None
+            else "Arb ball arithmetic enclosing the exact entries")
