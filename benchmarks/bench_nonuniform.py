@@ -1,4 +1,4 @@
-"""Speed of :func:`analysis.nonuniform.nvps.refine` (float path); not a timed test.
+"""Speed of :func:`analysis.nonuniform.refine` (float path); not a timed test.
 
 Run: ``python benchmarks/bench_nonuniform.py [--repeat 5]``. Target: non-uniform refinement of a
 10^4-point polygon to ~10^6 points (7 steps) in under 2 s. Prints one line per case.
@@ -12,7 +12,7 @@ import time
 
 import numpy as np
 
-from analysis.nonuniform.nvps import refine
+from analysis.nonuniform import refine
 
 
 def median_time(fn, repeat: int):

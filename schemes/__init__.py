@@ -2,7 +2,8 @@
 
 ``get(slug)`` returns a :class:`~schemes.catalogue.SchemeEntry` (symbol, parameters, source,
 notes); ``names()`` lists the slugs and ``entries()`` the entries. Classic schemes are in
-:mod:`schemes.classic`, each paper's schemes (and later its claims) in a module of its own.
+:mod:`schemes.classic`, each paper's schemes in a module of its own (the paper's claims are in
+:mod:`papers`).
 
 Examples
 --------

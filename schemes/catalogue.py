@@ -3,8 +3,9 @@
 Every scheme is a :class:`SchemeEntry` with a stable kebab-case slug, its Laurent symbol (exact,
 possibly with free sympy parameters), its bibliographic source and, for schemes defined by a
 paper's rules, the stencils as printed. Classic schemes live in :mod:`schemes.classic`, and each
-paper has a module of its own (:mod:`schemes.seed003`, :mod:`schemes.seed004`) which will also
-hold that paper's claims.
+paper's schemes have a module of their own (:mod:`schemes.seed003`, :mod:`schemes.seed004`); the
+paper's transcriptions, derivations and claims are in its folder of :mod:`papers`
+(``papers/seed003/``).
 
 Convention (see :mod:`analysis.algebra.symbol`): ``(S_a f)_i = sum_j a_{i-2j} f_j``,
 ``a(z) = sum_i a_i z^i``.

@@ -7,6 +7,8 @@ import sympy as sp
 
 from analysis.levels.bounds import check_identity, check_inequality
 from analysis.levels.level_dependent import N
+from papers.seed003 import transcription as T
+from papers.seed003.claims_sec3_lemmas import _identity_item
 from schemes import seed003 as S
 
 BOX = {"alpha": ("1/100", "pi/3"), "omega": "1/100"}
@@ -17,9 +19,9 @@ def _box_for(lhs, rhs):
     return {k: v for k, v in BOX.items() if k in names}
 
 
-@pytest.mark.parametrize("cid", list(S.LEMMA_3_1), ids=list(S.LEMMA_3_1))
+@pytest.mark.parametrize("cid", list(T.LEMMA_3_1), ids=list(T.LEMMA_3_1))
 def test_lemma_3_1_items(cid):
-    lhs, rhs, strict = S.LEMMA_3_1[cid]
+    lhs, rhs, strict = T.LEMMA_3_1[cid]
     r = check_inequality(lhs, rhs, 1, _box_for(lhs, rhs), strict=strict, claim=cid)
     # (iii) upper and (vii) lower use c and c' the wrong way round: false for every alpha > 0
     expected = "refuted" if cid in ("003:Lemma3.1(iii)-upper", "003:Lemma3.1(vii)-lower") else "certified"
@@ -28,15 +30,15 @@ def test_lemma_3_1_items(cid):
         assert r.witness["counterexample"]["n"] >= 1
 
 
-@pytest.mark.parametrize("cid", list(S.LEMMA_3_1_CORRECTED), ids=list(S.LEMMA_3_1_CORRECTED))
+@pytest.mark.parametrize("cid", list(T.LEMMA_3_1_CORRECTED), ids=list(T.LEMMA_3_1_CORRECTED))
 def test_lemma_3_1_corrected(cid):
-    lhs, rhs, strict = S.LEMMA_3_1_CORRECTED[cid]
+    lhs, rhs, strict = T.LEMMA_3_1_CORRECTED[cid]
     assert check_inequality(lhs, rhs, 1, _box_for(lhs, rhs), strict=strict).status == "certified"
 
 
 @pytest.mark.parametrize("cid", ["003:Lemma3.2(ii)", "003:Lemma3.2(vi)"], ids=["ii", "vi"])
 def test_lemma_3_2(cid):
-    lhs, rhs, strict = S.LEMMA_3_2[cid]
+    lhs, rhs, strict = T.LEMMA_3_2[cid]
     assert check_inequality(lhs, rhs, 0, _box_for(lhs, rhs), strict=strict).status == "certified"
 
 
@@ -58,16 +60,16 @@ def test_normalization_sums_are_proven(form, total):
                          ids=["lemma-3.3", "corollary-3.1"])
 def test_lemma_3_3_factorization_proven(coeffs, form):
     z = sp.Symbol("z")
-    e = S.lemma_3_3_e(coeffs)
+    e = T.lemma_3_3_e(coeffs)
     assert check_identity(form.symbol_expr(), (1 + z) / 2 * e).status == "certified"
 
 
 def test_lemma_3_4_d_is_refuted_and_minus_d_is_the_limit():
     z = sp.Symbol("z")
     e = S.TRIGONOMETRIC.difference(1).limit().expr()
-    assert check_identity(S.LEMMA_3_4_D, e).status == "refuted"
-    assert check_identity(S.LEMMA_3_4_D, -e).status == "certified"
-    assert S.LEMMA_3_4_D.subs(z, 1) == -2
+    assert check_identity(T.LEMMA_3_4_D, e).status == "refuted"
+    assert check_identity(T.LEMMA_3_4_D, -e).status == "certified"
+    assert T.LEMMA_3_4_D.subs(z, 1) == -2
 
 
 def test_negative_first_level_rejected():
@@ -79,9 +81,9 @@ def test_negative_first_level_rejected():
 
 def test_identity_items_refute_only_with_a_certified_value():
     """Lemma 3.1/3.2 definition items: a wrong identity is refuted with a ball-certified nonzero value."""
-    ok = S._identity_item(S.BETA[0], -7 * S.OMEGA, "beta_0^n = -7 omega")
+    ok = _identity_item(S.BETA[0], -7 * S.OMEGA, "beta_0^n = -7 omega")
     assert ok.status == "certified"
-    bad = S._identity_item(S.BETA[0], -5 * S.OMEGA, "beta_0^n = -5 omega")
+    bad = _identity_item(S.BETA[0], -5 * S.OMEGA, "beta_0^n = -5 omega")
     assert bad.status == "refuted"
     r = bad.evidence[0].result
     assert r.status == "refuted" and r.provenance["method"] == "acb ball evaluation at a rational point"

@@ -91,6 +91,8 @@ def test_exact_set_handles_points_and_gaps():
 
 
 # ------------------------------------------------------------------------------ seed 004
+from analysis.algebra.linear_forms import read_garbled_linear  # noqa: E402
+from papers.seed004 import derivations as D4, transcription as T4  # noqa: E402
 from schemes import seed004  # noqa: E402
 
 MU, NU, OMEGA = seed004.MU, seed004.NU, seed004.OMEGA
@@ -101,7 +103,7 @@ def _verdict(cid):
 
 
 def test_construction_equals_catalogue_entry():
-    b = seed004.construction()
+    b = D4.construction()
     a = sp.Symbol("a")
     # independent: Q_{2i} - DE by hand with the printed (3.1), (3.2)
     Q = [sp.Rational(c, 128) for c in (-7, 105, 35, -5)]
@@ -119,7 +121,7 @@ def test_construction_equals_catalogue_entry():
 
 def _reflect_and_apply(lab, vals):
     """Independent end-rule computation: numeric ghost points and the (3.6) mask directly."""
-    a = seed004.get_entry("seed004-design-control").symbol.subs(vals)
+    a = D4.get_entry("seed004-design-control").symbol.subs(vals)
     n = 9
     rng = np.random.default_rng(1)
     P = {j: sp.Rational(int(v), 7) for j, v in enumerate(rng.integers(-20, 20, n + 1))}
@@ -131,32 +133,32 @@ def _reflect_and_apply(lab, vals):
     if k is None:
         k = 2 * n + int(lab[3:] or 0)
     val = sum(a.coeff(k - 2 * j) * P[j] for j in range(-2, n + 4) if j in P)
-    form = seed004.derived_end_rules()[lab].subs(vals)
+    form = D4.derived_end_rules()[lab].subs(vals)
     base = 0 if lab in ("P0", "P1", "P2", "P3") else n
     return val, sum(c * P[base + q] for q, c in form.items())
 
 
-@pytest.mark.parametrize("lab", list(seed004.PRINTED_END_RULES))
+@pytest.mark.parametrize("lab", list(T4.PRINTED_END_RULES))
 def test_end_rules_match_direct_ghost_refinement(lab):
     vals = {MU: sp.Rational(3, 17), NU: sp.Rational(-5, 11), OMEGA: sp.Rational(2, 13)}
     direct, derived = _reflect_and_apply(lab, vals)
     assert direct == derived
 
 
-@pytest.mark.parametrize("lab", list(seed004.PRINTED_END_RULES))
+@pytest.mark.parametrize("lab", list(T4.PRINTED_END_RULES))
 def test_end_rule_verdict_follows_printed_coefficients(lab):
-    derived = seed004.derived_end_rules()[lab]
+    derived = D4.derived_end_rules()[lab]
     agree = all(any(sp.expand(r - derived[q] * 128) == 0
-                    for r in seed004.read_garbled_linear(g, seed004._GREEK))
-                for g, idx in seed004.PRINTED_END_RULES[lab]
+                    for r in read_garbled_linear(g, T4._GREEK))
+                for g, idx in T4.PRINTED_END_RULES[lab]
                 for q in [int(idx[1:] or 0) if idx.startswith("n") else int(idx)])
-    agree &= len(seed004.PRINTED_END_RULES[lab]) == len(derived.items())
+    agree &= len(T4.PRINTED_END_RULES[lab]) == len(derived.items())
     assert _verdict(f"004:(3.9)-(3.10)/{lab}").status == (CERTIFIED if agree else REFUTED)
 
 
 def test_theorem_5_1_necessary_set_is_minus_one_to_25_over_7():
     # independent: sample |9/64 - 7nu/64| < 1/4 on a grid of rationals
-    s, _ = seed004._lam5_set()
+    s, _ = D4._lam5_set()
     for q in [sp.Rational(k, 20) for k in range(-40, 90)]:
         assert s.contains(q) == (abs(sp.Rational(9, 64) - 7 * q / 64) < sp.Rational(1, 4))
     v = _verdict("004:Theorem5.1")
@@ -164,7 +166,7 @@ def test_theorem_5_1_necessary_set_is_minus_one_to_25_over_7():
 
 
 def test_inequality_5_7_against_float_eigenvalues():
-    s = seed004.inequality_sets()["5.7"]
+    s = D4.inequality_sets()["5.7"]
     for mu in (-2.0, -0.5, -0.06, -0.04, -0.03, 0.0, 0.3):
         c, D = 7 * mu + 1, 833 * mu ** 2 + 70 * mu + 1
         l8 = (c + np.sqrt(complex(D))) / 128
@@ -173,7 +175,7 @@ def test_inequality_5_7_against_float_eigenvalues():
 
 def test_c6_claim_is_refuted_by_a_c7_member():
     from analysis.stationary.difference import difference_norm
-    a = seed004.get_entry("seed004-design-control").symbol_at(mu="-1/56", nu="29/28", omega="-1/56")
+    a = D4.get_entry("seed004-design-control").symbol_at(mu="-1/56", nu="29/28", omega="-1/56")
     assert difference_norm(a, 8, 1).value < 1            # C^7 by Dyn-Levin
     v = _verdict("004:Sec7(C6)")
     assert v.status == REFUTED and "C^7" in v.corrected
@@ -181,18 +183,18 @@ def test_c6_claim_is_refuted_by_a_c7_member():
 
 def test_theorem_5_3_eigenvalue_list_is_refuted_for_the_double_one_over_64():
     from analysis.stationary.transition import local_eigenvalues
-    r = local_eigenvalues(seed004.get_entry("seed004-l-mu").symbol)
+    r = local_eigenvalues(D4.get_entry("seed004-l-mu").symbol)
     assert r.value[sp.Rational(1, 64)] == 1 and sum(r.value.values()) == 10
     assert _verdict("004:Theorem5.3(eigenvalues)").status == REFUTED
 
 
 def test_gibbs_level_one_conditions():
-    t = seed004.get_entry("seed004-t-nu").symbol
-    z = seed004.zeta_conditions(t, 1)
+    t = D4.get_entry("seed004-t-nu").symbol
+    z = D4.zeta_conditions(t, 1)
     # the paper's own partial sums: zeta_0(-2) = t_-4, zeta_1(-1) = t_-1 + t_-3
     assert sp.expand(z[(0, -2)] - t.coeff(-4)) == 0
     assert sp.expand(z[(1, -1)] - t.coeff(-1) - t.coeff(-3)) == 0
-    s, _ = seed004._zeta_set(t, 1, NU)
+    s, _ = D4._zeta_set(t, 1, NU)
     assert str(s) == "[5/7, 7]"
 
 

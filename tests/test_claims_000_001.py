@@ -11,7 +11,7 @@ import pytest
 import sympy as sp
 
 from analysis import claims as C
-from schemes import seed000, seed001
+from papers import seed000, seed001
 
 
 @pytest.fixture(scope="module")

@@ -10,9 +10,11 @@ import pytest
 import sympy as sp
 
 from analysis.claims.model import compare_verdicts, evaluate_claim, verdicts_json
+from papers.seed003 import PAPER
+from papers.seed003.derivations import _stationary
+from papers.seed003.transcription import LEMMA_3_4_D
 from schemes import seed003 as S
 
-PAPER = S.PAPER
 REPORTS = Path(__file__).resolve().parents[1] / "reports"
 Z, W = sp.Symbol("z"), S.OMEGA
 
@@ -57,7 +59,7 @@ def test_l2_norm_set_is_exactly_the_printed_interval(evaluated):
     """Independent: ||(1/2 S_(a_3))^2|| at the printed endpoint is exactly 1, and < 1 just inside."""
     from analysis.stationary.difference import difference_norm
 
-    a = S._stationary()
+    a = _stationary()
     end = (sp.sqrt(6) - 1) / 80
     assert sp.simplify(difference_norm(a.subs({W: end}), 3, 2).value - 1) == 0
     assert difference_norm(a.subs({W: sp.Rational(18, 1000)}), 3, 2).value < 1
@@ -77,11 +79,11 @@ def test_true_c2_end_is_root_of_quartic(evaluated):
 
 def test_lemma_3_4_d_of_one_is_minus_two(evaluated):
     """Independent: the printed d(1) = -2, while e = 2a/(1+z) has e(1) = a(1) = 2; d = -e exactly."""
-    assert S.LEMMA_3_4_D.subs(Z, 1) == -2
-    a = S._stationary().expr()
+    assert LEMMA_3_4_D.subs(Z, 1) == -2
+    a = _stationary().expr()
     e = sp.cancel(2 * a / (1 + Z))
     assert sp.simplify(e.subs(Z, 1)) == 2
-    assert sp.simplify(S.LEMMA_3_4_D + e) == 0
+    assert sp.simplify(LEMMA_3_4_D + e) == 0
     assert evaluated["003:Lemma3.4(d)"].verdict.status == "refuted"
     assert evaluated["003:Lemma3.4"].verdict.status == "refuted"
 
@@ -89,7 +91,7 @@ def test_lemma_3_4_d_of_one_is_minus_two(evaluated):
 def test_chaikin_at_omega_zero(evaluated):
     import schemes
 
-    assert S._stationary().subs({W: 0}) == schemes.get("chaikin").symbol
+    assert _stationary().subs({W: 0}) == schemes.get("chaikin").symbol
     assert evaluated["003:Sec2(omega=0)"].verdict.status == "certified"
 
 

@@ -177,7 +177,7 @@ NOISY = textwrap.dedent('''
         sys.stdout.flush()
         os.write(1, b"fd1-write-from-library\\n")
         ctypes.CDLL(None).puts(b"c-puts-from-library")      # C stdio, buffered
-        from analysis.cli.main import _emit
+        from analysis.cli.common import _emit
         _emit(args, {"ok": True}, "own text output")
 
 

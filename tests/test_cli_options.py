@@ -118,15 +118,15 @@ BAD = "/nonexistent/dir/x.png"
 
 @pytest.mark.parametrize("argv, module, name", [
     (["range", "--scheme", "four-point", "--C", "1", "--within=-1/8,1/4", "--figure", BAD],
-     "analysis.regularity.holder", "ck_parameter_set"),
+     "analysis.regularity.ranges", "ck_parameter_set"),
     (["atlas", "--scheme", "seed004-design-control", "--param", "omega=0", "--x", "mu=0:1/5:3", "--y", "nu=0:2:3",
       "--figure", BAD], "analysis.regularity.atlas", "holder_atlas"),
     (["refine", "--scheme", "chaikin", "--points", "0,0;1,0;1,1", "--output", "/nonexistent/x.csv"],
      "analysis.stationary.refinement", "refine"),
     (["nonuniform", "refine", "--points", "0,0;1,0;1,1", "--u", "1", "--output", "/nonexistent/x.csv"],
-     "analysis.nonuniform.nvps", "refine"),
-    (["nonuniform", "reproduce", "--figure", BAD], "analysis.nonuniform.nvps", "reproduce"),
-    (["nonuniform", "chamfer", "--figure", BAD], "analysis.nonuniform.nvps", "chamfer_example"),
+     "analysis.nonuniform", "refine"),
+    (["nonuniform", "reproduce", "--figure", BAD], "analysis.nonuniform", "reproduce"),
+    (["nonuniform", "chamfer", "--figure", BAD], "analysis.nonuniform", "chamfer_example"),
     (["reproduce", "--scheme", "exp-chaikin-trig", "--lambdas", "I*t,-I*t", "--param", "t=1", "--plot", BAD],
      "analysis.levels.reproduction", "generation"),
     (["report", "000", "--output", "/nonexistent/dir"], "analysis.cli.report", "evaluate_paper"),
@@ -140,7 +140,7 @@ def test_unwritable_output_fails_before_computing(capsys, monkeypatch, argv, mod
 
 
 def test_output_path_that_is_a_directory_is_refused(capsys, monkeypatch, tmp_path):
-    _forbid(monkeypatch, "analysis.regularity.holder", "ck_parameter_set")
+    _forbid(monkeypatch, "analysis.regularity.ranges", "ck_parameter_set")
     code, out, err = call(capsys, "range", "--scheme", "four-point", "--C", "1", "--within=0,1/4",
                           "--figure", str(tmp_path))
     one_line_error(code, err, "it is a directory")
@@ -245,7 +245,9 @@ def test_report_text_is_independent_of_float_roundoff(monkeypatch, which):
     """The same claim evaluated with two different float64 round-off figures (as on two machines:
     8.9e-16 here, 2.2e-15 there) gives the same verdict text and key numbers."""
     from analysis import nonuniform as nu
-    from schemes import seed000, seed001
+    from papers.seed000 import claims as seed000
+    from papers.seed001 import PAPER as PAPER_001
+    from papers.seed001 import examples as seed001_sect4  # Sect. 4 evaluators: they call claim_* from here
 
     texts = []
     for noise in (8.9e-16, 2.2e-15):
@@ -259,7 +261,7 @@ def test_report_text_is_independent_of_float_roundoff(monkeypatch, which):
             monkeypatch.setattr(seed000.nu, "reproduce", patched)
             claim = _claim(seed000.PAPER, seed000._v_reproduction)
         elif which == "001-reproduction":
-            real = seed001.claim_reproduction
+            real = seed001_sect4.claim_reproduction
 
             def patched(_real=real, _noise=noise):
                 r = _real()
@@ -267,17 +269,17 @@ def test_report_text_is_independent_of_float_roundoff(monkeypatch, which):
                     if v["form_error_level_8"] < 1e-12:
                         v["form_error_level_8"] = _noise
                 return r
-            monkeypatch.setattr(seed001, "claim_reproduction", patched)
-            claim = _claim(seed001.PAPER, seed001._v_reproduction)
+            monkeypatch.setattr(seed001_sect4, "claim_reproduction", patched)
+            claim = _claim(PAPER_001, seed001_sect4._v_reproduction)
         else:
-            real = seed001.claim_chamfer
+            real = seed001_sect4.claim_chamfer
 
             def patched(_real=real, _noise=noise):
                 r = _real()
                 r.witness["midpoint_deviation"][-1] = _noise
                 return r
-            monkeypatch.setattr(seed001, "claim_chamfer", patched)
-            claim = _claim(seed001.PAPER, seed001._v_algorithm_2)
+            monkeypatch.setattr(seed001_sect4, "claim_chamfer", patched)
+            claim = _claim(PAPER_001, seed001_sect4._v_algorithm_2)
         texts.append(_verdict_text(claim.evaluate()))
         monkeypatch.undo()
     assert texts[0] == texts[1]

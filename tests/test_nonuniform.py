@@ -154,7 +154,7 @@ def test_definitions_compared(d, same):
 
 def test_compare_definitions_same_needs_symbolic_proof(monkeypatch):
     # if the symbolic comparison cannot prove equality, "same" is only numerical (one rational example)
-    monkeypatch.setattr(nu, "_same_symbolic", lambda xs, ys: False)
+    monkeypatch.setattr("analysis.nonuniform.definitions._same_symbolic", lambda xs, ys: False)
     r = nu.compare_definitions(3, levels=2)
     assert r.witness["multi_level_equal"] and r.status == "numerical"
     r2 = nu.compare_definitions(2, levels=2)             # the 'same data rule' part is unproved too
@@ -279,13 +279,15 @@ def test_cli_bad_inputs_one_line(capsys, argv, msg):
 
 
 def test_figures(tmp_path):
-    p = nu.plot_chamfer(str(tmp_path / "c.png"), levels=3)
-    q = nu.plot_blended(str(tmp_path / "b.png"), levels=3)
+    from analysis.report.plots import plot_blended, plot_chamfer
+
+    p = plot_chamfer(str(tmp_path / "c.png"), levels=3)
+    q = plot_blended(str(tmp_path / "b.png"), levels=3)
     assert (tmp_path / "c.png").stat().st_size > 1000 and (tmp_path / "b.png").stat().st_size > 1000
     assert p.endswith("c.png") and q.endswith("b.png")
 
 
-@pytest.mark.parametrize("mod", ["schemes.seed000", "schemes.seed001"])
+@pytest.mark.parametrize("mod", ["papers.seed000", "papers.seed001"])
 def test_seed_claims_ids_and_results(mod):
     import importlib
 

@@ -321,7 +321,7 @@ class Paper:
 
 
 #: Packages searched for papers: each module or sub-package with a module-level ``PAPER``.
-PAPER_PACKAGES: tuple[str, ...] = ("papers", "schemes")
+PAPER_PACKAGES: tuple[str, ...] = ("papers",)
 
 
 def papers(packages: str | Sequence[str] = PAPER_PACKAGES) -> dict[str, Paper]:

@@ -68,7 +68,7 @@ def _ascii_map(result, js) -> list[str]:
 
 def cmd_atlas(args) -> None:
     from ..regularity.atlas import holder_atlas, parse_axis, plot_atlas
-    from .main import _emit, check_writable, scheme_from_args
+    from .common import _emit, check_writable, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 
     if args.figure:
@@ -135,7 +135,7 @@ def cmd_atlas(args) -> None:
 
 def register(subparsers) -> None:
     """Add ``subdiv atlas`` to the sub-command parsers of :func:`analysis.cli.main.build_parser`."""
-    from .main import _add_scheme_args
+    from .common import _add_scheme_args
 
     s = subparsers.add_parser("atlas", help="two-parameter map of the Hölder exponent with C^j boundaries")
     _add_scheme_args(s)

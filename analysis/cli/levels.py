@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .main import _emit, _parse_params, check_writable
+from .common import _emit, _parse_params, check_writable
 from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient

@@ -17,13 +17,12 @@ Register with ``analysis.cli.main.main(argv, extra_modules=["analysis.cli.nonuni
 
 from __future__ import annotations
 
-import argparse
 import json
 import math
 
 import numpy as np
 
-from .main import _print, check_writable
+from .common import _print, check_writable
 from ..jsonable import fmt_lower, fmt_upper, jsonable
 from ..result import AnalysisError
 
@@ -189,7 +188,9 @@ def cmd_reproduce(args) -> None:
         check_writable(args.figure, "the figure")
     r = nu.reproduce(args.kind, degree=d, levels=levels)
     if args.figure:
-        _figure(nu.plot_blended, args.figure, levels=min(levels, 7))
+        from ..report.plots import plot_blended
+
+        _figure(plot_blended, args.figure, levels=min(levels, 7))
     w = r.witness
     lines = [f"{args.kind}, NVPS degree {d}: max distance of level-k points from the curve   [{r.status}]"]
     for k, (dv, fe) in enumerate(zip(w["deviation"], w["form_error"])):
@@ -207,7 +208,9 @@ def cmd_chamfer(args) -> None:
         check_writable(args.figure, "the figure")
     r = nu.chamfer_example(levels=levels, degree=_int(args.degree, "--degree", 2, 8))
     if args.figure:
-        _figure(nu.plot_chamfer, args.figure, levels=min(levels, 8))
+        from ..report.plots import plot_chamfer
+
+        _figure(plot_chamfer, args.figure, levels=min(levels, 8))
     w = r.witness
     _out(args, r.to_json(), f"chamfered quadrangle (seed 001 Fig. 3), degree {args.degree}   [{r.status}]\n"
          f"  max distance of points from the exact shape: {w['deviation'][-1]:.3e}\n"
@@ -218,7 +221,7 @@ def cmd_chamfer(args) -> None:
 def cmd_claims(args) -> None:
     import importlib
 
-    mod = importlib.import_module({"000": "schemes.seed000", "001": "schemes.seed001"}[args.seed])
+    mod = importlib.import_module({"000": "papers.seed000", "001": "papers.seed001"}[args.seed])
     rows = []
     for c in mod.CLAIMS:
         if args.id and c["id"] != args.id:

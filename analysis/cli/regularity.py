@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .main import _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
+from .common import _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -69,7 +69,7 @@ def _alpha_part(args, a, budget):
         hint = exc.hint
         if hint is None and getattr(args, "mask", None) is not None:
             from ..algebra.approx import sum_rule_hint
-            from .main import _split_list
+            from .common import _split_list
 
             hint = sum_rule_hint(_split_list(args.mask, "mask"))
         lines = [f"not convergent [certified]: {exc.reason}"]
@@ -137,7 +137,7 @@ def _alternative_reading(args):
     with nested radicals / I / CRootOf (the certified ball route); None otherwise."""
     if getattr(args, "mask", None) is None or args.param:
         return None
-    from .main import _split_list
+    from .common import _split_list
 
     if "(" in args.mask and "CRootOf" in args.mask:      # commas inside CRootOf(p, k)
         from ..algebra.closed_form import split_mask
@@ -261,7 +261,7 @@ def cmd_holder(args) -> None:
 
 
 def cmd_range(args) -> None:
-    from ..regularity import alpha_curve, ck_parameter_set
+    from ..regularity.ranges import alpha_curve, ck_parameter_set
 
     if args.figure:
         check_writable(args.figure, "the figure")

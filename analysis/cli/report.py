@@ -36,7 +36,7 @@ from pathlib import Path
 from ..claims.model import compare_verdicts, evaluate_paper, get_paper, golden_path, papers, verdicts_json
 from ..report.files import atomic_write_text
 from ..result import AnalysisError
-from .main import _print
+from .common import _print
 
 #: Default output folder: ``reports/`` of the current directory.
 REPORTS = Path("reports")

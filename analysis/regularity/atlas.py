@@ -10,7 +10,7 @@ draws the result as a heat map with the C^j boundaries.
 Every sample is exact: the parameter values are rationals, the symbol is substituted exactly, and
 the enclosure ``[alpha_lower, alpha_upper]`` is rigorous (JSR bounds in exact/ball arithmetic).
 Between samples nothing is proven: the atlas is a *map*, and the boundaries it shows are
-located to the final grid spacing only (:func:`analysis.regularity.holder.ck_parameter_set` locates a
+located to the final grid spacing only (:func:`analysis.regularity.ranges.ck_parameter_set` locates a
 one-parameter boundary exactly).
 
 Examples

@@ -352,10 +352,3 @@ def verdict_from_enclosure(h: Result, j: int) -> Result:
                   witness={"reason": f"alpha in [{lo_t}, {hi_t}] does not decide alpha > {j}: "
                                      "a longer budget would settle it"})
 
-
-def __getattr__(name: str):  # transitional (issue 10): the paper modules being moved still import these here
-    if name in ("ck_parameter_set", "alpha_curve"):
-        from . import ranges
-
-        return getattr(ranges, name)
-    raise AttributeError(name)

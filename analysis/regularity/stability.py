@@ -38,7 +38,7 @@ Algorithm (exact)
   gcd, a root being real when its ball is the only one meeting its mirror image).
 * (ii) iff ``Phi_{2n} | a`` for an odd ``n > 1`` with ``phi(2n) <= deg a`` (rational masks;
   over an algebraic field a proper partial factor ``gcd(a, Phi_{2n})`` gives *inconclusive*).
-* Ball masks (Daubechies D6 ...): divide out ``(1+z)^N`` (:func:`~analysis.regularity.holder.ball_divide_by_one_plus_z`)
+* Ball masks (Daubechies D6 ...): divide out ``(1+z)^N`` (:func:`~analysis.regularity.balls.ball_divide_by_one_plus_z`)
   and isolate the roots of the quotient in Arb; if every root ball is certified off the unit
   circle the only zeros on the circle are at ``-1``, so neither (i) nor (ii) can hold.
 

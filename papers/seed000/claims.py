@@ -1,33 +1,22 @@
-"""Seed 000: M. Fang, B. Jeong, J. Yoon, *Non-uniform subdivision schemes reproducing locally
-different curves* (conference abstract) — the conference version of seed 001's NVPS.
-
-Seed 000 writes the shape parameters ``lambda`` on the edges, ``eta(x) = 1/(2(1+x))``,
-``f_{2i} = (1 - eta(lambda_i)) f_i + eta(lambda_i) f_{i+1}``,
-``f_{2i+1} = eta(lambda_i) f_i + (1 - eta(lambda_i)) f_{i+1}``, the update
-``lambda_{2i} = lambda_{2i+1} = sqrt((1 + lambda_i)/2)``, and for d > 2
-``(S_d f)_i = 2^{2-d} sum_j binom(d-2, j) (S_2 f)_{i+j-tau_d}``, ``tau_d = ceil((d-2)/2)``.
-(The abstract glosses ceil(x) as "the smallest integer larger than x"; with that reading tau_d is
-one larger for even d — again only an index shift.)
-
-The schemes are :class:`analysis.nonuniform.nvps.NVPS` objects with ``rule="seed000"`` (not catalogue
-``SchemeEntry`` objects: the masks depend on level and location).
-
-Examples
---------
->>> SCHEMES["nvps000-3"]
-NVPS(degree=3, rule='seed000')
->>> check("000:eta").status
-'certified'
+"""Seed 000, the claims: engine results per statement (``claim_*``, the dict-based ``CLAIMS`` and
+:func:`check` run by ``subdiv nonuniform claims --seed 000``), ``SCHEMES``, and the proof-check
+``PAPER`` (evaluated by ``subdiv report 000``). The exact identities shared with seed 001 come
+from :mod:`papers.seed001`.
 """
-
 from __future__ import annotations
 
 from typing import Callable
 
 import sympy as sp
 
+from analysis import claims as C
 from analysis import nonuniform as nu
+from analysis.jsonable import roundoff_text
 from analysis.result import CERTIFIED, NUMERICAL, REFUTED, AnalysisError, Result
+# shared with seed 001 (the journal version of the same NVPS)
+from papers.seed001.figures import blended_figure
+from papers.seed001.identities import bspline_special_case, exponential_evidence
+from papers.seed001.claims_sec1_3 import _v_equivalence
 
 SOURCE = ("M. Fang, B. Jeong, J. Yoon, Non-uniform subdivision schemes reproducing locally different curves "
           "(conference abstract), seed 000")
@@ -88,15 +77,8 @@ def check(claim_id: str) -> Result:
 
 # ============================================================================================
 # The paper's claims (proof-check): PAPER = Paper(...), evaluated by `subdiv report 000`.
-# Verdicts come from the engine (analysis.nonuniform.nvps) and exact identities, never typed in.
+# Verdicts come from the engine (analysis.nonuniform) and exact identities, never typed in.
 # ============================================================================================
-
-import math  # noqa: E402
-
-from analysis import claims as C  # noqa: E402
-from analysis.jsonable import roundoff_text  # noqa: E402
-
-from . import seed001 as _s001  # noqa: E402  (shared exact identities of the NVPS)
 
 _CMD = "subdiv report 000 --claim '{}'"
 
@@ -147,7 +129,7 @@ def _v_tau():
 
 def _v_s_d():
     r = claim_s_d()
-    ok_b, ev_b = _s001._bspline_special_case()
+    ok_b, ev_b = bspline_special_case()
     per = r.witness
     rows = tuple((str(d), r.value[d], str(per[d]["tau_d"])) for d in per)
     cmp_ok = all(nu.compare_definitions(d, levels=1).witness["one_step_equal_up_to_shift"] for d in range(2, 7))
@@ -157,7 +139,7 @@ def _v_s_d():
                      result=C.exact_result(cmp_ok, "exact rational refinement")), ev_b]
     if r.status != "certified":
         return C.inconclusive("the relation of the two definitions is seen on an exact example but not proved "
-                              "symbolically", settle="a symbolic comparison (analysis.nonuniform.nvps.compare_definitions)",
+                              "symbolically", settle="a symbolic comparison (analysis.nonuniform.compare_definitions)",
                               evidence=ev)
     if cmp_ok and ok_b:
         return C.certified("True as a definition: (S_d f)_i is d - 2 pairwise averages of S_2 f (seed 001's (6)) "
@@ -194,12 +176,12 @@ def _v_update():
 
 
 def _v_reproduction():
-    ids, ev_exact = _s001._exp_evidence()
+    ids, ev_exact = exponential_evidence()
     r = nu.reproduce("circle", degree=2, levels=8)
     ev_num = C.Evidence("float64 replay, circle, d = 2, 8 levels (illustration)",
                         text=f"form error of the level-8 polygon {roundoff_text(r.witness['form_error'][-1])}")
     ok = all(ids[k] for k in ("geometric", "update", "factor"))
-    fig = _s001._blended_figure("000-blended", "seed000")
+    fig = blended_figure("000-blended", "seed000")
     if ok:
         return C.certified(
             "True: an edge sequence with lambda = cos(phi) on a regular polygon of angle step 2 phi (suitably scaled) "
@@ -212,7 +194,7 @@ def _v_reproduction():
 
 
 def _v_regularity():
-    eq = _s001._v_equivalence()
+    eq = _v_equivalence()
     js = {d: nu.junction_smoothness(d, 0.3, 4.0, levels=14, rule="seed000") for d in (2, 3, 4)}
     ev = list(eq.evidence) + [C.Evidence(
         "(d-1)-th divided differences at a junction lambda = 0.3 | 4, seed 000's rules (mpmath)",
@@ -268,6 +250,6 @@ PAPER = C.Paper(
     claims=PAPER_CLAIMS,
     source="shared/seeds/000_84b01bf47b0a175e.txt",
     notes=("The conference version of seed 001's NVPS, with shape parameters lambda (seed 001's u) on the edges. "
-           "The schemes are analysis.nonuniform.nvps.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
+           "The schemes are analysis.nonuniform.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
            "content is the definition (compared exactly with seed 001) and two informal claims."),
 )

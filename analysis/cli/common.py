@@ -1,0 +1,357 @@
+"""What every command of ``subdiv`` shares: reading a scheme and its parameters from the
+command line, option values that begin with ``-`` (:func:`attach_dash_values`), printing through
+the guarded standard output (:func:`_print`, :func:`_emit`: one JSON document with ``--json``,
+nothing of a library), and checking output paths before any computation (:func:`check_writable`).
+
+A scheme is given in one of four ways — a catalogue name (``--scheme``), a mask (``--mask``,
+``--start``), paper-style rules (``--rules``) or a symbol expression (``--symbol``) — with
+parameter values ``--param NAME=VALUE`` (exact: ``1/100``, ``(sqrt(6)-1)/80``; decimals are read
+exactly).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from typing import Sequence
+
+import sympy as sp
+
+from ..jsonable import jsonable
+from ..result import AnalysisError
+from ..algebra.symbol import LaurentSymbol, parse_coefficient
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse with one-line errors (exit code 2)."""
+
+    def error(self, message: str) -> None:  # noqa: D401
+        raise AnalysisError(message)
+
+
+# --------------------------------------------------------------------------------------------
+# scheme input
+# --------------------------------------------------------------------------------------------
+
+def _split_list(text: str, what: str) -> list[str]:
+    items = [t.strip() for t in text.replace(";", ",").split(",")]
+    if not text.strip() or any(not t for t in items):
+        raise AnalysisError(f"malformed {what} {text!r}: give comma-separated numbers, e.g. \"1/4,3/4,3/4,1/4\"")
+    return items
+
+
+def _int_arg(text: str, what: str) -> int:
+    try:
+        return int(text)
+    except (TypeError, ValueError):
+        raise AnalysisError(f"{what} must be an integer, not {text!r}") from None
+
+
+def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
+    out: dict[str, sp.Expr] = {}
+    for item in items or []:
+        if "=" not in item:
+            raise AnalysisError(f"malformed --param {item!r}: use NAME=VALUE, e.g. omega=1/100")
+        name, value = (s.strip() for s in item.split("=", 1))
+        if not name.isidentifier():
+            raise AnalysisError(f"malformed parameter name {name!r}")
+        if name in out:
+            raise AnalysisError(f"--param {name} is given twice ({sp.sstr(out[name])} and {value}): give it once")
+        v = parse_coefficient(value)
+        if v.free_symbols:
+            raise AnalysisError(f"the value of {name} must be a number, not {value!r}")
+        out[name] = v
+    return out
+
+
+def scheme_from_args(args) -> tuple[LaurentSymbol, str]:
+    """The symbol (with --param values substituted) and a label for it."""
+    given = [x for x in ("scheme", "mask", "even", "symbol") if getattr(args, x, None) is not None]
+    if len(given) != 1:
+        raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
+    kind = given[0]
+    if kind == "scheme":
+        import schemes
+
+        entry = schemes.get(args.scheme)
+        symbol, label = entry.symbol, entry.slug
+    elif kind == "mask":
+        symbol = LaurentSymbol.from_mask(_split_list(args.mask, "mask"), start=_int_arg(args.start, "--start"))
+        label = "mask"
+    elif kind == "even":
+        if args.odd is None:
+            raise AnalysisError("--even needs --odd as well")
+        first = _int_arg(args.first, "--first")
+        symbol = LaurentSymbol.from_rules(
+            _split_list(args.even, "even stencil"), _split_list(args.odd, "odd stencil"), first=first,
+            even_first=None if args.even_first is None else _int_arg(args.even_first, "--even-first"),
+            odd_first=None if args.odd_first is None else _int_arg(args.odd_first, "--odd-first"))
+        label = "rules"
+    else:
+        symbol = LaurentSymbol.from_expr(args.symbol)
+        label = "symbol"
+    if kind != "even" and args.odd is not None:
+        raise AnalysisError("--odd is only used together with --even")
+    params = _parse_params(args.param)
+    if params:
+        symbol = symbol.subs(params)
+    return symbol, label
+
+
+def _add_scheme_args(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("scheme (exactly one of)")
+    g.add_argument("--scheme", metavar="NAME", help="catalogue name (see `subdiv list`)")
+    g.add_argument("--mask", metavar="LIST", help='coefficients a_start..a_end, e.g. "1/4,3/4,3/4,1/4"')
+    g.add_argument("--start", default="0", metavar="N", help="exponent of the first mask coefficient (default 0)")
+    g.add_argument("--even", metavar="LIST", help="even stencil: coefficients of f[i+first], f[i+first+1], ...")
+    g.add_argument("--odd", metavar="LIST", help="odd stencil (same offsets as --even unless --odd-first)")
+    g.add_argument("--first", default="0", metavar="P", help="offset of the first stencil coefficient (default 0)")
+    g.add_argument("--even-first", metavar="P")
+    g.add_argument("--odd-first", metavar="P")
+    g.add_argument("--symbol", metavar="EXPR", help='a Laurent polynomial in z, e.g. "(1+z)**4/(8*z**2)"')
+    p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
+    p.add_argument("--json", action="store_true", help="machine-readable output")
+
+
+# --------------------------------------------------------------------------------------------
+# commands
+# --------------------------------------------------------------------------------------------
+
+#: The real standard output while :func:`main` runs a command (fd 1 and ``sys.stdout`` then point
+#: at stderr, so that nothing a library prints can reach stdout); ``None`` outside :func:`main`.
+_COMMAND_STDOUT = None
+
+
+def command_stdout():
+    """The stream for a command's own output (its text or its one JSON document)."""
+    return _COMMAND_STDOUT if _COMMAND_STDOUT is not None else sys.stdout
+
+
+def _print(*objects, **kw) -> None:
+    """``print`` to :func:`command_stdout` — what every command uses for its own output."""
+    print(*objects, file=command_stdout(), **kw)
+
+
+def check_writable(path: str, option: str) -> None:
+    """Fail at once (one-line error) when ``path`` cannot be written — before any computation."""
+    p = os.path.abspath(os.path.expanduser(str(path)))
+    parent = os.path.dirname(p) or "."
+    if os.path.isdir(p):
+        raise AnalysisError(f"cannot write {option} {path!r}: it is a directory")
+    if not os.path.isdir(parent):
+        raise AnalysisError(f"cannot write {option} {path!r}: directory {parent!r} does not exist")
+    if not os.access(parent, os.W_OK | os.X_OK) or (os.path.exists(p) and not os.access(p, os.W_OK)):
+        raise AnalysisError(f"cannot write {option} {path!r}: permission denied")
+
+
+def _emit(args, data: dict, text: str) -> None:
+    if args.json:
+        _print(json.dumps(jsonable(data), indent=2))
+    else:
+        _print(text)
+
+
+def _parse_Ls(text: str) -> list[int]:
+    Ls = [_int_arg(t, "--L") for t in _split_list(text, "--L")]
+    if any(L < 1 or L > 24 for L in Ls):
+        raise AnalysisError("--L values must be between 1 and 24")
+    return Ls
+
+
+def _parse_within(text: str | None):
+    if text is None:
+        return (-sp.oo, sp.oo)
+    parts = [t.strip() for t in text.split(",")]
+    if len(parts) != 2:
+        raise AnalysisError(f"malformed --within {text!r}: use LOW,HIGH, e.g. 0,oo")
+    vals = []
+    for t in parts:
+        if t in ("oo", "+oo", "inf", "+inf"):
+            vals.append(sp.oo)
+        elif t in ("-oo", "-inf"):
+            vals.append(-sp.oo)
+        else:
+            v = parse_coefficient(t)
+            if v.free_symbols:
+                raise AnalysisError(f"--within bounds must be numbers, not {t!r}")
+            vals.append(v)
+    if vals[0] >= vals[1]:
+        raise AnalysisError("--within needs LOW < HIGH")
+    return tuple(vals)
+
+
+def _version() -> str:
+    """The installed version of ``subdiv-workbench``, else the one in ``pyproject.toml``."""
+    try:
+        from importlib.metadata import PackageNotFoundError, version
+
+        return version("subdiv-workbench")
+    except PackageNotFoundError:
+        import re
+        from pathlib import Path
+
+        try:
+            text = (Path(__file__).resolve().parents[2] / "pyproject.toml").read_text(encoding="utf-8")
+        except OSError:
+            return "unknown"
+        m = re.search(r'(?m)^version\s*=\s*"([^"]+)"', text)
+        return m.group(1) if m else "unknown"
+
+
+def _option_table(parser: argparse.ArgumentParser):
+    """(options taking exactly one value, every option string, sub-command parsers) of one parser."""
+    one, known, subs = set(), set(), {}
+    for action in parser._actions:
+        known.update(action.option_strings)
+        if action.option_strings and action.nargs in (None, 1):   # store and append (one value each time)
+            one.update(action.option_strings)
+        if isinstance(action, argparse._SubParsersAction):
+            subs.update(action.choices)
+    return one, known, subs
+
+
+def _option_name(token: str, known: set[str]) -> str | None:
+    """The option string ``token`` stands for (exact, or an unambiguous ``--`` prefix as argparse
+    accepts), ignoring an attached ``=value``; ``None`` when it is not an option of this parser."""
+    head = token.split("=", 1)[0]
+    if head in known:
+        return head
+    if head.startswith("--") and len(head) > 2:
+        cands = [k for k in known if k.startswith(head)]
+        if len(cands) == 1:
+            return cands[0]
+    return None
+
+
+def attach_dash_values(parser: argparse.ArgumentParser, argv: Sequence[str]) -> list[str]:
+    """Rewrite ``--opt VALUE`` as ``--opt=VALUE`` when ``--opt`` takes one value and ``VALUE``
+    begins with ``-`` but is no option string (argparse would reject ``--mask -1/16,0,9/16,...``).
+    Sub-command names switch to the sub-command's own options (recursively, e.g. ``nonuniform
+    decay``); everything after ``--`` is left alone.
+
+    >>> from analysis.cli.main import build_parser
+    >>> p = build_parser()
+    >>> attach_dash_values(p, ["holder", "--mask", "-1/16,0,9/16,1,9/16,0,-1/16", "--start", "-3", "--json"])
+    ['holder', '--mask=-1/16,0,9/16,1,9/16,0,-1/16', '--start=-3', '--json']
+    >>> attach_dash_values(p, ["symbol", "--mask", "--json"])        # a missing value stays an error
+    ['symbol', '--mask', '--json']
+    """
+    out: list[str] = []
+    one, known, subs = _option_table(parser)
+    i = 0
+    while i < len(argv):
+        tok = argv[i]
+        if tok == "--":
+            out.extend(argv[i:])
+            break
+        if not tok.startswith("-"):
+            if tok in subs:
+                one, known, subs = _option_table(subs[tok])
+            out.append(tok)
+            i += 1
+            continue
+        name = None if "=" in tok else _option_name(tok, known)
+        if name in one and i + 1 < len(argv):
+            value = argv[i + 1]
+            if value.startswith("-") and value != "--" and _option_name(value, known) is None:
+                out.append(f"{name}={value}")
+            else:
+                out.extend((tok, value))
+            i += 2
+            continue
+        out.append(tok)
+        i += 1
+    return out
+
+
+def _flush_c_stdio() -> None:
+    """Flush the C library's stdio buffers (output of compiled libraries not yet written)."""
+    try:
+        import ctypes
+
+        ctypes.CDLL(None).fflush(None)
+    except (OSError, AttributeError, TypeError):  # pragma: no cover - no C runtime reachable
+        pass
+
+
+class _StdoutGuard:
+    """While a command runs, file descriptor 1 and ``sys.stdout`` point at stderr, so nothing a
+    library prints (Python ``print`` or C-level writes such as HiGHS's banner) can reach stdout; the
+    command writes its own output through :func:`command_stdout` to the real standard output.
+
+    When ``sys.stdout`` is not file descriptor 1 (pytest's ``capsys``, ``contextlib.redirect_stdout``)
+    the command's output goes to that object and fd 1 is diverted all the same."""
+
+    def __enter__(self):
+        global _COMMAND_STDOUT
+        self.sys_stdout, self.saved_fd, self.own = sys.stdout, None, None
+        try:
+            sys.stdout.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        _flush_c_stdio()
+        try:
+            saved = os.dup(1)
+        except OSError:      # no fd 1 (embedded use): only sys.stdout is diverted
+            saved = None
+        if saved is not None:
+            try:
+                os.dup2(2, 1)
+                self.saved_fd = saved
+            except OSError:
+                os.close(saved)
+        try:
+            fd = self.sys_stdout.fileno()
+        except (AttributeError, OSError, ValueError):
+            fd = None
+        if fd == 1 and self.saved_fd is not None:
+            import io
+
+            s = self.sys_stdout
+            try:
+                self.own = io.TextIOWrapper(open(self.saved_fd, "wb", closefd=False),
+                                            encoding=getattr(s, "encoding", None) or "utf-8",
+                                            errors=getattr(s, "errors", None) or "strict",
+                                            line_buffering=bool(getattr(s, "line_buffering", False)))
+            except Exception:
+                os.dup2(self.saved_fd, 1)    # leave everything as it was
+                os.close(self.saved_fd)
+                raise
+        _COMMAND_STDOUT = self.own if self.own is not None else self.sys_stdout
+        sys.stdout = sys.stderr
+        return self
+
+    def __exit__(self, exc_type, exc, tb) -> bool:
+        global _COMMAND_STDOUT
+        _COMMAND_STDOUT = None
+        try:
+            sys.stdout.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
+        _flush_c_stdio()                     # what C code buffered while fd 1 was stderr goes there
+        sys.stdout = self.sys_stdout
+        broken = False
+        try:
+            if self.own is not None:
+                self.own.flush()
+        except BrokenPipeError:              # `subdiv ... | head`: the reader has gone
+            broken = True
+            if self.saved_fd is not None:
+                devnull = os.open(os.devnull, os.O_WRONLY)
+                os.dup2(devnull, self.saved_fd)
+                os.close(devnull)
+        finally:
+            if self.own is not None:
+                try:
+                    self.own.close()
+                except OSError:
+                    pass
+            if self.saved_fd is not None:
+                os.dup2(self.saved_fd, 1)
+                os.close(self.saved_fd)
+        if broken and exc_type is None:
+            raise BrokenPipeError
+        return False
+

@@ -1,0 +1,184 @@
+"""Seed 003, Sections 4-5: the stencil sums of (2), (3) and the normalized schemes (4), (5);
+equation (7) and Theorem 5.1 (symmetry of the basic limit function)."""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from analysis import claims as C
+from analysis.result import CERTIFIED, INCONCLUSIVE, Result
+from schemes.seed003 import ALPHA, HYPERBOLIC_NORMALIZED, TRIGONOMETRIC, TRIGONOMETRIC_NORMALIZED
+
+from .derivations import _VALS, _f, _s, _stationary, to_h_expr
+
+
+# -------------------------------------------------------------------------- Section 4
+def _sum_identity(form, total, name):
+    from analysis.levels.bounds import check_identity
+
+    r = check_identity(form.stencil_sum(), total)
+    odd = sum(c for i, c in enumerate(form.mask) if (form.start + i) % 2)
+    r2 = check_identity(odd, total)
+    ev = [C.Evidence(f"even stencil sum of {name} = printed closed form", result=r,
+                     latex=sp.latex(to_h_expr(total))),
+          C.Evidence("odd stencil sum = the same", result=r2)]
+    if r.status == "certified" and r2.status == "certified":
+        return C.certified(f"True: both stencil sums of {name} equal the printed closed form exactly (so a^n(-1) = 0 "
+                           "and a^n(1) = 2 x the printed sum).", evidence=ev)
+    if "refuted" in (r.status, r2.status):
+        return C.refuted("the printed sum is wrong", _s(form.stencil_sum()), evidence=ev)
+    return C.inconclusive("not settled", settle="exact simplification", evidence=ev)
+
+
+def _normalized_constants():
+    from analysis.levels.bounds import check_identity
+    from analysis.levels.reproduction import reproduction
+
+    ev, ok = [], True
+    for s in (TRIGONOMETRIC_NORMALIZED, HYPERBOLIC_NORMALIZED):
+        r = check_identity(s.stencil_sum(), 1)
+        odd = sum(c for i, c in enumerate(s.mask) if (s.start + i) % 2)
+        r2 = check_identity(odd, 1)
+        rep = reproduction(s, [0], _VALS)
+        ok &= r.status == r2.status == "certified" and rep.status == "certified"
+        ev.append(C.Evidence(f"{s.slug}: even and odd stencil sums = 1", result=r, text=f"odd: {r2.status}"))
+        ev.append(C.Evidence(f"{s.slug}: reproduction of constants (every level)", result=rep,
+                             text=f"{rep.status} at alpha = pi/5, omega = 1/100"))
+    un = check_identity(TRIGONOMETRIC.stencil_sum(), 1)
+    ev.append(C.Evidence("the unnormalized (2) does not", result=un, text=f"sum = 1? {un.status}"))
+    if ok and un.status == "refuted":
+        return C.certified("True: (4) and (5) have even and odd stencil sums exactly 1 at every level, so they "
+                           "reproduce constants; (2) and (3) do not (their sums are beta^n, gamma^n != 1).", evidence=ev)
+    return C.inconclusive("not settled", settle="see evidence", evidence=ev)
+
+
+def _normalized_convergence():
+    from analysis.levels.series import smoothness
+
+    ev, ok, pts = [], True, []
+    for s in (TRIGONOMETRIC_NORMALIZED, HYPERBOLIC_NORMALIZED):
+        lim_ok = s.limit() == _stationary()
+        for vals in ({"alpha": sp.pi / 5, "omega": sp.Rational(1, 100)},):
+            r = smoothness(s, vals, 2, difference=1)
+            good = r.status == "certified" and bool(r.value) and lim_ok
+            ok &= good
+            pt = f"alpha = {_s(vals['alpha'])}, omega = {_s(vals['omega'])}"
+            if good:
+                pts.append(f"{s.slug} at {pt}")
+            ev.append(C.Evidence(f"{s.slug} at {pt}", result=r,
+                                 text=f"limit = rule (1): {lim_ok}; C^2 via e^n: {r.status}; failed: {r.witness['failed']}"))
+    lead = ("(4) and (5) converge to rule (1) and are C^2 by the same (corrected) analysis, certified only at "
+            f"the single parameter point(s) {'; '.join(pts)}" if ok else
+            f"C^2 could not be certified at every sample point (certified: {'; '.join(pts) or 'none'})")
+    return C.inconclusive(f"Not settled as a general statement: {lead}. One parameter point does not prove the claim "
+                          "for the parameter range; over an alpha box the same-support hypothesis was not certified by "
+                          "the engine's Taylor models for the normalized masks.",
+                          settle="a 2-D box cover of (alpha, omega) for (4) and (5) (same support, series and limit "
+                                 "hypotheses over boxes)", evidence=ev)
+
+
+# -------------------------------------------------------------------------- Section 5
+def _levels_apply(masks_starts, f0_lo, f0):
+    import numpy as np
+
+    lo, f = f0_lo, np.asarray(f0, dtype=float)
+    for a, start in masks_starts:
+        up = np.zeros(2 * len(f) - 1)
+        up[::2] = f
+        f = np.convolve(up, a)
+        lo = 2 * lo + start
+    return lo, f
+
+
+def _blf(form, vals, levels=7):
+    from analysis.levels.reproduction import mask_floats
+
+    masks = [(mask_floats(form, n, vals), form.start) for n in range(levels)]
+    lo, f = _levels_apply(masks, 0, [1.0])
+    k = levels
+    x = [(lo + i) / 2 ** k for i in range(len(f))]
+    return x, f, lo
+
+
+def _eq7():
+    from analysis.levels.level_dependent import ball
+
+    f10 = TRIGONOMETRIC.mask_at(0, _VALS)[list(range(TRIGONOMETRIC.start, TRIGONOMETRIC.end + 1)).index(0)]
+    b = ball(f10 - 1)
+    ne = b.is_finite() and not b.contains(0)
+    enc = Result(value=True if ne else None, status=CERTIFIED if ne else INCONCLUSIVE,
+                 witness={"statement": "f_0^1 - 1 != 0", "enclosure": str(b)},
+                 provenance={"method": "arb enclosure of f_0^1 - 1 (0 not in the ball)",
+                             "arithmetic": "Arb ball enclosure"})
+    ev = [C.Evidence("k = 0 and k = 1 of (7) at j = 0", result=enc,
+                     text=f"(7) gives L(0) = f_0^0 = 1 and L(0) = f_0^1 = beta_1^0 = {_s(f10)} ≈ {_f(sp.N(f10, 20), 12)} "
+                          "at alpha = pi/5, omega = 1/100: contradictory (f_0^1 != 1 certified)"),
+          C.Evidence("why", text="L(j/2^k) = f_j^k for all k needs f_(2j)^(k+1) = f_j^k: an interpolatory scheme. (2) is "
+                     "approximating (f_(2i)^(n+1) = beta_0 f_(i-1) + beta_1 f_i + ...).")]
+    if ne:
+        return C.refuted("(7) cannot hold for the approximating scheme (2): it forces f_0^1 = f_0^0 = 1, but "
+                         "f_0^1 = beta_1^0 != 1 (certified at alpha = pi/5, omega = 1/100).",
+                         corrected="f_j^k - L(j/2^k) -> 0 uniformly as k -> oo (Definition 1.2), not equality; "
+                                   "L is only the limit of the level-k values", evidence=ev,
+                         numbers=[C.Number("f_0^1", float(sp.N(f10, 20)), tol=1e-12)])
+    return C.inconclusive("not settled", settle="higher precision", evidence=ev)
+
+
+def _theorem51():
+    from analysis.levels.bounds import check_identity
+    from analysis.levels.level_dependent import ball
+
+    m = TRIGONOMETRIC.mask
+    sym_rs = [check_identity(m[i], m[len(m) - 1 - i]) for i in range(len(m) // 2)]
+    sym_ok = all(r.status == "certified" for r in sym_rs)
+    sym_res = (Result(value=True, status=CERTIFIED, witness={"pairs": len(sym_rs)},
+                      provenance={"method": "analysis.levels.bounds.check_identity on every pair a_i, a_(-1-i)",
+                                  "arithmetic": "exact"}) if sym_ok else
+               next(r for r in sym_rs if r.status != "certified"))
+    centre = sp.Rational(TRIGONOMETRIC.start + TRIGONOMETRIC.end, 2)
+    # the sum of the translates: prod beta^n telescopes to 1/cos(alpha/2) (Sect. 4 identity)
+    Nn = sp.Symbol("K", integer=True, positive=True)
+    prod = sp.cos(ALPHA / 2 ** (Nn + 1)) / sp.cos(ALPHA / 2)
+    prod_lim = sp.limit(prod, Nn, sp.oo)
+    pb = ball(prod_lim.subs({ALPHA: _VALS["alpha"]}))
+    prod_nz = pb.is_finite() and not pb.contains(0)
+    prod_res = Result(value=prod_lim, status=CERTIFIED if prod_nz else INCONCLUSIVE,
+                      witness={"limit": prod_lim, "at alpha = pi/5": str(pb)},
+                      provenance={"method": "exact limit of the telescoping product (sympy); nonzero at alpha = "
+                                            "pi/5 by an Arb enclosure excluding 0",
+                                  "arithmetic": "exact limit + Arb ball enclosure"})
+    x, f, lo = _blf(TRIGONOMETRIC, _VALS)
+    import numpy as np
+
+    f = np.asarray(f)
+    mirror_c = f[::-1]           # L(-1-x) on the same grid (symmetric grid about the centre)
+    xs = np.asarray(x)
+    err_c = float(np.max(np.abs(f - mirror_c)))
+    mir0 = np.interp(-xs, xs, f, left=0.0, right=0.0)
+    err_0 = float(np.max(np.abs(f - mir0)))
+    fig = C.Figure("blf-003-symmetry", "Basic limit function of (2), alpha = pi/5, omega = 1/100 (7 levels)",
+                   (C.Series("L(x) (level-7 values at x = j/2^7)", tuple(map(float, xs)), tuple(map(float, f))),
+                    C.Series("L(-x): mirror about the y-axis", tuple(map(float, xs)), tuple(map(float, mir0)), "--"),
+                    C.Series("L(-1-x): mirror about x = -1/2", tuple(map(float, xs)), tuple(map(float, mirror_c)), ":")),
+                   xlabel="x (parametrisation of Definition 1.2 / (7))", ylabel="L")
+    ev = [C.Evidence("every level mask is symmetric about -1/2", result=sym_res,
+                     text=f"a^n_i = a^n_(-1-i) for all n (support [{TRIGONOMETRIC.start}, {TRIGONOMETRIC.end}], centre "
+                          f"{_s(centre)}): by induction f^k_i = f^k_(-(2^k-1)-i), so L(x) = L(-1-x)"),
+          C.Evidence("L is not also even", result=prod_res,
+                     text="L(x) = L(-1-x) and L(x) = L(-x) would make L 1-periodic, hence 0 (compact support); but "
+                          f"sum_j L(x - j) = prod_n beta^n = lim cos(alpha/2^(K+1))/cos(alpha/2) = {_s(prod_lim)}, "
+                          f"certified nonzero at alpha = pi/5 (Arb: {pb})"),
+          C.Evidence("numerical picture (level 7)", text=f"max |L(x) - L(-1-x)| = {err_c:.2e}; max |L(x) - L(-x)| = "
+                     f"{err_0:.3f} (alpha = pi/5, omega = 1/100)")]
+    nums = [C.Number("symmetry_centre", centre), C.Number("max_asymmetry_about_0", err_0, tol=1e-6)]
+    if sym_ok and prod_nz:
+        return C.refuted("In the paper's own parametrisation (Definition 1.2 and (7): L(j/2^k) ~ f_j^k) the basic limit "
+                         "function of (2) is symmetric about x = -1/2, the centre of its support [-4, 3], not about the "
+                         "y-axis (certified at alpha = pi/5, omega = 1/100: exact mask symmetry about -1/2 for all "
+                         "parameters, and L != 0 (Arb) cannot have two centres). The "
+                         "proof's induction rests on (7), which is false for an approximating scheme (claim 003:(7)).",
+                         corrected="L(x) = L(-1-x) for all x (symmetric about x = -1/2). Symmetry about the y-axis holds "
+                                   "in the shifted (dual) parametrisation t = x + 1/2, i.e. with f_j^k placed at "
+                                   "t = (j - 1/2)/2^k + 1/2 (f_0^1 = (3/4 + 9w) f_0 + ... at t = 1/4)",
+                         evidence=ev, numbers=nums, figures=[fig])
+    return C.inconclusive("not settled", settle="see evidence", evidence=ev, numbers=nums, figures=[fig])
