@@ -187,12 +187,14 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
             definition = f"mask {[sp.sstr(c) for c in coeffs]} from index {start}"
         elif how == "rules":
             r = t["rules"]
-            if not isinstance(r, Mapping) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first"}:
-                raise AnalysisError("rules = { even = [...], odd = [...], first = p }")
+            if not isinstance(r, Mapping) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
+                raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
             ev = [parse_coefficient(c, locals_=syms) for c in r["even"]]
             od = [parse_coefficient(c, locals_=syms) for c in r["odd"]]
-            symbol = LaurentSymbol.from_rules(ev, od, r.get("first", 0), params=declared)
-            definition = f"rules even {[sp.sstr(c) for c in ev]}, odd {[sp.sstr(c) for c in od]}, first {r.get('first', 0)}"
+            symbol = LaurentSymbol.from_rules(ev, od, r.get("first", 0), even_first=r.get("even_first"),
+                                              odd_first=r.get("odd_first"), params=declared)
+            definition = f"rules even {[sp.sstr(c) for c in ev]}, odd {[sp.sstr(c) for c in od]}, first " + ", ".join(
+                f"{k} {r[k]}" for k in ("first", "even_first", "odd_first") if k in r)
         elif how == "symbol":
             expr = parse_coefficient(str(t["symbol"]), locals_={**syms, "z": sp.Symbol("z")})
             symbol = LaurentSymbol.from_expr(expr, params=declared)
@@ -207,10 +209,14 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
         raise AnalysisError(f"{w}: {exc}") from None
     except (TypeError, KeyError) as exc:
         raise AnalysisError(f"{w}: cannot read {how}: {exc}") from None
-    have = {p.name for p in (symbol.params if symbol is not None else level.params)}
+    if symbol is not None:
+        have = {x.name for c in symbol.mask for x in sp.sympify(c).free_symbols}
+    else:
+        have = {x.name for x in level.params}
     unknown = sorted(set(domains) - have)
     if unknown:
-        raise AnalysisError(f"{w}: unknown parameter {unknown[0]!r} (the scheme's parameters: {', '.join(sorted(have)) or 'none'})")
+        raise AnalysisError(f"{w}: unknown parameter {unknown[0]!r}: it does not occur in the scheme "
+                            f"(its parameters: {', '.join(sorted(have)) or 'none'})")
     return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level)
 
 

@@ -78,9 +78,10 @@ class MaskIdentity(Kind):
                 return LaurentSymbol.from_expr(f["symbol"]), "the printed symbol"
             if "rules" in f:
                 r = f["rules"]
-                if not isinstance(r, dict) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first"}:
-                    raise AnalysisError("rules = { even = [...], odd = [...], first = p }")
-                return LaurentSymbol.from_rules(r["even"], r["odd"], r.get("first", 0)), "the printed rules"
+                if not isinstance(r, dict) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
+                    raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
+                return LaurentSymbol.from_rules(r["even"], r["odd"], r.get("first", 0), even_first=r.get("even_first"),
+                                                odd_first=r.get("odd_first")), "the printed rules"
         except AnalysisError as exc:
             raise AnalysisError(f"{self.where}: {exc}") from None
         other = self.schemes.get(f["same_as"])

@@ -85,18 +85,44 @@ def run_matches(run: dict, lo, hi) -> str | None:
     return "window" if "open_end" in run["left"] or "open_end" in run["right"] else "exact"
 
 
-def which_set(sets: dict, lo, hi) -> str:
-    """Which C^j set the printed interval (lo, hi) actually is (``sets``: j -> ck_parameter_set)."""
+def which_set(sets: dict, lo, hi) -> tuple[str, str]:
+    """Which C^j set the printed interval (lo, hi) actually is (``sets``: j -> ck_parameter_set):
+    a sentence and a short key (``"C^1 set"``, ``"inside the C^1 set"``, ...)."""
     found = {j: m for j, r in sets.items() for m in [next((x for x in map(lambda u: run_matches(u, lo, hi), r.value) if x), None)] if m}
     txt = interval_text(lo, hi)
     exact = [j for j, m in found.items() if m == "exact"]
     window = [j for j, m in found.items() if m == "window"]
     if exact:
-        return f"the printed interval {txt} is the C^{exact[0]} set" + (f" (and the C^j set for j in {exact})" if len(exact) > 1 else "")
+        return (f"the printed interval {txt} is the C^{exact[0]} set" + (f" (and the C^j set for j in {exact})" if len(exact) > 1
+                                                                           else ""), f"the C^{exact[0]} set")
     if window:
         return (f"the printed interval {txt} is the C^j set for j in {window} within the searched interval only "
-                "(an end of it is an end of the search, not a certified boundary)")
-    return f"the printed interval {txt} is none of the C^j sets found"
+                "(an end of it is an end of the search, not a certified boundary)", f"the C^j set for j in {window} (search window)")
+    inside = [j for j, r in sets.items() if any(_run_contains(x, lo, hi) for x in r.value)]
+    if inside:
+        J = max(inside)
+        run = next(x for x in sets[J].value if _run_contains(x, lo, hi))
+        return (f"the printed interval {txt} is none of the C^j sets: it lies inside the C^{J} set, whose run is "
+                f"({_short(run['left'])}, {_short(run['right'])}) (not sharp)", f"inside the C^{J} set")
+    return f"the printed interval {txt} is none of the C^j sets found and lies in none of them", "none"
+
+
+def _value(b: dict, inner: int):
+    """A boundary as a number: exact, the end of the search, or the certified C^j side of its bracket."""
+    if "open_end" in b:
+        return b["open_end"]
+    if "exact" in b:
+        return b["exact"]
+    return b["certified_C^j_at"]
+
+
+def _run_contains(run: dict, lo, hi) -> bool:
+    return _ra(_value(run["left"], 1)).compare(_ra(lo)) <= 0 and _ra(hi).compare(_ra(_value(run["right"], -1))) <= 0
+
+
+def _short(b: dict) -> str:
+    v = _value(b, 0)
+    return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
 
 
 class SmoothnessProfile(Kind):
@@ -109,7 +135,7 @@ class SmoothnessProfile(Kind):
                 "max_j": "largest j to examine (default: generic smoothing factors - 1)",
                 "grid": "grid intervals per C^j search (default 8)", "samples": "alpha sample intervals (default 8)",
                 "tol": "boundary bracket width (default 1e-8)", "at": "values of the other parameters"}
-    example = 'within = "(0, 1/8)"\nclaimed = { j = 1, interval = "(0, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
+    example = 'within = "(1/32, 1/8)"\nclaimed = { j = 1, interval = "(1/16, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
 
     def check(self) -> None:
         self.values()
@@ -189,18 +215,18 @@ class SmoothnessProfile(Kind):
                                      evidence=ev, numbers=nums, sharpness=profile)
         cj = claim["j"]
         clo, chi, _, _ = parse_interval(claim["interval"])
-        which = which_set(sets, clo, chi)
+        which, key = which_set(sets, clo, chi)
         v = verify_smoothness_interval(a, cj, (clo, chi), p)
         ev.insert(0, evidence(f"claimed: C^{cj} on {interval_text(clo, chi)}", v if v.status in (CERTIFIED, REFUTED) else None,
                               text=f"route: {v.witness.get('route')}; {which}"))
-        nums.append(Number("printed interval is", which.split(" is ", 1)[1]))
+        nums.append(Number("printed interval is", key))
         sharp = f"{which}. {profile}"
         if v.value is True:
-            return self.certified(f"C^{cj} on {interval_text(clo, chi)} proven ({v.witness.get('route')}); {which}",
+            return self.certified(f"true, {key}: C^{cj} on {interval_text(clo, chi)} proven ({v.witness.get('route')})",
                                   evidence=ev, numbers=nums, sharpness=sharp)
         if v.value is False:
             true = next((r[1] for r in rows if r[0] == f"C^{cj}"), "see the profile")
-            return self.refuted(f"not C^{cj} at {p.name} = {sp.sstr(v.witness['counterexample'])}; {which}",
+            return self.refuted(f"false: not C^{cj} at {p.name} = {sp.sstr(v.witness['counterexample'])} (certified); {which}",
                                 corrected=f"C^{cj} exactly on {true}", evidence=ev, numbers=nums, sharpness=sharp)
         ev[0] = evidence(ev[0].title, text=ev[0].text)
         return self.inconclusive(f"C^{cj} on {interval_text(clo, chi)} neither proven nor refuted; {which}",
