@@ -120,3 +120,18 @@ def test_every_kind_documents_its_fields(name):
     assert cls.summary and cls.example and cls.__doc__
     with pytest.raises(AnalysisError, match="unknown field 'nonsense'"):
         cls({"nonsense": 1, **({"scheme": "4pt"} if cls.uses_scheme else {})}, S, "t")
+
+
+def test_which_set_a_printed_interval_is():
+    from analysis.claims.kinds.profile import which_set
+    from analysis.result import Result
+
+    w1 = sp.sqrt(5) / 8 - sp.Rational(1, 8)
+    c1 = Result(value=[{"left": {"exact": 0}, "right": {"bracket": (sp.Rational(1, 5), sp.Rational(21, 100)),
+                                                         "certified_C^j_at": sp.Rational(1, 5)}}], status="certified")
+    c0 = Result(value=[{"left": {"open_end": -1}, "right": {"open_end": 1}}], status="certified")
+    sets = {0: c0, 1: c1}
+    assert which_set(sets, 0, sp.Rational(41, 200))[1] == "the C^1 set"             # inside the bracket
+    assert which_set(sets, 0, w1)[1] == "inside the C^1 set"                         # 0.1545 < 1/5: not sharp
+    assert which_set(sets, -1, 1)[1] == "the C^j set for j in [0] (search window)"
+    assert which_set(sets, 0, 2)[1] == "none"

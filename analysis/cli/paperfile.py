@@ -16,6 +16,7 @@ Examples
 
 from __future__ import annotations
 
+import json
 import sys
 from pathlib import Path
 
@@ -38,6 +39,11 @@ def cmd_new_paper(args) -> None:
     except OSError as exc:
         raise AnalysisError(f"cannot write {path}: {exc.strerror or exc}") from None
     print(f"wrote {path}", file=sys.stderr)
+    if args.json:
+        from ..claims.kinds import KIND_CLASSES
+
+        _print(json.dumps({"wrote": str(path), "kinds": list(KIND_CLASSES)}))
+        return
     _print(f"edit {path}, then: subdiv report {path} --output DIR  (and --update-golden; later: subdiv check {path})")
 
 
@@ -46,4 +52,5 @@ def register(subparsers) -> None:
     s = subparsers.add_parser("new-paper", help="write a commented paper-file template (one example claim of each kind)")
     s.add_argument("file", help="the new paper file, FILE.toml")
     s.add_argument("--force", action="store_true", help="replace an existing file")
+    s.add_argument("--json", action="store_true", help="print what was written as JSON")
     s.set_defaults(func=cmd_new_paper)

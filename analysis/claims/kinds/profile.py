@@ -196,6 +196,7 @@ class SmoothnessProfile(Kind):
                           f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
                           "the maximum over the interval is sampled, not certified)")
             nums += [Number("alpha max (sampled) at", best["p"]),
+                     Number("alpha max (sampled)", alo, lower=alo, upper=ahi) if alo == ahi else
                      Number("alpha max (sampled)", float((alo + ahi) / 2), tol=max(1e-6, 2 * float(ahi - alo)),
                             lower=alo, upper=ahi)]
         ev.append(evidence("Hölder exponent over the parameter", text=alpha_line,
