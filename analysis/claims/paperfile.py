@@ -20,6 +20,7 @@ A paper file has a ``[paper]`` table (``id``, ``title``, ``authors``, ``citation
     statement = "verbatim, as printed"
     reading = "our reading, when the print is garbled"
     kind = "sum rules"             # one of analysis.claims.kinds.KIND_CLASSES
+    # optional: title, reading_note, location, command (reproduces it), objects (names it speaks of)
     scheme = "four-point"          # optional when the file has one scheme
     factors = 2                    # the kind's fields
 
@@ -101,7 +102,7 @@ __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
 PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
 SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "parameters", "notes", "title"}
 #: the keys of a claim table that are not fields of its kind
-CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind"}
+CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind", "command", "objects"}
 _DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask")
 
 Catalogue = Callable[[str], Any]
@@ -246,6 +247,8 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
         raise AnalysisError(f"{where}: claims are an array of tables [[claims]]")
     claims = []
     for k, t in enumerate(claims_t, start=1):
+        if not isinstance(t, Mapping):
+            raise AnalysisError(f"{where}: claim #{k} is not a table (write [[claims]] and key = value lines)")
         cid = t.get("id")
         if not isinstance(cid, str) or not cid:
             raise AnalysisError(f"{where}: claim #{k} needs an id (the paper's numbering, e.g. \"Theorem3.1\")")
@@ -257,11 +260,15 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
         cls = kind_class_named(kind, w)
         fields = {x: v for x, v in t.items() if x not in CLAIM_META}
         obj = cls(fields, schemes, w)
-        claims.append(Claim(id=cid, kind=kind, statement=_text(t, "statement", w, required=True),
+        objects = t.get("objects", [obj.fields["scheme"]] if obj.uses_scheme else [])
+        if not isinstance(objects, list) or not all(isinstance(x, str) for x in objects):
+            raise AnalysisError(f"{w}: 'objects' must be a list of names")
+        claims.append(Claim(id=cid, kind=obj.shown_kind(), statement=_text(t, "statement", w, required=True),
                             evaluate=obj.evaluate, title=_text(t, "title", w), reading=_text(t, "reading", w) or None,
                             reading_note=_text(t, "reading_note", w) or None,
-                            objects=(obj.fields["scheme"],) if obj.uses_scheme else (),
-                            command=f"subdiv report {where} --claim '{cid}'", location=_text(t, "location", w)))
+                            objects=tuple(objects),
+                            command=_text(t, "command", w) or f"subdiv report {where} --claim '{cid}'",
+                            location=_text(t, "location", w)))
     notes = [_text(meta, "notes", f"{where}: [paper]")]
     if authors:
         notes.insert(0, "Authors: " + ", ".join(map(str, authors)) + ".")

@@ -220,6 +220,10 @@ class Kind:
     def check(self) -> None:
         """Kind-specific validation at load time (override)."""
 
+    def shown_kind(self) -> str:
+        """The kind shown in reports and verdict files (the kind's name)."""
+        return self.name
+
     def get(self, key: str, default=None):
         return self.fields.get(key, default)
 

@@ -102,6 +102,7 @@ class Python(Kind):
     summary = "a bespoke Python evaluator \"package.module:function\" returning a Verdict"
     uses_scheme = False
     required = {"evaluator": "\"package.module:function\""}
+    optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")"}
     example = 'evaluator = "papers.seed000.claims:_v_eta"'
 
     def check(self) -> None:
@@ -109,6 +110,9 @@ class Python(Kind):
         if not isinstance(ev, str) or ev.count(":") != 1:
             raise AnalysisError(f"{self.where}: evaluator must be \"package.module:function\", not {ev!r}")
         self.function()
+
+    def shown_kind(self) -> str:
+        return str(self.get("reports_as", self.name))
 
     def function(self):
         mod, _, fn = self.get("evaluator").partition(":")
