@@ -146,3 +146,12 @@ def test_new_paper_template_loads_and_evaluates(tmp_path, capsys):
 def test_paper_file_without_catalogue_is_an_error():
     with pytest.raises(AnalysisError, match="catalogue names need the catalogue"):
         parse_paper(SMALL, "p.toml")
+
+
+def test_a_kind_on_the_wrong_sort_of_scheme_fails_at_load():
+    level = '[paper]\nid = "902"\ntitle = "t"\n[schemes.e]\nlevel_mask = ["1/4", "3/4", "3/4", "1/4"]\nstart = -2\n'
+    with pytest.raises(AnalysisError, match="kind 'holder' needs a stationary scheme"):
+        parse_paper(level + '[[claims]]\nid = "a"\nstatement = "s"\nkind = "holder"\nvalue = 1\n', "p.toml")
+    with pytest.raises(AnalysisError, match="needs a level-dependent scheme"):
+        parse_paper(SMALL + '[[claims]]\nid = "a"\nstatement = "s"\nkind = "asymptotic equivalence"\n'
+                    'scheme = "chaikin"\nconverges = true\n', "p.toml", catalogue=lambda n: __import__("schemes").get(n))

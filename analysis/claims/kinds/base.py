@@ -186,6 +186,8 @@ class Kind:
     optional: ClassVar[dict] = {}
     #: does the claim speak of a scheme (field ``scheme``)?
     uses_scheme: ClassVar[bool] = True
+    #: does the kind speak of a level-dependent scheme (``level_mask``) rather than a stationary one?
+    level_scheme: ClassVar[bool] = False
     #: example fields (TOML lines) for the template of ``subdiv new-paper``
     example: ClassVar[str] = ""
     summary: ClassVar[str] = ""
@@ -214,6 +216,10 @@ class Kind:
                 raise AnalysisError(f"{where}: unknown scheme {s!r} (the file defines: "
                                     f"{', '.join(sorted(schemes)) or 'no scheme'})")
             self.scheme = schemes[s]
+            if (self.scheme.level is not None) != self.level_scheme:
+                raise AnalysisError(f"{where}: kind {self.name!r} needs a "
+                                    + ("level-dependent scheme (level_mask)" if self.level_scheme else
+                                       f"stationary scheme; {s!r} is level-dependent"))
         self.check()
 
     # ------------------------------------------------------------------ helpers for kinds

@@ -46,6 +46,8 @@ __all__ = ["WeightedSeries", "AsymptoticEquivalence", "ExponentialReproduction"]
 
 
 class _LevelKind(Kind):
+    level_scheme = True
+
     def level(self):
         if self.scheme.level is None:
             raise AnalysisError(f"{self.where}: kind {self.name!r} needs a level-dependent scheme (level_mask)")
