@@ -4,7 +4,6 @@ and bad paper files (one-line errors; a failing claim is inconclusive, the other
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 

@@ -107,7 +107,7 @@ def which_set(sets: dict, lo, hi) -> tuple[str, str]:
     return f"the printed interval {txt} is none of the C^j sets found and lies in none of them", "none"
 
 
-def _value(b: dict, inner: int):
+def _value(b: dict):
     """A boundary as a number: exact, the end of the search, or the certified C^j side of its bracket."""
     if "open_end" in b:
         return b["open_end"]
@@ -117,11 +117,11 @@ def _value(b: dict, inner: int):
 
 
 def _run_contains(run: dict, lo, hi) -> bool:
-    return _ra(_value(run["left"], 1)).compare(_ra(lo)) <= 0 and _ra(hi).compare(_ra(_value(run["right"], -1))) <= 0
+    return _ra(_value(run["left"])).compare(_ra(lo)) <= 0 and _ra(hi).compare(_ra(_value(run["right"]))) <= 0
 
 
 def _short(b: dict) -> str:
-    v = _value(b, 0)
+    v = _value(b)
     return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
 
 
