@@ -95,6 +95,8 @@ CASES = {
     "nonuniform-chamfer": (["nonuniform", "chamfer", "--levels", "4"], lambda d: "midpoint_deviation" in d["witness"]),
     "nonuniform-claims": (["nonuniform", "claims", "--seed", "000"], lambda d: len(d) > 0 and "status" in d[0]),
     "check": (["check", "000"], lambda d: d["agree"] is True and d["claims"] > 0),
+    "new-paper": (["new-paper", os.path.join(__import__("tempfile").mkdtemp(), "p.toml")],        # issue 11
+                  lambda d: d["wrote"].endswith("p.toml") and "smoothness profile" in d["kinds"]),
 }
 
 

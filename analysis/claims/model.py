@@ -99,7 +99,7 @@ KINDS = ("mask identity", "factorization", "sum rules", "norm test", "smoothness
 def _to_float(x) -> float | None:
     try:
         v = complex(sp.N(sp.sympify(x), 30))
-    except (TypeError, ValueError, sp.SympifyError):
+    except (TypeError, ValueError, AttributeError, sp.SympifyError):   # text such as "(0, 1/8)": no float
         return None
     if v.imag != 0 or math.isnan(v.real):
         return None
@@ -415,14 +415,16 @@ def evaluate_paper(paper: Paper, progress: Callable[[int, int, Evaluated], None]
     return out
 
 
-def verdicts_json(results: Mapping[str, Sequence[Evaluated]]) -> dict:
+def verdicts_json(results: Mapping[str, Sequence[Evaluated]], titles: Mapping[str, str] | None = None) -> dict:
     """The golden-file content: per paper, per claim, the status and key numbers.
+
+    ``titles`` (paper id -> title) for papers that are not bundled (paper files).
 
     Only what :func:`compare_verdicts` checks goes in (plus kind and summary, for reading); no
     timings or dates, so that regenerating an unchanged report leaves the file unchanged.
     """
     out: dict = {"schema": 1, "papers": {}}
-    allp = papers()
+    allp = papers() if titles is None else {}
     for pid, evs in sorted(results.items()):
         paper = allp.get(pid)
         claims = {}
@@ -434,7 +436,8 @@ def verdicts_json(results: Mapping[str, Sequence[Evaluated]]) -> dict:
                 "summary": ev.verdict.summary,
                 "numbers": {n.name: n.to_json() for n in ev.verdict.numbers},
             }
-        out["papers"][pid] = {"title": paper.title if paper else "", "claims": claims}
+        title = titles[pid] if titles is not None and pid in titles else (paper.title if paper else "")
+        out["papers"][pid] = {"title": title, "claims": claims}
     return out
 
 

@@ -12,6 +12,10 @@
   FILE`` compares with another file): exit code 0 when everything agrees, 1 with a readable diff
   when a status changed or a number moved beyond its tolerance.
 
+* ``subdiv report FILE.toml`` and ``subdiv check FILE.toml`` do the same for a paper file
+  (:mod:`analysis.claims.paperfile`, issue 11); its golden verdicts are ``FILE.verdicts.json``
+  beside it (``--update-golden`` writes them).
+
 Every file is written atomically (temporary file, then rename). The golden files are what the
 code computed, reviewed in the diff of a commit — never typed by hand.
 
@@ -22,6 +26,8 @@ Examples
     subdiv report all
     subdiv report 004 --claim '004:Theorem5.2(m=1)'
     subdiv check
+    subdiv report examples/four-point.toml --output /tmp/r
+    subdiv check examples/four-point.toml
 """
 
 from __future__ import annotations
@@ -34,6 +40,7 @@ import time
 from pathlib import Path
 
 from ..claims.model import compare_verdicts, evaluate_paper, get_paper, golden_path, papers, verdicts_json
+from ..claims.paperfile import golden_file, load_paper
 from ..report.files import atomic_write_text
 from ..result import AnalysisError
 from .common import _print
@@ -78,6 +85,84 @@ def _dump(data: dict) -> str:
     return json.dumps(data, indent=1, ensure_ascii=False, sort_keys=True) + "\n"
 
 
+def is_paper_file(arg: str) -> bool:
+    """A paper file (``*.toml``) rather than a bundled paper id."""
+    return str(arg).endswith(".toml")
+
+
+def _catalogue(name: str):
+    import schemes
+
+    return schemes.get(name)
+
+
+def load_file(path):
+    """The paper file at ``path`` (catalogue names resolved by :mod:`schemes`)."""
+    return load_paper(path, catalogue=_catalogue)
+
+
+def _print_details(results) -> None:
+    for ev in results:
+        v = ev.verdict
+        _print(f"\n{ev.claim.id}: {v.label}\n  {v.summary}")
+        for t, x in (("corrected", v.corrected), ("sharpness", v.sharpness), ("settle", v.settle)):
+            if x:
+                _print(f"  {t}: {x}")
+        for e in v.evidence:
+            _print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
+        for n in v.numbers:
+            _print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
+
+
+def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
+    combined = outdir / "verdicts.json"
+    if combined.exists() and merge:       # keep the other papers' entries
+        try:
+            old = json.loads(combined.read_text(encoding="utf-8"))
+        except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+            old = {}
+        if not isinstance(old, dict) or not isinstance(old.get("papers"), dict):
+            old = {"papers": {}}
+        old["papers"].update(data["papers"])
+        data = {**data, "papers": dict(sorted(old["papers"].items()))}
+    atomic_write_text(combined, _dump(data))
+    print(f"wrote {combined}", file=sys.stderr)
+
+
+def _report_file(args, outdir: Path, write: bool) -> None:
+    """``subdiv report FILE.toml``: one paper file."""
+    path = Path(args.paper)
+    paper = load_file(path)
+    golden = golden_file(path)
+    if args.update_golden and not os.access(golden.parent, os.W_OK):
+        raise AnalysisError(f"cannot write the golden verdicts {golden}: {golden.parent} is not writable")
+    only = _select(paper, args.claim)
+    if only is not None and not only:
+        raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
+    t0 = time.perf_counter()
+    print(f"paper {paper.id} ({path}): {paper.title} ({len(only) if only is not None else len(paper.claims)} claims)",
+          file=sys.stderr, flush=True)
+    results = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+    data = verdicts_json({paper.id: results}, titles={paper.id: paper.title})
+    if args.json:
+        _print(json.dumps(data, indent=1, ensure_ascii=False))
+    else:
+        _print(f"\n== {paper.id}: {paper.title}")
+        _print(_table(results))
+        if only is not None:
+            _print_details(results)
+    if write:
+        from ..report.render import render_paper
+
+        for p in render_paper(paper, results, outdir, with_figures=not args.no_figures):
+            print(f"wrote {p}", file=sys.stderr)
+        _write_combined(outdir, data, merge=True)
+    if args.update_golden:
+        atomic_write_text(golden, _dump(data))
+        print(f"wrote {golden} (golden verdicts: review the diff)", file=sys.stderr)
+    print(f"\n{len(results)} claims in {time.perf_counter() - t0:.1f} s", file=sys.stderr)
+
+
 def cmd_report(args) -> None:
     outdir = Path(args.output) if args.output else REPORTS
     if args.claim and args.write and not args.output:
@@ -95,6 +180,8 @@ def cmd_report(args) -> None:
             raise AnalysisError(f"cannot create the output folder {outdir}: {exc.strerror}") from None
     if write and not os.access(outdir, os.W_OK | os.X_OK):
         raise AnalysisError(f"cannot write to the output folder {outdir}: permission denied")
+    if is_paper_file(args.paper):
+        return _report_file(args, outdir, write)
     selected = _papers_arg(args.paper)
     if args.update_golden:
         for paper in selected:
@@ -117,33 +204,14 @@ def cmd_report(args) -> None:
         _print(f"\n== {paper.id}: {paper.title}")
         _print(_table(results))
         if only is not None:
-            for ev in results:
-                v = ev.verdict
-                _print(f"\n{ev.claim.id}: {v.label}\n  {v.summary}")
-                for t, x in (("corrected", v.corrected), ("sharpness", v.sharpness), ("settle", v.settle)):
-                    if x:
-                        _print(f"  {t}: {x}")
-                for e in v.evidence:
-                    _print(f"  - {e.title}: {e.text}" if e.text else f"  - {e.title}")
-                for n in v.numbers:
-                    _print(f"  {n.name} = {n.exact_text()}" + (f" ≈ {n.float!r}" if n.float is not None else ""))
+            _print_details(results)
     if write:
         from ..report.render import render_paper
 
         for pid, results in all_results.items():
             for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures):
                 print(f"wrote {p}", file=sys.stderr)
-        combined = outdir / "verdicts.json"
-        data = verdicts_json(all_results)
-        if combined.exists() and args.paper != "all":       # keep the other papers' entries
-            try:
-                old = json.loads(combined.read_text(encoding="utf-8"))
-            except (OSError, UnicodeDecodeError, json.JSONDecodeError):
-                old = {}
-            old.get("papers", {}).update(data["papers"])
-            data["papers"] = dict(sorted(old.get("papers", {}).items()))
-        atomic_write_text(combined, _dump(data))
-        print(f"wrote {combined}", file=sys.stderr)
+        _write_combined(outdir, verdicts_json(all_results), merge=args.paper != "all")
     if args.update_golden:
         for pid, results in all_results.items():
             g = golden_path(get_paper(pid))
@@ -182,22 +250,38 @@ def bundled_golden(pids=None) -> tuple[dict, str]:
 
 
 def cmd_check(args) -> None:
-    if args.verdicts:
+    files = [p for p in (args.paper or []) if is_paper_file(p)]
+    if files and len(files) != len(args.paper):
+        raise AnalysisError("check paper files and bundled papers separately")
+    loaded = {}
+    if files:
+        for f in files:
+            paper = load_file(f)
+            if paper.id in loaded:
+                raise AnalysisError(f"two paper files define paper {paper.id}")
+            loaded[paper.id] = paper
+        if args.verdicts:
+            golden, where = _read_golden(Path(args.verdicts)), args.verdicts
+        else:
+            golden, where = {"papers": {}}, ", ".join(str(golden_file(f)) for f in files)
+            for f in files:
+                golden["papers"].update(_read_golden(golden_file(f))["papers"])
+    elif args.verdicts:
         golden_path_ = Path(args.verdicts)
         golden, where = _read_golden(golden_path_), str(golden_path_)
     else:
         golden, where = bundled_golden(args.paper)
     t0 = time.perf_counter()
     fresh_results = {}
-    pids = args.paper or sorted(golden.get("papers", {}))
+    pids = list(loaded) or args.paper or sorted(golden.get("papers", {}))
     for pid in pids:
-        paper = get_paper(pid)
+        paper = loaded[pid] if loaded else get_paper(pid)
         only = _select(paper, args.claim)
         if only is not None and not only:
             raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
         print(f"checking paper {paper.id} ...", file=sys.stderr, flush=True)
         fresh_results[paper.id] = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
-    fresh = verdicts_json(fresh_results)
+    fresh = verdicts_json(fresh_results, titles={k: p.title for k, p in loaded.items()} if loaded else None)
     if args.claim:   # compare only the selected claims
         sel = {ev.claim.id for evs in fresh_results.values() for ev in evs}
         golden = {"papers": {pid: {"claims": {k: v for k, v in golden["papers"].get(pid, {}).get("claims", {}).items()
@@ -214,7 +298,8 @@ def cmd_check(args) -> None:
         _print(f"subdiv check: {len(diffs)} difference(s) from {where}:")
         for d in diffs:
             _print(f"  {d}")
-        _print("If the change is intended, regenerate with `subdiv report all --update-golden` and review the diff.")
+        again = " ".join(files) if files else "all"
+        _print(f"If the change is intended, regenerate with `subdiv report {again} --update-golden` and review the diff.")
         raise SystemExit(1)
     _print(f"subdiv check: {n} claims agree with {where} ({time.perf_counter() - t0:.1f} s)")
 
@@ -222,18 +307,20 @@ def cmd_check(args) -> None:
 def register(subparsers) -> None:
     """Add ``report`` and ``check`` to the ``subdiv`` command."""
     s = subparsers.add_parser("report", help="proof-check report of a paper (or all): verdicts, Markdown, HTML")
-    s.add_argument("paper", help="paper id (e.g. 004) or 'all'")
+    s.add_argument("paper", help="paper id (e.g. 004), 'all', or a paper file FILE.toml")
     s.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns); print details")
     s.add_argument("--write", action="store_true", help="with --claim and --output: write a partial report there")
     s.add_argument("--output", metavar="DIR", help="output folder (default: reports/ of the current directory)")
     s.add_argument("--update-golden", action="store_true",
-                   help="also write each paper's golden verdicts (papers/<paper>/verdicts.json) for review")
+                   help="also write each paper's golden verdicts (papers/<paper>/verdicts.json, or FILE.verdicts.json "
+                        "beside a paper file) for review")
     s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
     s.add_argument("--quiet", action="store_true", help="no per-claim progress")
     s.add_argument("--json", action="store_true", help="print the verdicts as JSON")
     s.set_defaults(func=cmd_report)
     c = subparsers.add_parser("check", help="recompute every claim and compare with the golden verdicts")
-    c.add_argument("paper", nargs="*", help="paper ids (default: every bundled paper, or all in --verdicts)")
+    c.add_argument("paper", nargs="*", help="paper ids or paper files FILE.toml (golden: FILE.verdicts.json) "
+                   "(default: every bundled paper, or all in --verdicts)")
     c.add_argument("--verdicts", metavar="FILE",
                    help="golden file to compare with (default: each paper's papers/<paper>/verdicts.json)")
     c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")

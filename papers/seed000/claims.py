@@ -5,11 +5,13 @@ from :mod:`papers.seed001`.
 """
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Callable
 
 import sympy as sp
 
 from analysis import claims as C
+from analysis.claims.paperfile import load_paper
 from analysis import nonuniform as nu
 from analysis.jsonable import roundoff_text
 from analysis.result import CERTIFIED, NUMERICAL, REFUTED, AnalysisError, Result
@@ -80,7 +82,6 @@ def check(claim_id: str) -> Result:
 # Verdicts come from the engine (analysis.nonuniform) and exact identities, never typed in.
 # ============================================================================================
 
-_CMD = "subdiv report 000 --claim '{}'"
 
 
 def _v_eta():
@@ -210,46 +211,7 @@ def _v_regularity():
         evidence=ev, numbers=[C.Number("omega_d4_junction", js[4].witness["omega_junction"][-1], tol=0.05)])
 
 
-def _c(cid, kind, statement, fn, title, *, reading=None, note=None, command=None, location=""):
-    return C.Claim(id=cid, kind=kind, statement=statement, evaluate=fn, title=title, reading=reading,
-                   reading_note=note, objects=("nvps000-d",), command=command or _CMD.format(cid), location=location)
-
-
-PAPER_CLAIMS = [
-    _c("000:S_2", "mask identity", "f_{2i}^{k+1} = (1 - η(λ_i^k))f_i^k + η(λ_i^k)f_{i+1}^k, f_{2i+1}^{k+1} = "
-       "η(λ_i^k)f_i^k + (1 - η(λ_i^k))f_{i+1}^k, where η(x) := 1/(2(1+x)).", _v_eta, "The order-2 rule S_2",
-       location="Proposed subdivision schemes",
-       command="subdiv nonuniform refine --degree 2 --points '0,0;1,0;1,1;0,1' --u 1 --closed --rule seed000"),
-    _c("000:update", "identity", "The shape parameters λ_i^k are updated by the rule λ_{2i}^{k+1} = λ_{2i+1}^{k+1} = "
-       "√((1 + λ_i^k)/2).", _v_update, "Parameter update (vs seed 001)",
-       reading="the parameter update of the NVPS of seed 001 (the journal version of the same scheme by the same "
-               "authors), for every order d",
-       note="On its own the rule is a valid definition; the check compares it with seed 001's rule (2) and "
-            "Algorithm 1, which the abstract's scheme is meant to be.", location="Proposed subdivision schemes",
-       command="subdiv nonuniform compare-definitions --degree 4 --levels 3"),
-    _c("000:tau_d", "identity", "For d > 2, let τ_d = ⌈(d-2)/2⌉, where ⌈x⌉ indicates the smallest integer larger "
-       "than x.", _v_tau, "The shift tau_d", location="Proposed subdivision schemes"),
-    _c("000:S_d", "identity", "The d th-order scheme S_d is defined as (S_d f^k)_i = 1/2^{d-2} Σ_{j=0}^{d-2} "
-       "binom(d-2, j) (S_2 f^k)_{i+j-τ_d}, d > 2.", _v_s_d, "The order-d scheme S_d",
-       location="Proposed subdivision schemes",
-       command="subdiv nonuniform compare-definitions --degree 5 --levels 3"),
-    _c("000:reproduction", "reproduction", "In each refinement step, the shape parameters are updated by the rule "
-       "such that locally different analytic curves like trigonometric curves can be reproduced and blended.",
-       _v_reproduction, "Trigonometric curves reproduced and blended", location="Abstract",
-       command="subdiv nonuniform reproduce --kind circle --degree 2 --levels 8 --figure blended.png"),
-    _c("000:regularity", "smoothness", "The regularity of the limit curves is discussed based on the asymptotically "
-       "equivalent relation.", _v_regularity, "Regularity via asymptotic equivalence", location="Abstract",
-       command="subdiv nonuniform junction --degree 4 --u-left 0.3 --u-right 4 --levels 14 --rule seed000"),
-]
-
-PAPER = C.Paper(
-    id="000",
-    title="Non-uniform Subdivision Schemes Reproducing Locally Different Curves",
-    citation="M. Fang, B. Jeong, J. Yoon, Non-uniform subdivision schemes reproducing locally different curves "
-             "(conference abstract, 2 pp.)",
-    claims=PAPER_CLAIMS,
-    source="shared/seeds/000_84b01bf47b0a175e.txt",
-    notes=("The conference version of seed 001's NVPS, with shape parameters lambda (seed 001's u) on the edges. "
-           "The schemes are analysis.nonuniform.NVPS(d, rule='seed000'). The abstract proves nothing; its checkable "
-           "content is the definition (compared exactly with seed 001) and two informal claims."),
-)
+#: the claims and metadata are data (issue 11): papers/seed000/paper.toml, each claim a `python` claim
+#: naming its evaluator above; the file is read once the evaluators exist (they are imported by name)
+PAPER = load_paper(Path(__file__).with_name("paper.toml"))
+PAPER_CLAIMS = list(PAPER.claims)

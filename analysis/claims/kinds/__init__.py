@@ -1,0 +1,50 @@
+"""The library of claim kinds (issue 11): each kind a small class with its fields, its
+validation and ``evaluate() -> Verdict`` computed by the engine (never a typed-in verdict).
+
+A paper file (:mod:`analysis.claims.paperfile`) names a kind by ``kind = "..."``; :data:`KIND_CLASSES`
+maps each name to its class. Layering: part of :mod:`analysis.claims`; imports the engine layers
+below (algebra, stationary, regularity, levels) and :mod:`analysis.claims.model`, never the
+report or the command line, the catalogue or the papers (a ``python`` claim imports its
+evaluator by name at evaluation time).
+
+Examples
+--------
+>>> sorted(KIND_CLASSES)[:4]
+['asymptotic equivalence', 'cited', 'ck range', 'eigenvalues']
+>>> kind_class("sum rule")
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, symmetry, weighted series
+
+Not (yet) kinds — they stay ``python`` claims: end rules of open polygons, Gibbs conditions,
+symmetry of the basic limit function, eigenvalue inequalities as sets in a parameter.
+
+References
+----------
+DESIGN.md ("Results contract"); issue 11.
+"""
+
+from __future__ import annotations
+
+from ...result import AnalysisError
+from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
+from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
+from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
+from .other import Cited, Inequality, Python
+from .profile import SmoothnessProfile
+from .regularity import CkRange, Holder, NormTest, Sobolev
+
+#: kind name -> class, in the order of the ``subdiv new-paper`` template
+KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
+    MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
+    SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Cited, Python)}
+
+
+def kind_class(name: str) -> type[Kind]:
+    """The class of the kind ``name`` (an :class:`AnalysisError` listing the kinds otherwise)."""
+    if name in KIND_CLASSES:
+        return KIND_CLASSES[name]
+    raise AnalysisError(f"unknown kind {name!r}; the kinds are: {', '.join(sorted(KIND_CLASSES))}")
+
+
+__all__ = ["KIND_CLASSES", "kind_class", "Kind", "SchemeSpec", "Domain", "parse_number", "parse_interval"]

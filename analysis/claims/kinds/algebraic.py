@@ -1,0 +1,308 @@
+"""Claim kinds decided by exact algebra on the symbol: mask identity, sum rules and smoothing
+factors, symmetry, support, local-matrix eigenvalues, polynomial generation/reproduction.
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.algebra.symbol import LaurentSymbol
+>>> from analysis.claims.kinds.base import SchemeSpec
+>>> w = sp.Symbol("w")
+>>> four = LaurentSymbol.from_mask([-w, 0, sp.Rational(1, 2) + w, 1, sp.Rational(1, 2) + w, 0, -w], start=-3)
+>>> S = {"4pt": SchemeSpec("4pt", four)}
+>>> SumRules({"factors": 2, "exceptional": [{"at": {"w": "1/16"}, "factors": 4}]}, S, "x").evaluate().label
+'CERTIFIED TRUE'
+>>> v = SumRules({"factors": 3}, S, "x").evaluate()
+>>> v.label, v.corrected
+('REFUTED', 'a(z) = ((1+z)/2)^2 b(z) for generic parameters (sum rules of order 2); exceptional: w = 1/16: 4 factors')
+
+Algorithm
+---------
+Exact synthetic division by ``(1+z)`` (:func:`analysis.algebra.factorization.smoothing_factor`),
+exact coefficient comparison, the exact characteristic polynomial of the local subdivision
+matrix (:func:`analysis.stationary.transition.local_eigenvalues`), Conti–Hormann derivative
+conditions (:func:`analysis.algebra.factorization.polynomial_reproduction`).
+
+References
+----------
+N. Dyn, D. Levin, *Subdivision schemes in geometric modelling*, Acta Numer. 11 (2002).
+C. Conti, K. Hormann, *Polynomial reproduction for univariate subdivision schemes of any arity*,
+J. Approx. Theory 163 (2011) 413-437.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ...algebra.factorization import polynomial_generation, polynomial_reproduction, smoothing_factor, sum_rules, symmetry
+from ...algebra.symbol import LaurentSymbol
+from ...result import AnalysisError
+from ...stationary.transition import basic_limit_support, local_eigenvalues
+from ..model import Number, Verdict, exact_result
+from .base import Kind, evidence, parse_number
+
+__all__ = ["MaskIdentity", "SumRules", "Symmetry", "Support", "Eigenvalues", "Reproduction"]
+
+
+def _same(x, y) -> bool:
+    return sp.simplify(sp.sympify(x) - sp.sympify(y)) == 0
+
+
+def _cond_text(cond) -> str:
+    return ", ".join(f"{k} = {sp.sstr(v)}" for k, v in cond.items())
+
+
+class MaskIdentity(Kind):
+    """The printed mask (or rules, or symbol, or another scheme) equals the constructed one."""
+
+    name = "mask identity"
+    summary = "the printed mask/rules/symbol equals the scheme's symbol (exact coefficients)"
+    optional = {"mask": "printed coefficients (with start)", "start": "index of the first coefficient",
+                "symbol": "printed symbol a(z)", "rules": "{even = [...], odd = [...], first = p}",
+                "same_as": "another scheme of the file", "at": "parameter values"}
+    example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
+
+    def check(self) -> None:
+        given = [k for k in ("mask", "symbol", "rules", "same_as") if k in self.fields]
+        if len(given) != 1:
+            raise AnalysisError(f"{self.where}: kind 'mask identity' needs exactly one of the fields "
+                                "'mask', 'symbol', 'rules', 'same_as'")
+        self.values()
+        self.printed()
+
+    def printed(self) -> tuple[LaurentSymbol, str]:
+        f = self.fields
+        try:
+            if "mask" in f:
+                return LaurentSymbol.from_mask(f["mask"], start=f.get("start", 0)), "the printed mask"
+            if "symbol" in f:
+                return LaurentSymbol.from_expr(f["symbol"]), "the printed symbol"
+            if "rules" in f:
+                r = f["rules"]
+                if not isinstance(r, dict) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
+                    raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
+                return LaurentSymbol.from_rules(r["even"], r["odd"], r.get("first", 0), even_first=r.get("even_first"),
+                                                odd_first=r.get("odd_first")), "the printed rules"
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
+        other = self.schemes.get(f["same_as"])
+        if other is None:
+            raise AnalysisError(f"{self.where}: unknown scheme {f['same_as']!r} in 'same_as' "
+                                f"(the file defines: {', '.join(sorted(self.schemes))})")
+        return other.at(self.values() if other.params == self.scheme.params else {}), f"scheme {f['same_as']!r}"
+
+    def evaluate(self) -> Verdict:
+        printed, what = self.printed()
+        built = self.symbol()
+        lo, hi = min(printed.start, built.start), max(printed.end, built.end)
+        diff = [(i, printed.coeff(i), built.coeff(i)) for i in range(lo, hi + 1) if not _same(printed.coeff(i), built.coeff(i))]
+        r = exact_result(not diff, "exact coefficient comparison", printed=printed, constructed=built)
+        ev = [evidence(f"{what} vs the constructed symbol of {self.where_text()}", r,
+                       text=f"constructed: {built.mask} from index {built.start}")]
+        if not diff:
+            return self.certified(f"{what} is the symbol of {self.where_text()} (exact)", evidence=ev,
+                                  numbers=[Number("support length", len(built.mask))])
+        first = ", ".join(f"a_{i}: printed {sp.sstr(p)}, constructed {sp.sstr(c)}" for i, p, c in diff[:3])
+        return self.refuted(f"{what} differs from the constructed symbol in {len(diff)} coefficient(s) ({first})",
+                            corrected=f"the mask is {list(map(sp.sstr, built.mask))} from index {built.start}",
+                            evidence=ev, numbers=[Number("differing coefficients", len(diff))])
+
+
+class SumRules(Kind):
+    """The number of smoothing factors ``k`` in ``a(z) = ((1+z)/2)^k b(z)``, with exceptional values."""
+
+    name = "sum rules"
+    summary = "a(z) = ((1+z)/2)^k b(z) with k factors (sum rules of order k), exceptional parameter values"
+    required = {"factors": "claimed k (generic)"}
+    optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values"}
+    example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
+
+    def check(self) -> None:
+        self.integer("factors")
+        self.values()
+        for e in self.get("exceptional", []):
+            if not isinstance(e, dict) or set(e) != {"at", "factors"}:
+                raise AnalysisError(f"{self.where}: each exceptional entry is {{ at = {{...}}, factors = k }}")
+            self.scheme.values(e["at"], self.where)
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        f = smoothing_factor(a)
+        sr = sum_rules(a)
+        k, found = f.value, f.witness["exceptional"]
+        exc_text = "; ".join(f"{_cond_text(e['condition'])}: {e['k']} factors" for e in found) or "none"
+        ev = [evidence("exact division by (1+z)", f, text=f"{f.witness['identity']}; exceptional: {exc_text}"),
+              evidence("a(1) = 2 and a(-1) = 0", sr, text=f"a(1) = {sp.sstr(sr.witness['a(1)'])}, "
+                                                          f"a(-1) = {sp.sstr(sr.witness['a(-1)'])}")]
+        wrong = []
+        if self.get("factors") != k:
+            wrong.append(f"generic k = {k}, not {self.get('factors')}")
+        for e in self.get("exceptional", []):
+            vals = self.scheme.values(e["at"], self.where)
+            hit = [x for x in found if set(map(str, x["condition"])) == set(vals)
+                   and all(_same(x["condition"][s], vals[str(s)]) for s in x["condition"])]
+            kk = hit[0]["k"] if hit else smoothing_factor(a.subs(vals), exceptional=False).value
+            if kk != e["factors"]:
+                wrong.append(f"at {_cond_text(vals)}: k = {kk}, not {e['factors']}")
+        nums = [Number("factors", k), Number("exceptional values", len(found))]
+        corrected = f"a(z) = ((1+z)/2)^{k} b(z) for generic parameters (sum rules of order {k}); exceptional: {exc_text}"
+        if wrong:
+            return self.refuted("; ".join(wrong), corrected=corrected, evidence=ev, numbers=nums)
+        claimed = len(self.get("exceptional", []))
+        sharp = None if claimed == len(found) else f"complete list of exceptional values: {exc_text}"
+        return self.certified(f"{k} smoothing factors for {self.where_text() or 'generic parameters'}"
+                              + (f"; exceptional: {exc_text}" if found else ""), evidence=ev, numbers=nums,
+                              sharpness=sharp)
+
+
+class Symmetry(Kind):
+    """The mask is symmetric (``a_i = a_{c-i}``), optionally about a given centre ``c/2``."""
+
+    name = "symmetry"
+    summary = "the mask is symmetric (a_i = a_(c-i)), optionally about the given centre"
+    optional = {"symmetric": "true (default) or false", "centre": "claimed centre c/2 (our indexing)",
+                "at": "parameter values"}
+    example = "symmetric = true\ncentre = 0"
+
+    def check(self) -> None:
+        self.values()
+        self.number("centre")
+        if not isinstance(self.get("symmetric", True), bool):
+            raise AnalysisError(f"{self.where}: field 'symmetric' must be true or false")
+
+    def evaluate(self) -> Verdict:
+        r = symmetry(self.symbol())
+        want, centre = self.get("symmetric", True), self.number("centre")
+        ev = [evidence("exact comparison a_i = a_(start+end-i)", r,
+                       text=f"centre {sp.sstr(r.witness['centre'])} ({r.witness['kind']})")]
+        ok = r.value == want and (centre is None or not r.value or _same(centre, r.witness["centre"]))
+        nums = [Number("symmetric", bool(r.value)), Number("centre", r.witness["centre"])]
+        fact = (f"symmetric about {sp.sstr(r.witness['centre'])} ({r.witness['kind']})" if r.value
+                else "not symmetric" + (f" (symmetric only at {r.witness.get('solutions')})" if r.witness.get("solutions") else ""))
+        if ok:
+            return self.certified(f"the mask of {self.where_text()} is {fact}", evidence=ev, numbers=nums)
+        return self.refuted(f"the mask of {self.where_text()} is {fact}", corrected=f"the mask is {fact}",
+                            evidence=ev, numbers=nums)
+
+
+class Support(Kind):
+    """The support of the mask or of the basic limit function (our indexing, or centred)."""
+
+    name = "support"
+    summary = "support [s, e] of the mask or of the basic limit function (our indexing or centred)"
+    required = {"support": "[s, e]"}
+    optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values"}
+    example = 'support = [-3, 3]\nof = "limit function"'
+
+    OF = ("mask", "limit function", "limit function, centred")
+
+    def check(self) -> None:
+        self.values()
+        if self.get("of", "mask") not in self.OF:
+            raise AnalysisError(f"{self.where}: field 'of' must be one of {', '.join(self.OF)}")
+        s = self.get("support")
+        if not isinstance(s, list) or len(s) != 2:
+            raise AnalysisError(f"{self.where}: field 'support' must be [s, e]")
+        [parse_number(x, f"{self.where}: support") for x in s]
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        of = self.get("of", "mask")
+        r = basic_limit_support(a)
+        true = r.witness["centred"] if of.endswith("centred") else r.value
+        if of == "mask":
+            true = (a.start, a.end)
+        claim = tuple(parse_number(x) for x in self.get("support"))
+        ok = all(_same(x, y) for x, y in zip(claim, true))
+        text = f"[{sp.sstr(true[0])}, {sp.sstr(true[1])}]"
+        ev = [evidence(f"support of the {of}", r, text=text)]
+        nums = [Number("support start", true[0]), Number("support end", true[1])]
+        if ok:
+            return self.certified(f"the {of} of {self.where_text()} has support {text}", evidence=ev, numbers=nums)
+        return self.refuted(f"the {of} of {self.where_text()} has support {text}, not "
+                            f"[{sp.sstr(claim[0])}, {sp.sstr(claim[1])}]", corrected=f"support {text}",
+                            evidence=ev, numbers=nums)
+
+
+class Eigenvalues(Kind):
+    """Claimed eigenvalues (with multiplicity by repetition) of the local subdivision matrix."""
+
+    name = "eigenvalues"
+    summary = "eigenvalues of the local subdivision matrix (a sub-multiset, or the whole spectrum)"
+    required = {"eigenvalues": "list of claimed eigenvalues (repeat for multiplicity)"}
+    optional = {"complete": "true: the list is the whole spectrum", "window": "[lo, hi] of the local matrix",
+                "at": "parameter values"}
+    example = 'eigenvalues = ["1", "1/2", "1/4", "1/4", "1/8"]\ncomplete = true\nat = { w = "1/16" }'
+
+    def check(self) -> None:
+        self.values()
+        if not isinstance(self.get("eigenvalues"), list):
+            raise AnalysisError(f"{self.where}: field 'eigenvalues' must be a list")
+        loc = {p.name: p for p in self.scheme.symbol.params}
+        self.claimed = []
+        for x in self.get("eigenvalues"):
+            try:
+                self.claimed.append(sp.sympify(str(x), rational=True, locals=loc))
+            except (sp.SympifyError, SyntaxError, TypeError):
+                raise AnalysisError(f"{self.where}: cannot read the eigenvalue {x!r}") from None
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        r = local_eigenvalues(a, window=self.get("window"))
+        spectrum = [lam for lam, m in r.value.items() for _ in range(m)]
+        rest, missing = list(spectrum), []
+        for c in self.claimed:
+            c = c.subs({sp.Symbol(k): v for k, v in self.values().items()})
+            hit = next((i for i, lam in enumerate(rest) if _same(lam, c)), None)
+            if hit is None:
+                missing.append(c)
+            else:
+                rest.pop(hit)
+        complete = bool(self.get("complete", False)) and r.provenance.get("complete", True)
+        text = ", ".join(sp.sstr(x) for x in spectrum)
+        ev = [evidence("exact characteristic polynomial of the local subdivision matrix", r,
+                       text=f"window {r.witness['window']}; spectrum {text}")]
+        nums = [Number("matrix size", len(spectrum) + sum(m for _, m in r.witness.get("implicit", ()))),
+                Number("largest eigenvalue", spectrum[0]) if spectrum and not sp.sympify(spectrum[0]).free_symbols
+                else Number("eigenvalues found", len(spectrum))]
+        if missing or (self.get("complete") and rest):
+            why = (f"not eigenvalues (or with lower multiplicity): {', '.join(map(sp.sstr, missing))}" if missing
+                   else f"the spectrum has more: {', '.join(map(sp.sstr, rest))}")
+            return self.refuted(f"{why}", corrected=f"the eigenvalues are {text}", evidence=ev, numbers=nums)
+        if self.get("complete") and not complete:
+            return self.inconclusive("the claimed eigenvalues occur, but part of the spectrum is implicit",
+                                     settle="solve the implicit factors of the characteristic polynomial", evidence=[
+                                         evidence(ev[0].title, text=ev[0].text)])
+        return self.certified(f"the local matrix of {self.where_text()} has the eigenvalues {text}",
+                              evidence=ev, numbers=nums)
+
+
+class Reproduction(Kind):
+    """The degree of polynomial generation and/or reproduction (Conti–Hormann)."""
+
+    name = "reproduction"
+    summary = "degree of polynomial generation and/or reproduction (Conti-Hormann)"
+    optional = {"generation": "claimed generation degree", "reproduction": "claimed reproduction degree",
+                "at": "parameter values"}
+    example = "generation = 3\nreproduction = 3\nat = { w = \"1/16\" }"
+
+    def check(self) -> None:
+        self.values()
+        if "generation" not in self.fields and "reproduction" not in self.fields:
+            raise AnalysisError(f"{self.where}: kind 'reproduction' needs 'generation' or 'reproduction'")
+        self.integer("generation", -1), self.integer("reproduction", -1)
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        g, r = polynomial_generation(a), polynomial_reproduction(a)
+        higher = "; ".join(f"{_cond_text(h['condition'])}: degree {h['degree']}" for h in r.witness["higher"])
+        ev = [evidence("sum rules (generation)", g, text=f"degree {g.value}"),
+              evidence("Conti-Hormann conditions (reproduction)", r,
+                       text=f"degree {r.value}, tau = {sp.sstr(r.witness['tau'])}" + (f"; higher at {higher}" if higher else ""))]
+        wrong = [f"{what} degree is {res.value}, not {self.get(what)}" for what, res in
+                 (("generation", g), ("reproduction", r)) if what in self.fields and self.get(what) != res.value]
+        nums = [Number("generation degree", g.value), Number("reproduction degree", r.value)]
+        fact = f"generates degree {g.value}, reproduces degree {r.value}"
+        if wrong:
+            return self.refuted("; ".join(wrong), corrected=f"{self.where_text()} {fact}", evidence=ev, numbers=nums)
+        return self.certified(f"{self.where_text()} {fact}", evidence=ev, numbers=nums,
+                              sharpness=f"higher degree at {higher}" if higher else None)

@@ -1,0 +1,276 @@
+"""What every claim kind shares: the scheme a claim speaks of, parameter domains, exact
+numbers and intervals read from a paper file, and the :class:`Kind` base class.
+
+A kind is a small class: ``name`` (the ``kind = "..."`` of a paper file), its ``required``
+and ``optional`` fields (name -> one-line description), ``example`` (the fields of one
+example claim, used by the ``subdiv new-paper`` template), ``check()`` (validation when the
+file is loaded: a bad field is an :class:`~analysis.result.AnalysisError` naming it) and
+``evaluate() -> Verdict`` (computed by the engine; never a typed-in verdict).
+
+Examples
+--------
+>>> d = Domain.parse("[0, 1/8)")
+>>> d.contains(0), d.contains(sp.Rational(1, 8)), str(d)
+(True, False, '[0, 1/8)')
+>>> parse_interval("(0, (sqrt(5)-1)/8)")
+(0, -1/8 + sqrt(5)/8, False, False)
+>>> parse_number("1/16") + parse_number("0.25")
+5/16
+
+Algorithm
+---------
+Numbers are read exactly (decimals as the rationals they spell); membership in a domain is
+decided exactly with real algebraic numbers (:class:`analysis.algebra.algebraic.RealAlgebraic`).
+
+References
+----------
+DESIGN.md ("Results contract"); :mod:`analysis.claims.model` (verdicts).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Mapping
+
+import sympy as sp
+
+from ...algebra.symbol import LaurentSymbol, parse_coefficient
+from ...result import AnalysisError, Result
+from ..model import Evidence, Verdict, certified, inconclusive, refuted
+
+__all__ = ["Domain", "SchemeSpec", "Kind", "parse_number", "parse_interval", "interval_text", "evidence"]
+
+
+def parse_number(x, what: str = "number") -> sp.Expr:
+    """An exact number (int, ``"1/16"``, ``"0.25"``, ``"(sqrt(5)-1)/8"``; ``"oo"``/``"-oo"`` allowed)."""
+    if isinstance(x, str) and x.strip() in ("oo", "+oo", "inf"):
+        return sp.oo
+    if isinstance(x, str) and x.strip() in ("-oo", "-inf"):
+        return -sp.oo
+    try:
+        v = parse_coefficient(x)
+    except AnalysisError as exc:
+        raise AnalysisError(f"{what}: {exc}") from None
+    if v.free_symbols:
+        raise AnalysisError(f"{what}: {x!r} is not a number (free symbols {sorted(map(str, v.free_symbols))})")
+    return v
+
+
+def _split_top(text: str) -> list[str]:
+    parts, depth, cur = [], 0, ""
+    for ch in text:
+        if ch in "([":
+            depth += 1
+        elif ch in ")]":
+            depth -= 1
+        if ch == "," and depth == 0:
+            parts.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    parts.append(cur)
+    return [p.strip() for p in parts]
+
+
+def parse_interval(x, what: str = "interval") -> tuple:
+    """``"(a, b)"``, ``"[a, b)"``, ... or a two-element list (open) -> ``(lo, hi, lo_closed, hi_closed)``."""
+    if isinstance(x, (list, tuple)):
+        if len(x) != 2:
+            raise AnalysisError(f"{what}: expected two end points, got {len(x)}")
+        lo, hi, lc, hc = parse_number(x[0], what), parse_number(x[1], what), False, False
+    else:
+        t = str(x).strip()
+        if len(t) < 5 or t[0] not in "([" or t[-1] not in ")]":
+            raise AnalysisError(f"{what}: cannot read {x!r} (write e.g. \"(0, 1/8)\" or \"[0, 1/8)\")")
+        ends = _split_top(t[1:-1])
+        if len(ends) != 2:
+            raise AnalysisError(f"{what}: {x!r} needs exactly two end points")
+        lo, hi = parse_number(ends[0], what), parse_number(ends[1], what)
+        lc, hc = t[0] == "[", t[-1] == "]"
+    if not bool(sp.N(hi - lo, 30) > 0):
+        raise AnalysisError(f"{what}: {x!r} is empty (the left end must be smaller)")
+    return lo, hi, lc, hc
+
+
+def interval_text(lo, hi, lc=False, hc=False) -> str:
+    return f"{'[' if lc else '('}{sp.sstr(lo)}, {sp.sstr(hi)}{']' if hc else ')'}"
+
+
+def _ra(x):
+    from ...algebra.algebraic import RealAlgebraic
+
+    return RealAlgebraic.from_expr(sp.sympify(x))
+
+
+@dataclass(frozen=True)
+class Domain:
+    """The domain of a parameter: an interval (possibly unbounded) of the real line."""
+
+    lo: Any = -sp.oo
+    hi: Any = sp.oo
+    lo_closed: bool = False
+    hi_closed: bool = False
+
+    @classmethod
+    def parse(cls, x) -> "Domain":
+        if x in ("real", "R", None):
+            return cls()
+        return cls(*parse_interval(x, "parameter domain"))
+
+    def contains(self, v) -> bool:
+        v = sp.sympify(v)
+        x = _ra(v)
+        if self.lo != -sp.oo:
+            c = x.compare(_ra(self.lo))
+            if c < 0 or (c == 0 and not self.lo_closed):
+                return False
+        if self.hi != sp.oo:
+            c = x.compare(_ra(self.hi))
+            if c > 0 or (c == 0 and not self.hi_closed):
+                return False
+        return True
+
+    def __str__(self) -> str:
+        return interval_text(self.lo, self.hi, self.lo_closed, self.hi_closed)
+
+
+@dataclass(frozen=True)
+class SchemeSpec:
+    """A scheme of a paper file: its name, exact symbol, parameter domains and notes."""
+
+    name: str
+    symbol: LaurentSymbol | None
+    domains: Mapping[str, Domain] = field(default_factory=dict)
+    definition: str = ""
+    notes: str = ""
+    #: a level-dependent scheme (:class:`analysis.levels.level_dependent.LevelDependentScheme`)
+    level: Any = None
+
+    @property
+    def params(self) -> tuple:
+        return tuple((self.level if self.symbol is None else self.symbol).params)
+
+    def values(self, at: Mapping | None, where: str) -> dict:
+        """Exact parameter values ``{name: value}`` checked against the names and domains."""
+        out = {}
+        if at is not None and not isinstance(at, Mapping):
+            raise AnalysisError(f"{where}: field 'at' is a table {{ name = value }}")
+        names = {p.name for p in self.params}
+        for k, v in (at or {}).items():
+            if k not in names:
+                raise AnalysisError(f"{where}: unknown parameter {k!r} of scheme {self.name!r} "
+                                    f"(its parameters: {', '.join(sorted(names)) or 'none'})")
+            q = parse_number(v, f"{where}: parameter {k}")
+            dom = self.domains.get(k)
+            if dom is not None and not dom.contains(q):
+                raise AnalysisError(f"{where}: {k} = {sp.sstr(q)} is outside its domain {dom}")
+            out[k] = q
+        return out
+
+    def at(self, values: Mapping) -> LaurentSymbol:
+        if self.symbol is None:
+            raise AnalysisError(f"scheme {self.name!r} is level-dependent: this kind needs a stationary scheme")
+        return self.symbol.subs(values) if values else self.symbol
+
+
+def evidence(title: str, result: Result | None = None, text: str = "", table=None) -> Evidence:
+    return Evidence(title, text=text, result=result, table=table)
+
+
+class Kind:
+    """Base class of claim kinds (see the module docstring)."""
+
+    name: ClassVar[str] = ""
+    #: field -> description (the claim cannot be loaded without them)
+    required: ClassVar[dict] = {}
+    optional: ClassVar[dict] = {}
+    #: does the claim speak of a scheme (field ``scheme``)?
+    uses_scheme: ClassVar[bool] = True
+    #: does the kind speak of a level-dependent scheme (``level_mask``) rather than a stationary one?
+    level_scheme: ClassVar[bool] = False
+    #: example fields (TOML lines) for the template of ``subdiv new-paper``
+    example: ClassVar[str] = ""
+    summary: ClassVar[str] = ""
+
+    def __init__(self, fields: Mapping[str, Any], schemes: Mapping[str, SchemeSpec], where: str):
+        self.where = where
+        self.fields = dict(fields)
+        self.schemes = schemes
+        allowed = set(self.required) | set(self.optional) | ({"scheme"} if self.uses_scheme else set())
+        unknown = sorted(set(self.fields) - allowed)
+        if unknown:
+            raise AnalysisError(f"{where}: unknown field {unknown[0]!r} for kind {self.name!r} "
+                                f"(its fields: {', '.join(sorted(allowed))})")
+        missing = [k for k in self.required if k not in self.fields]
+        if self.uses_scheme and "scheme" not in self.fields:
+            if len(schemes) == 1:
+                self.fields["scheme"] = next(iter(schemes))
+            else:
+                missing.insert(0, "scheme")
+        if missing:
+            raise AnalysisError(f"{where}: kind {self.name!r} needs the field {missing[0]!r}")
+        self.scheme: SchemeSpec | None = None
+        if self.uses_scheme:
+            s = self.fields["scheme"]
+            if s not in schemes:
+                raise AnalysisError(f"{where}: unknown scheme {s!r} (the file defines: "
+                                    f"{', '.join(sorted(schemes)) or 'no scheme'})")
+            self.scheme = schemes[s]
+            if (self.scheme.level is not None) != self.level_scheme:
+                raise AnalysisError(f"{where}: kind {self.name!r} needs a "
+                                    + ("level-dependent scheme (level_mask)" if self.level_scheme else
+                                       f"stationary scheme; {s!r} is level-dependent"))
+        self.check()
+
+    # ------------------------------------------------------------------ helpers for kinds
+    def check(self) -> None:
+        """Kind-specific validation at load time (override)."""
+
+    def shown_kind(self) -> str:
+        """The kind shown in reports and verdict files (the kind's name)."""
+        return self.name
+
+    def get(self, key: str, default=None):
+        return self.fields.get(key, default)
+
+    def values(self) -> dict:
+        """The parameter values of field ``at`` (checked)."""
+        return self.scheme.values(self.get("at"), self.where)
+
+    def symbol(self) -> LaurentSymbol:
+        """The scheme's symbol with the parameters of ``at`` substituted."""
+        return self.scheme.at(self.values())
+
+    def integer(self, key: str, lo: int = 0) -> int | None:
+        v = self.get(key)
+        if v is None:
+            return None
+        if isinstance(v, bool) or not isinstance(v, int) or v < lo:
+            raise AnalysisError(f"{self.where}: field {key!r} must be an integer >= {lo}, not {v!r}")
+        return v
+
+    def number(self, key: str):
+        v = self.get(key)
+        return None if v is None else parse_number(v, f"{self.where}: field {key!r}")
+
+    def interval(self, key: str):
+        v = self.get(key)
+        return None if v is None else parse_interval(v, f"{self.where}: field {key!r}")
+
+    def single_parameter(self) -> sp.Symbol:
+        params = list(self.symbol().params)
+        if len(params) != 1:
+            raise AnalysisError(f"{self.where}: kind {self.name!r} needs exactly one free parameter "
+                                f"(scheme {self.scheme.name!r} has {len(params)} after 'at'); fix the others with at = {{...}}")
+        return params[0]
+
+    def where_text(self) -> str:
+        vals = self.values() if self.scheme is not None else {}
+        name = self.scheme.name if self.scheme is not None else ""
+        return name + (" at " + ", ".join(f"{k} = {sp.sstr(v)}" for k, v in vals.items()) if vals else "")
+
+    # verdict shorthands
+    certified, refuted, inconclusive = staticmethod(certified), staticmethod(refuted), staticmethod(inconclusive)
+
+    def evaluate(self) -> Verdict:  # pragma: no cover - every kind overrides it
+        raise NotImplementedError

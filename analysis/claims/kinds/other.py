@@ -1,0 +1,132 @@
+"""Claim kinds that need no scheme: a lemma inequality over (n, parameter box), a claim that is
+cited and not checkable here, and a bespoke Python evaluator referenced by dotted name.
+
+Examples
+--------
+>>> Inequality({"lhs": "sin(2**(-n))", "rhs": "2**(-n)", "n0": 1}, {}, "x").evaluate().label
+'CERTIFIED TRUE'
+>>> v = Cited({"source": "[7, Thm 2]", "settle": "the proof in [7]"}, {}, "x").evaluate()
+>>> v.label, v.settle
+('INCONCLUSIVE', 'the proof in [7]')
+>>> Python({"evaluator": "no.such.module:f"}, {}, "x")
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: x: cannot import the evaluator module 'no.such.module'
+
+Algorithm
+---------
+The inequality is proven by Arb branch and bound for the first levels and a Taylor model in
+``h = 2^-n`` for the tail (:func:`analysis.levels.bounds.check_inequality`).
+
+References
+----------
+F. Johansson, *Arb*, IEEE Trans. Comput. 66 (2017).
+"""
+
+from __future__ import annotations
+
+import importlib
+
+import sympy as sp
+
+from ...levels.bounds import check_inequality
+from ...levels.level_dependent import H, N
+from ...result import CERTIFIED, REFUTED, AnalysisError
+from ..model import Number, Verdict
+from .base import Kind, evidence, parse_interval, parse_number
+
+__all__ = ["Inequality", "Cited", "Python"]
+
+
+class Inequality(Kind):
+    """``lhs <= rhs`` (``<`` with ``strict``) for every level ``n >= n0`` and every parameter in ``box``."""
+
+    name = "inequality"
+    summary = "a lemma inequality lhs <= rhs for all levels n >= n0 and a parameter box (Arb, Taylor tail)"
+    uses_scheme = False
+    required = {"lhs": "expression in n (or h = 2^-n) and parameters", "rhs": "expression"}
+    optional = {"n0": "first level (default 0)", "box": "{ name = value or \"[lo, hi]\" }", "strict": "true for <"}
+    example = 'lhs = "Abs(w*2**(-n))"\nrhs = "2**(-n)/4"\nn0 = 1\nbox = { w = "[-1/8, 1/8]" }'
+
+    def check(self) -> None:
+        self.integer("n0")
+        if not isinstance(self.get("box", {}), dict):
+            raise AnalysisError(f"{self.where}: field 'box' is a table {{ name = value or \"[lo, hi]\" }}")
+        self.box = {}
+        for k, v in self.get("box", {}).items():
+            if isinstance(v, str) and v.strip()[:1] in "([":
+                lo, hi, _, _ = parse_interval(v, f"{self.where}: box {k}")
+                self.box[k] = (lo, hi)
+            else:
+                self.box[k] = parse_number(v, f"{self.where}: box {k}")
+
+    def evaluate(self) -> Verdict:
+        try:
+            loc = {"n": N, "h": H, **{k: sp.Symbol(k, real=True) for k in self.box}}
+            lhs, rhs = (sp.sympify(str(self.get(x)), rational=True, locals=loc) for x in ("lhs", "rhs"))
+        except (sp.SympifyError, SyntaxError, TypeError):
+            raise AnalysisError(f"{self.where}: cannot read lhs/rhs") from None
+        r = check_inequality(lhs, rhs, self.get("n0", 0), self.box, strict=bool(self.get("strict", False)))
+        stmt = r.witness["statement"]
+        if r.status == CERTIFIED:
+            return self.certified(f"proven: {stmt}", evidence=[evidence("Arb branch and bound + Taylor tail", r)],
+                                  numbers=[Number("proven", True)])
+        if r.status == REFUTED:
+            ce = r.witness["counterexample"]
+            return self.refuted(f"false: {stmt} fails at {ce}", corrected=f"the inequality fails at {ce}",
+                                evidence=[evidence("certified counterexample (Arb)", r)], numbers=[Number("proven", False)])
+        return self.inconclusive(f"not decided: {stmt}", settle=r.witness.get("advice", "a finer box"),
+                                 evidence=[evidence("worst case found", text=str(r.witness.get("worst")))])
+
+
+class Cited(Kind):
+    """A statement cited from elsewhere, or not checkable with this engine: says what would settle it."""
+
+    name = "cited"
+    summary = "cited / not checkable here: inconclusive, with what would settle it"
+    uses_scheme = False
+    required = {"settle": "what would settle the claim"}
+    optional = {"source": "where the result is proven", "why": "why it is not checked here"}
+    example = 'source = "Dyn, Levin, Acta Numer. 11 (2002), Thm 4.7"\nsettle = "the proof of the cited theorem"'
+
+    def evaluate(self) -> Verdict:
+        src = self.get("source")
+        why = self.get("why", "a cited result, not re-derived here" if src else "not checkable with this engine")
+        return self.inconclusive(f"{why}" + (f" (cited from {src})" if src else ""), settle=self.get("settle"))
+
+
+class Python(Kind):
+    """A bespoke evaluator ``"package.module:function"`` returning a :class:`~analysis.claims.model.Verdict`."""
+
+    name = "python"
+    summary = "a bespoke Python evaluator \"package.module:function\" returning a Verdict"
+    uses_scheme = False
+    required = {"evaluator": "\"package.module:function\""}
+    optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")"}
+    example = 'evaluator = "papers.seed000.claims:_v_eta"'
+
+    def check(self) -> None:
+        ev = self.get("evaluator")
+        if not isinstance(ev, str) or ev.count(":") != 1:
+            raise AnalysisError(f"{self.where}: evaluator must be \"package.module:function\", not {ev!r}")
+        self.function()
+
+    def shown_kind(self) -> str:
+        return str(self.get("reports_as", self.name))
+
+    def function(self):
+        mod, _, fn = self.get("evaluator").partition(":")
+        try:
+            m = importlib.import_module(mod)
+        except ImportError:
+            raise AnalysisError(f"{self.where}: cannot import the evaluator module {mod!r}") from None
+        f = getattr(m, fn, None)
+        if not callable(f):
+            raise AnalysisError(f"{self.where}: module {mod!r} has no function {fn!r}")
+        return f
+
+    def evaluate(self) -> Verdict:
+        v = self.function()()
+        if not isinstance(v, Verdict):
+            raise TypeError(f"{self.get('evaluator')} returned {type(v).__name__}, not a Verdict")
+        return v

@@ -1,0 +1,235 @@
+"""The smoothness profile of a one-parameter family (issue 11, item 5): what a referee wants
+from every family, every time.
+
+For ``j = 0, 1, ...`` up to the largest ``j`` with a non-empty set, the C^j set of the parameter
+in ``within`` (:func:`analysis.regularity.ranges.ck_parameter_set`: every boundary bracketed by
+certified verdicts on both sides, exact where an eigenvalue of a spectrum-maximizing product
+crosses ``2^(k-j)``); the largest Hölder exponent over the sample points and where it is
+attained, with its certified enclosure at that point; beside the claimed range (proven or
+refuted by :func:`analysis.regularity.ranges.verify_smoothness_interval`) and which C^j set the
+printed interval actually is.
+
+What is certified: each C^j verdict at the grid points and on both sides of each boundary, the
+boundaries themselves (exact or to ``tol``), the enclosure of alpha at each sample point, the
+verdict on the claimed range. What is *sampled*: the C^j set between grid points when the norm
+tests do not cover it (then the ``C^j`` line says so), and the maximum of alpha (the largest
+certified value at the sample points, not a certified maximum over the interval).
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.algebra.symbol import LaurentSymbol
+>>> from analysis.claims.kinds.base import SchemeSpec
+>>> w = sp.Symbol("w")
+>>> a = LaurentSymbol.from_mask([w, sp.Rational(1, 2) - w, sp.Rational(1, 2) - w, w], start=-2) * 2
+>>> v = SmoothnessProfile({"within": "(0, 1/4)", "grid": 4, "samples": 4}, {"s": SchemeSpec("s", a)}, "x").evaluate()
+>>> v.label, v.numbers[0].name
+('CERTIFIED TRUE', 'largest j')
+
+Algorithm
+---------
+``ck_parameter_set`` for each ``j`` (grid, certified bisection / exact s.m.p. crossings, norm
+tests on the interior); ``alpha_curve`` at ``samples + 1`` rational points; the claimed range by
+``verify_smoothness_interval``. A printed interval "is" the C^j set when each of its ends is an
+end of one run of that set (equal to an exact boundary, inside a certified bracket, or the end of
+``within``).
+
+References
+----------
+N. Dyn, D. Levin, Acta Numer. 11 (2002); O. Rioul, SIAM J. Math. Anal. 23 (1992).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ...algebra.algebraic import RealAlgebraic
+from ...algebra.factorization import smoothing_factor
+from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
+from ...result import CERTIFIED, REFUTED, AnalysisError
+from ..model import Number, Verdict
+from .base import Kind, evidence, interval_text, parse_interval
+
+__all__ = ["SmoothnessProfile", "boundary_text", "run_matches", "which_set"]
+
+
+def _ra(x) -> RealAlgebraic:
+    return RealAlgebraic.from_expr(sp.sympify(x))
+
+
+def boundary_text(b: dict) -> str:
+    """One end of a run: exact, bracketed, or an end of the searched interval."""
+    if "open_end" in b:
+        return f"{sp.sstr(b['open_end'])} (end of the searched interval)"
+    if "exact" in b:
+        return f"{sp.sstr(b['exact'])} ≈ {float(b['exact_float']):.10g} (exact; {b['how']})"
+    lo, hi = b["bracket"]
+    return f"in [{float(lo):.10g}, {float(hi):.10g}] ({b.get('how', b['status'])})"
+
+
+def _end_matches(b: dict, x) -> bool:
+    X = _ra(x)
+    if "open_end" in b:
+        return X.compare(_ra(b["open_end"])) == 0
+    if "exact" in b:
+        return X.compare(_ra(b["exact"])) == 0
+    lo, hi = b["bracket"]
+    return _ra(lo).compare(X) <= 0 <= _ra(hi).compare(X)
+
+
+def run_matches(run: dict, lo, hi) -> str | None:
+    """Is the printed interval (lo, hi) this run of a C^j set?  ``"exact"`` (both ends are
+    certified boundaries), ``"window"`` (an end is only the end of the searched interval), None."""
+    if not (_end_matches(run["left"], lo) and _end_matches(run["right"], hi)):
+        return None
+    return "window" if "open_end" in run["left"] or "open_end" in run["right"] else "exact"
+
+
+def which_set(sets: dict, lo, hi) -> tuple[str, str]:
+    """Which C^j set the printed interval (lo, hi) actually is (``sets``: j -> ck_parameter_set):
+    a sentence and a short key (``"C^1 set"``, ``"inside the C^1 set"``, ...)."""
+    found = {j: m for j, r in sets.items() for m in [next((x for x in map(lambda u: run_matches(u, lo, hi), r.value) if x), None)] if m}
+    txt = interval_text(lo, hi)
+    exact = [j for j, m in found.items() if m == "exact"]
+    window = [j for j, m in found.items() if m == "window"]
+    if exact:
+        return (f"the printed interval {txt} is the C^{exact[0]} set" + (f" (and the C^j set for j in {exact})" if len(exact) > 1
+                                                                           else ""), f"the C^{exact[0]} set")
+    if window:
+        return (f"the printed interval {txt} is the C^j set for j in {window} within the searched interval only "
+                "(an end of it is an end of the search, not a certified boundary)", f"the C^j set for j in {window} (search window)")
+    inside = [j for j, r in sets.items() if any(_run_contains(x, lo, hi) for x in r.value)]
+    if inside:
+        J = max(inside)
+        run = next(x for x in sets[J].value if _run_contains(x, lo, hi))
+        return (f"the printed interval {txt} is none of the C^j sets: it lies inside the C^{J} set, whose run is "
+                f"({_short(run['left'])}, {_short(run['right'])}) (not sharp)", f"inside the C^{J} set")
+    return f"the printed interval {txt} is none of the C^j sets found and lies in none of them", "none"
+
+
+def _value(b: dict):
+    """A boundary as a number: exact, the end of the search, or the certified C^j side of its bracket."""
+    if "open_end" in b:
+        return b["open_end"]
+    if "exact" in b:
+        return b["exact"]
+    return b["certified_C^j_at"]
+
+
+def _run_contains(run: dict, lo, hi) -> bool:
+    return _ra(_value(run["left"])).compare(_ra(lo)) <= 0 and _ra(hi).compare(_ra(_value(run["right"]))) <= 0
+
+
+def _short(b: dict) -> str:
+    v = _value(b)
+    return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
+
+
+class SmoothnessProfile(Kind):
+    """The C^j set for every j, the largest Hölder exponent and where, beside the claimed range."""
+
+    name = "smoothness profile"
+    summary = "C^j set for every j (certified boundaries), max of alpha (sampled, certified enclosure), vs the claim"
+    optional = {"within": "parameter interval searched (default: the parameter's domain)",
+                "claimed": "{ j = ..., interval = \"(a, b)\" }: the printed C^j range",
+                "max_j": "largest j to examine (default: generic smoothing factors - 1)",
+                "grid": "grid intervals per C^j search (default 8)", "samples": "alpha sample intervals (default 8)",
+                "tol": "boundary bracket width (default 1e-8)", "at": "values of the other parameters"}
+    example = 'within = "(1/32, 1/8)"\nclaimed = { j = 1, interval = "(1/16, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
+
+    def check(self) -> None:
+        self.values()
+        for k in ("max_j", "grid", "samples"):
+            self.integer(k, 1 if k != "max_j" else 0)
+        self.number("tol")
+        c = self.get("claimed")
+        if c is not None:
+            if not isinstance(c, dict) or set(c) != {"j", "interval"}:
+                raise AnalysisError(f"{self.where}: claimed = {{ j = ..., interval = \"(a, b)\" }}")
+            parse_interval(c["interval"], f"{self.where}: claimed interval")
+        self._within()
+
+    def _within(self):
+        if self.get("within") is not None:
+            return self.interval("within")[:2]
+        p = self.scheme.symbol.params
+        dom = self.scheme.domains.get(p[0].name) if len(p) == 1 else None
+        if dom is None or dom.lo == -sp.oo or dom.hi == sp.oo:
+            raise AnalysisError(f"{self.where}: give 'within' (a bounded parameter interval)")
+        return dom.lo, dom.hi
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        p = self.single_parameter()
+        lo, hi = self._within()
+        grid, tol = self.get("grid", 8), float(self.number("tol") or 1e-8)
+        k = smoothing_factor(a, exceptional=False).value
+        max_j = self.get("max_j", max(k - 1, 0))
+        rows, ev, nums, all_cert, sets = [], [], [], True, {}
+        for j in range(0, max_j + 1):
+            r = ck_parameter_set(a, j, p, within=(lo, hi), grid=grid, tol=tol)
+            sets[j] = r
+            runs = " ∪ ".join(f"({boundary_text(x['left'])}, {boundary_text(x['right'])})" for x in r.value) or "empty"
+            proven = r.status == CERTIFIED
+            all_cert &= proven
+            rows.append((f"C^{j}", runs, "certified" if proven else "boundaries certified, interior sampled"
+                         if r.witness.get("boundaries_certified") else r.status))
+            for i, x in enumerate(r.value):
+                for side in ("left", "right"):
+                    b = x[side]
+                    v = b.get("exact", b.get("open_end"))
+                    nums.append(Number(f"C^{j} run {i + 1} {side}", sp.sstr(v) if v is not None else
+                                       float((b["bracket"][0] + b["bracket"][1]) / 2),
+                                       tol=0 if v is not None else 10 * tol))
+            if not r.value:
+                break
+        largest = max([j for j, r in sets.items() if r.value], default=-1)
+        ev.append(evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)}", table=(("j", "set", "status"), *rows),
+                           result=sets[0] if all_cert else None,
+                           text=f"{k} generic smoothing factors; largest j with a non-empty set: {largest}"))
+        curve = alpha_curve(a, p, within=(lo, hi), samples=self.get("samples", 8))
+        best = max((x for x in curve.value if x["lower"] is not None), key=lambda x: x["lower"], default=None)
+        alpha_line = "no certified alpha"
+        if best is not None:
+            alo, ahi = sp.Rational(best["lower"]), sp.Rational(best["upper"])
+            alpha_line = (f"largest alpha at the {len(curve.value)} sample points: {p.name} = {sp.sstr(best['p'])}, "
+                          f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
+                          "the maximum over the interval is sampled, not certified)")
+            nums += [Number("alpha max (sampled) at", best["p"]),
+                     Number("alpha max (sampled)", alo, lower=alo, upper=ahi) if alo == ahi else
+                     Number("alpha max (sampled)", float((alo + ahi) / 2), tol=max(1e-6, 2 * float(ahi - alo)),
+                            lower=alo, upper=ahi)]
+        ev.append(evidence("Hölder exponent over the parameter", text=alpha_line,
+                           table=(("p", "alpha lower", "alpha upper", "status"),
+                                  *((sp.sstr(x["p"]), f"{float(x['lower']):.8f}" if x["lower"] is not None else "-",
+                                     f"{float(x['upper']):.8f}" if x["upper"] is not None else "-", x["status"])
+                                    for x in curve.value))))
+        nums.insert(0, Number("largest j", largest))
+        profile = "; ".join(f"{r[0]}: {r[1]}" for r in rows) + f"; {alpha_line}"
+        claim = self.get("claimed")
+        if claim is None:
+            if all_cert:
+                return self.certified(f"smoothness profile of {self.where_text()}", evidence=ev, numbers=nums,
+                                      sharpness=profile)
+            return self.inconclusive(f"smoothness profile of {self.where_text()} (boundaries certified, some interiors sampled)",
+                                     settle="norm tests covering each run's interior (a larger L or finer boxes)",
+                                     evidence=ev, numbers=nums, sharpness=profile)
+        cj = claim["j"]
+        clo, chi, _, _ = parse_interval(claim["interval"])
+        which, key = which_set(sets, clo, chi)
+        v = verify_smoothness_interval(a, cj, (clo, chi), p)
+        ev.insert(0, evidence(f"claimed: C^{cj} on {interval_text(clo, chi)}", v if v.status in (CERTIFIED, REFUTED) else None,
+                              text=f"route: {v.witness.get('route')}; {which}"))
+        nums.append(Number("printed interval is", key))
+        sharp = f"{which}. {profile}"
+        if v.value is True:
+            return self.certified(f"true, {key}: C^{cj} on {interval_text(clo, chi)} proven ({v.witness.get('route')})",
+                                  evidence=ev, numbers=nums, sharpness=sharp)
+        if v.value is False:
+            true = next((r[1] for r in rows if r[0] == f"C^{cj}"), "see the profile")
+            return self.refuted(f"false: not C^{cj} at {p.name} = {sp.sstr(v.witness['counterexample'])} (certified); {which}",
+                                corrected=f"C^{cj} exactly on {true}", evidence=ev, numbers=nums, sharpness=sharp)
+        ev[0] = evidence(ev[0].title, text=ev[0].text)
+        return self.inconclusive(f"C^{cj} on {interval_text(clo, chi)} neither proven nor refuted; {which}",
+                                 settle=v.provenance.get("message", "finer norm tests"), evidence=ev, numbers=nums,
+                                 sharpness=sharp)

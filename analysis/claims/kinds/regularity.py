@@ -1,0 +1,214 @@
+"""Claim kinds about smoothness: the norm test for given L, a C^k range, a Hölder value or
+bounds, a Sobolev exponent.
+
+A value claim compares the claimed value (``value``, optionally ``tolerance``) or bounds
+(``lower``: ``alpha >= lower``; ``upper``: ``alpha <= upper``) with the certified enclosure
+``[lo, hi]``: proven when the enclosure lies inside the claimed set, refuted when it lies outside,
+inconclusive otherwise (an enclosure that merely contains an exact claimed value proves nothing).
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.algebra.symbol import LaurentSymbol
+>>> from analysis.claims.kinds.base import SchemeSpec
+>>> w = sp.Symbol("w")
+>>> four = LaurentSymbol.from_mask([-w, 0, sp.Rational(1, 2) + w, 1, sp.Rational(1, 2) + w, 0, -w], start=-3)
+>>> S = {"4pt": SchemeSpec("4pt", four)}
+>>> Holder({"at": {"w": "1/16"}, "value": 2}, S, "x").evaluate().label      # Dubuc (1986)
+'CERTIFIED TRUE'
+>>> NormTest({"j": 1, "L": 2, "interval": "(0, 1/8)"}, S, "x").evaluate().label
+'CERTIFIED TRUE'
+
+Algorithm
+---------
+:func:`analysis.regularity.holder.holder_exponent` (JSR bounds of the difference scheme),
+:func:`analysis.regularity.sobolev.sobolev_exponent`, the exact norm set
+:func:`analysis.stationary.normset.norm_solution_set` and
+:func:`analysis.regularity.ranges.verify_smoothness_interval`.
+
+References
+----------
+N. Dyn, D. Levin, Acta Numer. 11 (2002), Thm 3.3; O. Rioul, SIAM J. Math. Anal. 23 (1992);
+S. Dubuc, *Interpolation through an iterative scheme*, J. Math. Anal. Appl. 114 (1986).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ...regularity.holder import holder_exponent
+from ...regularity.ranges import verify_smoothness_interval
+from ...regularity.sobolev import sobolev_exponent
+from ...result import CERTIFIED, REFUTED, AnalysisError, Result
+from ...stationary.normset import norm_solution_set
+from ..model import Number, Verdict, contains_interval
+from .base import Kind, evidence, interval_text
+
+__all__ = ["NormTest", "CkRange", "Holder", "Sobolev", "enclosure_text", "compare_enclosure"]
+
+
+def enclosure_text(r: Result) -> str:
+    """``alpha = 2`` (exact) or ``alpha in [lo, hi]`` (decimals, outward) with the status."""
+    if r.value is not None:
+        return f"{sp.sstr(r.value)} (exact, {r.status})"
+    if r.lower is None or r.upper is None:
+        return f"not enclosed ({r.status})"
+    lo, hi = sp.Rational(r.lower), sp.Rational(r.upper)
+    return f"[{float(lo):.10f}, {float(hi):.10f}] ({r.status})"
+
+
+def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -> tuple[bool | None, str]:
+    """Decide a value/bounds claim from an enclosure: True (proven), False (refuted), None."""
+    lo = r.value if r.value is not None else r.lower
+    hi = r.value if r.value is not None else r.upper
+    if lo is None or hi is None or r.status not in (CERTIFIED, REFUTED):
+        return None, "no certified enclosure"
+    lo, hi = sp.nsimplify(lo), sp.nsimplify(hi)
+    want_lo, want_hi = lower, upper
+    if value is not None:
+        t = tol or 0
+        want_lo = value - t if want_lo is None else max(want_lo, value - t)
+        want_hi = value + t if want_hi is None else min(want_hi, value + t)
+    inside = (want_lo is None or bool(lo >= want_lo)) and (want_hi is None or bool(hi <= want_hi))
+    outside = (want_lo is not None and bool(hi < want_lo)) or (want_hi is not None and bool(lo > want_hi))
+    if inside:
+        return True, "the certified enclosure lies inside the claimed set"
+    if outside:
+        return False, "the certified enclosure lies outside the claimed set"
+    return None, "the certified enclosure straddles the claimed set"
+
+
+class _ValueClaim(Kind):
+    optional = {"value": "claimed value", "tolerance": "|true - value| <= tolerance", "lower": "claim >= lower",
+                "upper": "claim <= upper", "at": "parameter values", "budget": "seconds for the JSR search"}
+    quantity = ""
+
+    def check(self) -> None:
+        self.values()
+        if not {"value", "lower", "upper"} & set(self.fields):
+            raise AnalysisError(f"{self.where}: kind {self.name!r} needs 'value', 'lower' or 'upper'")
+        [self.number(k) for k in ("value", "tolerance", "lower", "upper", "budget")]
+
+    def compute(self, a) -> Result:  # pragma: no cover
+        raise NotImplementedError
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        if a.params:
+            raise AnalysisError(f"{self.where}: fix every parameter with at = {{...}} "
+                                f"(free: {', '.join(p.name for p in a.params)})")
+        r = self.compute(a)
+        ok, why = compare_enclosure(r, self.number("value"), self.number("tolerance"), self.number("lower"),
+                                    self.number("upper"))
+        claim = " and ".join(x for x in (
+            f"= {sp.sstr(self.number('value'))}" + (f" ± {sp.sstr(self.number('tolerance'))}" if self.get("tolerance") else "")
+            if self.get("value") is not None else "",
+            f">= {sp.sstr(self.number('lower'))}" if self.get("lower") is not None else "",
+            f"<= {sp.sstr(self.number('upper'))}" if self.get("upper") is not None else "") if x)
+        enc = enclosure_text(r)
+        lo = r.value if r.value is not None else r.lower
+        hi = r.value if r.value is not None else r.upper
+        mid = r.value if r.value is not None else (None if lo is None or hi is None else (sp.Rational(lo) + sp.Rational(hi)) / 2)
+        width = 0 if r.value is not None or mid is None else float(sp.Rational(hi) - sp.Rational(lo))
+        nums = [Number(self.quantity, mid if r.value is not None else (float(mid) if mid is not None else None),
+                       tol=0 if r.value is not None else max(1e-6, 2 * width), lower=lo, upper=hi)]
+        text = f"{self.quantity} of {self.where_text()}: {enc}"
+        if ok is True:
+            return self.certified(f"{text}; claimed {claim}: {why}", evidence=[evidence(self.quantity, r, text=enc)], numbers=nums)
+        if ok is False:
+            return self.refuted(f"{text}; claimed {claim}: {why}", corrected=f"{self.quantity} = {enc}",
+                                evidence=[evidence(self.quantity, r, text=enc)], numbers=nums)
+        return self.inconclusive(f"{text}; claimed {claim}: {why}", evidence=[evidence(self.quantity, text=enc)],
+                                 settle="a tighter enclosure (longer JSR budget) or an exact closed form of the exponent",
+                                 numbers=nums)
+
+
+class Holder(_ValueClaim):
+    """The Hölder exponent at fixed parameters: certified enclosure vs the claimed value/bounds."""
+
+    name = "holder"
+    summary = "Hölder exponent at fixed parameters: value (± tolerance) or bounds, certified enclosure"
+    quantity = "alpha"
+    example = 'at = { w = "1/16" }\nvalue = 2'
+
+    def compute(self, a) -> Result:
+        return holder_exponent(a, budget_seconds=float(self.number("budget") or 20))
+
+
+class Sobolev(_ValueClaim):
+    """The L2-Sobolev exponent at fixed parameters."""
+
+    name = "sobolev"
+    summary = "L2-Sobolev exponent s_2 at fixed parameters: value or bounds, certified"
+    quantity = "s_2"
+    example = 'at = { w = "1/16" }\nlower = 2'
+
+    def compute(self, a) -> Result:
+        return sobolev_exponent(a)
+
+
+class NormTest(Kind):
+    """The Dyn–Levin norm test ``||(1/2 S_{a_{j+1}})^L||_inf < 1`` holds on the claimed interval."""
+
+    name = "norm test"
+    summary = "the L-step norm test proves C^j on the claimed interval (exact norm set)"
+    required = {"j": "smoothness C^j", "L": "number of steps", "interval": "claimed parameter interval"}
+    example = 'j = 1\nL = 2\ninterval = "(0, 1/8)"'
+
+    def check(self) -> None:
+        self.integer("j"), self.integer("L", 1), self.interval("interval")
+        self.values()
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        p = self.single_parameter()
+        j, L = self.get("j"), self.get("L")
+        lo, hi, lc, hc = self.interval("interval")
+        dom = self.scheme.domains.get(p.name)
+        within = (dom.lo, dom.hi) if dom is not None else (-sp.oo, sp.oo)
+        r = norm_solution_set(a, j + 1, L, p, within=within)
+        S = r.value
+        ok = contains_interval(S, lo, hi, closed=lc or hc)
+        claim = interval_text(lo, hi, lc, hc)
+        ev = [evidence(f"exact set where ||(1/2 S_(a_{j + 1}))^{L}||_inf < 1", r, text=f"{p.name} in {S}")]
+        nums = [Number("norm set", str(S))]
+        if ok:
+            return self.certified(f"the {L}-step norm test proves C^{j} for {p.name} in {claim}: it holds exactly on {S}",
+                                  evidence=ev, numbers=nums, sharpness=f"the norm-test set is {S}")
+        return self.refuted(f"the {L}-step norm test for C^{j} holds exactly on {S}, which does not contain {claim}",
+                            corrected=f"the {L}-step norm test proves C^{j} for {p.name} in {S}", evidence=ev, numbers=nums)
+
+
+class CkRange(Kind):
+    """``S_a(p)`` is C^j for every parameter value in the claimed open interval."""
+
+    name = "ck range"
+    summary = "C^j for every parameter value in the claimed interval (norm sets, Arb boxes, or a certified counterexample)"
+    required = {"j": "smoothness C^j", "interval": "claimed open parameter interval"}
+    optional = {"at": "values of the other parameters"}
+    example = 'j = 1\ninterval = "(0, 1/8)"'
+
+    def check(self) -> None:
+        self.integer("j"), self.interval("interval")
+        self.values()
+
+    def evaluate(self) -> Verdict:
+        a = self.symbol()
+        p = self.single_parameter()
+        j = self.get("j")
+        lo, hi, lc, hc = self.interval("interval")
+        claim = interval_text(lo, hi, lc, hc)
+        r = verify_smoothness_interval(a, j, (lo, hi), p)
+        route = r.witness.get("route")
+        ev = [evidence(f"C^{j} on {claim}", r if r.status in (CERTIFIED, REFUTED) else None, text=f"route: {route}")]
+        if r.value is True:
+            note = " (the closed ends are not checked: the interval is treated as open)" if lc or hc else ""
+            return self.certified(f"C^{j} for every {p.name} in {claim}, proven by {route}{note}", evidence=ev,
+                                  numbers=[Number("proven", True)])
+        if r.value is False:
+            q = r.witness["counterexample"]
+            return self.refuted(f"not C^{j} at {p.name} = {sp.sstr(q)} in {claim} (certified)",
+                                corrected=f"the scheme is not C^{j} at {p.name} = {sp.sstr(q)}; see the smoothness profile "
+                                          "for the true C^j set", evidence=ev, numbers=[Number("counterexample", q)])
+        return self.inconclusive(f"C^{j} on {claim} neither proven nor refuted", settle=r.provenance.get("message", ""),
+                                 evidence=[evidence(ev[0].title, text=str(r.witness.get("uncovered")))])

@@ -1,0 +1,291 @@
+"""Paper files: a paper's schemes and claims as data (TOML), checked without writing Python.
+
+A paper file has a ``[paper]`` table (``id``, ``title``, ``authors``, ``citation``, ``source``,
+``notes``), one ``[schemes.NAME]`` table per scheme and one ``[[claims]]`` table per claim::
+
+    [paper]
+    id = "900"
+    title = "The four-point scheme"
+    authors = ["N. Dyn", "D. Levin", "J. A. Gregory"]
+    citation = "Comput. Aided Geom. Design 4 (1987) 257-268"
+
+    [schemes.four-point]
+    mask = ["-w", 0, "1/2+w", 1, "1/2+w", 0, "-w"]   # or: catalogue / rules / symbol / level_mask
+    start = -3
+    parameters = { w = "(0, 1/4)" }                   # name = domain ("real", "(a, b)", "[a, oo)")
+    notes = "how garbled print was read"
+
+    [[claims]]
+    id = "900:Theorem1"            # the paper's numbering ("Theorem1" alone is prefixed with the id)
+    statement = "verbatim, as printed"
+    reading = "our reading, when the print is garbled"
+    kind = "sum rules"             # one of analysis.claims.kinds.KIND_CLASSES
+    # optional: title, reading_note, location, command (reproduces it), objects (names it speaks of)
+    scheme = "four-point"          # optional when the file has one scheme
+    factors = 2                    # the kind's fields
+
+A scheme is given by exactly one of ``catalogue`` (a catalogue slug, resolved by the
+``catalogue`` callable the command line passes in: the engine does not import the catalogue),
+``mask`` + ``start``, ``rules = { even = [...], odd = [...], first = p }``, ``symbol`` (an
+expression in ``z``) or ``level_mask`` + ``start`` (a level-dependent scheme, coefficients in
+``n`` or ``h = 2^-n``).
+
+Bad files are one-line :class:`~analysis.result.AnalysisError` messages: a TOML syntax error
+names the file and line; an unknown kind lists the kinds; an unknown scheme, parameter or field
+is named. A claim whose *evaluation* raises becomes inconclusive with the error
+(:func:`analysis.claims.model.evaluate_claim`) while the other claims are still evaluated.
+
+Examples
+--------
+>>> text = '''
+... [paper]
+... id = "900"
+... title = "Chaikin"
+... citation = "G. Chaikin (1974)"
+... [schemes.chaikin]
+... mask = ["1/4", "3/4", "3/4", "1/4"]
+... start = -2
+... [[claims]]
+... id = "Prop1"
+... statement = "Chaikin's scheme has three smoothing factors."
+... kind = "sum rules"
+... factors = 3
+... '''
+>>> p = parse_paper(text, "chaikin.toml")
+>>> p.id, [c.id for c in p.claims]
+('900', ['900:Prop1'])
+>>> from analysis.claims.model import evaluate_paper
+>>> [e.verdict.label for e in evaluate_paper(p)]
+['CERTIFIED TRUE']
+>>> parse_paper(text.replace('"sum rules"', '"sum rule"'), "chaikin.toml")
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: chaikin.toml: claim 900:Prop1: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, symmetry, weighted series
+>>> parse_paper("[paper\\nid = 1", "bad.toml")
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: bad.toml:1: TOML syntax error: Expected ']' at the end of a table declaration
+
+Algorithm
+---------
+``tomllib`` (``tomli`` on Python 3.10) reads the file; every table is checked against its allowed
+keys; schemes are built exactly (:class:`~analysis.algebra.symbol.LaurentSymbol`,
+:class:`~analysis.levels.level_dependent.LevelDependentScheme`); each claim's kind class
+validates its fields at load time, so a bad field fails before any computation.
+
+References
+----------
+TOML v1.0.0 (https://toml.io/en/v1.0.0); issue 11.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any, Callable, Mapping
+
+import sympy as sp
+
+try:  # Python >= 3.11
+    import tomllib
+except ModuleNotFoundError:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+from ..algebra.symbol import LaurentSymbol, parse_coefficient
+from ..levels.level_dependent import H, N, LevelDependentScheme, to_h
+from ..result import AnalysisError
+from .kinds import Domain, SchemeSpec, kind_class
+from .model import Claim, Paper
+
+__all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
+
+PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
+SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "parameters", "notes", "title"}
+#: the keys of a claim table that are not fields of its kind
+CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind", "command", "objects"}
+_DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask")
+
+Catalogue = Callable[[str], Any]
+
+
+def golden_file(path: str | Path) -> Path:
+    """The golden verdicts beside a paper file: ``FILE.verdicts.json`` for ``FILE.toml``."""
+    p = Path(path)
+    stem = p.name[: -len(".toml")] if p.name.endswith(".toml") else p.name
+    return p.with_name(stem + ".verdicts.json")
+
+
+def load_paper(path: str | Path, *, catalogue: Catalogue | None = None) -> Paper:
+    """Read and validate the paper file ``path`` (see the module docstring)."""
+    p = Path(path)
+    try:
+        text = p.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise AnalysisError(f"no paper file {p}") from None
+    except (OSError, UnicodeDecodeError) as exc:
+        raise AnalysisError(f"cannot read the paper file {p}: {exc}") from None
+    return parse_paper(text, str(p), catalogue=catalogue)
+
+
+def _syntax_error(exc: Exception, text: str, where: str) -> AnalysisError:
+    msg = str(exc)
+    m = re.search(r"\(at line (\d+), column \d+\)", msg)
+    line = int(m.group(1)) if m else (len(text.splitlines()) or 1)
+    msg = re.sub(r"\s*\(at (line \d+, column \d+|end of document)\)", "", msg)
+    return AnalysisError(f"{where}:{line}: TOML syntax error: {msg}")
+
+
+def _text(table: Mapping, key: str, where: str, required: bool = False) -> str:
+    v = table.get(key)
+    if v is None:
+        if required:
+            raise AnalysisError(f"{where}: missing '{key}'")
+        return ""
+    if not isinstance(v, str):
+        raise AnalysisError(f"{where}: '{key}' must be a string")
+    return v
+
+
+def _unknown(table: Mapping, allowed: set, where: str) -> None:
+    extra = sorted(set(table) - allowed)
+    if extra:
+        raise AnalysisError(f"{where}: unknown key {extra[0]!r} (allowed: {', '.join(sorted(allowed))})")
+
+
+def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> SchemeSpec:
+    w = f"{where}: scheme {name!r}"
+    if not isinstance(t, Mapping):
+        raise AnalysisError(f"{w}: expected a table [schemes.{name}]")
+    _unknown(t, SCHEME_KEYS, w)
+    given = [k for k in _DEFS if k in t]
+    if len(given) != 1:
+        raise AnalysisError(f"{w}: give exactly one of {', '.join(_DEFS)}")
+    how = given[0]
+    params = t.get("parameters", {})
+    if not isinstance(params, Mapping):
+        raise AnalysisError(f"{w}: parameters = {{ name = \"domain\" }}")
+    try:
+        domains = {k: Domain.parse(v) for k, v in params.items()}
+    except AnalysisError as exc:
+        raise AnalysisError(f"{w}: {exc}") from None
+    positive = {k for k, d in domains.items() if d.lo != -sp.oo and bool(d.lo >= 0)}
+    syms = {k: sp.Symbol(k, positive=True) if how == "level_mask" and k in positive else sp.Symbol(k) for k in domains}
+    start = t.get("start", 0)
+    if isinstance(start, bool) or not isinstance(start, int):
+        raise AnalysisError(f"{w}: start must be an integer")
+    declared = tuple(syms.values()) if params else None
+    symbol, level, definition = None, None, ""
+    try:
+        if how == "catalogue":
+            if catalogue is None:
+                raise AnalysisError("catalogue names need the catalogue (run the file with `subdiv`)")
+            entry = catalogue(str(t["catalogue"]))
+            symbol = getattr(entry, "symbol", entry)
+            definition = f"catalogue entry {t['catalogue']!r}"
+        elif how == "mask":
+            coeffs = [parse_coefficient(c, locals_=syms) for c in t["mask"]]
+            symbol = LaurentSymbol.from_mask(coeffs, start=start, params=declared)
+            definition = f"mask {[sp.sstr(c) for c in coeffs]} from index {start}"
+        elif how == "rules":
+            r = t["rules"]
+            if not isinstance(r, Mapping) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
+                raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
+            ev = [parse_coefficient(c, locals_=syms) for c in r["even"]]
+            od = [parse_coefficient(c, locals_=syms) for c in r["odd"]]
+            symbol = LaurentSymbol.from_rules(ev, od, r.get("first", 0), even_first=r.get("even_first"),
+                                              odd_first=r.get("odd_first"), params=declared)
+            definition = f"rules even {[sp.sstr(c) for c in ev]}, odd {[sp.sstr(c) for c in od]}, first " + ", ".join(
+                f"{k} {r[k]}" for k in ("first", "even_first", "odd_first") if k in r)
+        elif how == "symbol":
+            expr = parse_coefficient(str(t["symbol"]), locals_={**syms, "z": sp.Symbol("z")})
+            symbol = LaurentSymbol.from_expr(expr, params=declared)
+            definition = f"a(z) = {t['symbol']}"
+        else:
+            coeffs = [to_h(parse_coefficient(str(c), locals_={**syms, "n": N, "h": H})) for c in t["level_mask"]]
+            level = LevelDependentScheme(tuple(coeffs), start, tuple(syms.values()) if params else
+                                         tuple(sorted(set().union(*(c.free_symbols for c in coeffs)) - {H}, key=str)),
+                                         slug=name)
+            definition = f"level-dependent mask {[sp.sstr(c) for c in coeffs]} from index {start} (h = 2^-n)"
+    except AnalysisError as exc:
+        raise AnalysisError(f"{w}: {exc}") from None
+    except (TypeError, KeyError) as exc:
+        raise AnalysisError(f"{w}: cannot read {how}: {exc}") from None
+    if symbol is not None:
+        have = {x.name for c in symbol.mask for x in sp.sympify(c).free_symbols}
+    else:
+        have = {x.name for x in level.params}
+    unknown = sorted(set(domains) - have)
+    if unknown:
+        raise AnalysisError(f"{w}: unknown parameter {unknown[0]!r}: it does not occur in the scheme "
+                            f"(its parameters: {', '.join(sorted(have)) or 'none'})")
+    return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level)
+
+
+def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue | None = None) -> Paper:
+    """A :class:`~analysis.claims.model.Paper` from the TOML ``text`` (``where`` names it in errors)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise _syntax_error(exc, text, where) from None
+    _unknown(data, {"paper", "schemes", "claims"}, where)
+    meta = data.get("paper")
+    if not isinstance(meta, Mapping):
+        raise AnalysisError(f"{where}: missing the [paper] table (id, title, citation)")
+    _unknown(meta, PAPER_KEYS, f"{where}: [paper]")
+    pid = meta.get("id")
+    if not isinstance(pid, str) or not pid or ":" in pid:
+        raise AnalysisError(f"{where}: [paper] id must be a short string without ':' (e.g. \"900\")")
+    authors = meta.get("authors", [])
+    if isinstance(authors, str):
+        authors = [authors]
+    tables = data.get("schemes", {})
+    if not isinstance(tables, Mapping):
+        raise AnalysisError(f"{where}: schemes are tables [schemes.NAME]")
+    schemes = {name: _scheme(name, t, where, catalogue) for name, t in tables.items()}
+    claims_t = data.get("claims", [])
+    if not isinstance(claims_t, list):
+        raise AnalysisError(f"{where}: claims are an array of tables [[claims]]")
+    claims = []
+    for k, t in enumerate(claims_t, start=1):
+        if not isinstance(t, Mapping):
+            raise AnalysisError(f"{where}: claim #{k} is not a table (write [[claims]] and key = value lines)")
+        cid = t.get("id")
+        if not isinstance(cid, str) or not cid:
+            raise AnalysisError(f"{where}: claim #{k} needs an id (the paper's numbering, e.g. \"Theorem3.1\")")
+        cid = cid if ":" in cid else f"{pid}:{cid}"
+        w = f"{where}: claim {cid}"
+        kind = t.get("kind")
+        if not isinstance(kind, str):
+            raise AnalysisError(f"{w}: missing 'kind'")
+        cls = kind_class_named(kind, w)
+        fields = {x: v for x, v in t.items() if x not in CLAIM_META}
+        obj = cls(fields, schemes, w)
+        objects = t.get("objects", [obj.fields["scheme"]] if obj.uses_scheme else [])
+        if not isinstance(objects, list) or not all(isinstance(x, str) for x in objects):
+            raise AnalysisError(f"{w}: 'objects' must be a list of names")
+        claims.append(Claim(id=cid, kind=obj.shown_kind(), statement=_text(t, "statement", w, required=True),
+                            evaluate=obj.evaluate, title=_text(t, "title", w), reading=_text(t, "reading", w) or None,
+                            reading_note=_text(t, "reading_note", w) or None,
+                            objects=tuple(objects),
+                            command=_text(t, "command", w) or f"subdiv report {where} --claim '{cid}'",
+                            location=_text(t, "location", w)))
+    notes = [_text(meta, "notes", f"{where}: [paper]")]
+    if authors:
+        notes.insert(0, "Authors: " + ", ".join(map(str, authors)) + ".")
+    for s in schemes.values():
+        notes.append(f"Scheme {s.name}: {s.definition}"
+                     + (f"; parameters {', '.join(f'{k} in {d}' for k, d in s.domains.items())}" if s.domains else "")
+                     + (f". {s.notes}" if s.notes else ""))
+    try:
+        return Paper(id=pid, title=_text(meta, "title", f"{where}: [paper]", required=True),
+                     citation=_text(meta, "citation", f"{where}: [paper]"), claims=claims,
+                     source=_text(meta, "source", f"{where}: [paper]"), notes="\n".join(x for x in notes if x))
+    except ValueError as exc:
+        raise AnalysisError(f"{where}: {exc}") from None
+
+
+def kind_class_named(kind: str, where: str):
+    try:
+        return kind_class(kind)
+    except AnalysisError as exc:
+        raise AnalysisError(f"{where}: {exc}") from None
