@@ -25,10 +25,13 @@ from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient
 
 
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
+from . import mary as _mary
+from .common import scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
 
 
 def cmd_symbol(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_symbol(args, arity)
     from ..algebra.factorization import sum_rules, symmetry
 
     a, label = scheme_from_args(args)
@@ -70,6 +73,8 @@ def _describe_exceptional(cases, indent="  ") -> list[str]:
 
 
 def cmd_factor(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_factor(args, arity)
     from ..algebra.factorization import polynomial_reproduction, smoothing_factor, sum_rules
 
     a, label = scheme_from_args(args)
@@ -101,6 +106,8 @@ def cmd_factor(args) -> None:
 
 
 def cmd_norm(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_norm(args, arity)
     from ..stationary.difference import difference_norm, scheme_norm
 
     a, label = scheme_from_args(args)
@@ -180,6 +187,8 @@ def _read_points(args):
 
 
 def cmd_refine(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_refine(args, arity)
     import numpy as np
 
     from ..stationary import refinement
@@ -224,6 +233,8 @@ def _not_rational(v):
 
 
 def cmd_matrices(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_matrices(args, arity)
     from ..algebra.factorization import smoothing_factor
     from ..stationary.transition import basic_limit_support, local_eigenvalues, transition_matrices
 

@@ -41,7 +41,7 @@ M. F. Hassan, I. P. Ivrissimitzis, N. A. Dodgson, M. A. Sabin, Comput. Aided Geo
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, Sequence
 
 import mpmath
 import sympy as sp
@@ -232,3 +232,74 @@ def smoothness_mary(a: LaurentSymbol, m: int, j: int, *, budget_seconds: float =
     witness["reason"] = (f"JSR in [{sp.sstr(lo)}, {sp.sstr(hi)}] straddles {m}^{k - j}: a longer budget or a "
                          "better spectrum-maximizing product would settle it")
     return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=h.provenance)
+
+
+# --------------------------------------------------------------------------------------------
+# C^j parameter ranges of one-parameter m-ary families
+# --------------------------------------------------------------------------------------------
+
+def _violation_set(a: LaurentSymbol, m: int, j: int, p: sp.Symbol, k: int) -> tuple[sp.Set, list]:
+    """``{p : some T_eps(c(p)) has a real eigenvalue r(p) with |r(p)| >= m^(k-j)}`` from the linear
+    factors (in lambda) of the characteristic polynomials; nonlinear factors are listed, not used."""
+    lam = sp.Symbol("lambda")
+    c = factor_out_mary(a, k + 1, m) / m
+    theta = sp.Integer(m) ** (k - j)
+    V: sp.Set = sp.EmptySet
+    unused = []
+    for eps, T in enumerate(transition_matrices_mary(c, m)):
+        cp = sp.factor_list(sp.expand(T.charpoly(lam).as_expr()), lam)
+        for f, _mult in cp[1]:
+            poly = sp.Poly(f, lam)
+            if poly.degree() != 1:
+                if poly.degree() > 1:
+                    unused.append((eps, f))
+                continue
+            A, B = poly.all_coeffs()
+            r = sp.cancel(-B / A)
+            if r.free_symbols - {p}:
+                unused.append((eps, f))
+                continue
+            for ineq in (r >= theta, r <= -theta):
+                V = V.union(sp.solveset(ineq, p, domain=sp.S.Reals))
+    return V, unused
+
+
+def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence = (1, 2, 3),
+                  within=(-sp.oo, sp.oo)) -> Result:
+    """Where is the one-parameter m-ary family ``C^j``?  Both sides certified where possible.
+
+    * **C^j** (sufficient): the union over ``L in Ls`` of the exact sets where the m-ary Dyn–Levin test
+      ``||(1/m S_{a_{j+1}})^L||_inf < 1`` holds (:func:`analysis.stationary.normset.norm_solution_set`).
+    * **not C^j** (necessary): the exact set where a single transition matrix ``T_eps(c(p))``,
+      ``c = m^k a/q_m^(k+1)``, has a real eigenvalue of modulus ``>= m^(k-j)`` (then ``alpha <= j``).
+
+    ``value`` is the C^j set (a sympy set); ``witness["not_Cj"]`` the proven complement part,
+    ``witness["undecided"]`` what neither covers inside ``within`` (empty: the range is exact, certified
+    on both sides; otherwise points there can be decided one by one with :func:`smoothness_mary`).
+    Uses the generic ``k`` (``N - 1`` identically in the parameter).
+    """
+    from ..stationary.normset import _parameter, norm_solution_set
+
+    m = check_arity(m)
+    p = _parameter(a, param)
+    k = smoothing_factor_mary(a, m, exceptional=False).value - 1
+    if j > k:
+        raise AnalysisError(f"the family has only {k + 1} factors q_{m} identically: C^{j} needs {j + 1}")
+    lo, hi = (sp.sympify(w) for w in within)
+    box = sp.Interval(lo, hi, left_open=True, right_open=True)
+    S: sp.Set = sp.EmptySet
+    per_L = {}
+    for L in Ls:
+        r = norm_solution_set(a, j + 1, L, p, within=(lo, hi), arity=m)
+        per_L[L] = str(r.value)
+        S = S.union(r.value.to_sympy())
+    V, unused = _violation_set(a, m, j, p, k)
+    V = V.intersect(box)
+    undecided = box - S.union(V)
+    exact = undecided.is_empty is True or undecided == sp.EmptySet
+    return Result(value=S, status=CERTIFIED if exact else INCONCLUSIVE,
+                  witness={"parameter": p.name, "j": j, "k": k, "arity": m, "not_Cj": V, "undecided": undecided,
+                           "norm_sets": per_L, "nonlinear_factors": unused,
+                           "exact": exact},
+                  provenance={"method": "m-ary Dyn-Levin norm sets (C^j) and exact real eigenvalues of the "
+                                        "transition matrices (not C^j)", "arity": m})
