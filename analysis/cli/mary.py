@@ -22,6 +22,21 @@ from ..result import AnalysisError
 from .common import _emit, _int_arg, _parse_Ls, _parse_within, scheme_from_args
 
 
+def _fmt_set(S) -> str:
+    """A sympy set of reals as ``(a, b] U [c, oo)``."""
+    if S == sp.EmptySet:
+        return "empty"
+    parts = S.args if isinstance(S, sp.Union) else (S,)
+    out = []
+    for I in parts:
+        if isinstance(I, sp.Interval):
+            out.append(("(" if I.left_open else "[") + f"{sp.sstr(I.start)}, {sp.sstr(I.end)}"
+                       + (")" if I.right_open else "]"))
+        else:
+            out.append(sp.sstr(I))
+    return " U ".join(out)
+
+
 def _input(args, m: int):
     a, label = scheme_from_args(args, arity_ok=True)
     return a, label, f"scheme: {label}   (arity {m}, domain {a.domain})"
@@ -206,10 +221,12 @@ def cmd_range(args, m: int) -> None:
     Ls = [1, 2]
     r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within)
     p = r.witness["parameter"]
-    lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}): {p} in {r.value}",
-             f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): {r.witness['not_Cj']}",
-             (f"the C^{j} range is exactly {r.value}, certified on both sides" if r.witness["exact"] else
-              f"undecided: {r.witness['undecided']} (decide points with `subdiv holder --C {j}`)") + f"   [{r.status}]"]
-    _emit(args, {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": str(r.value),
-                 "not_Cj": str(r.witness["not_Cj"]), "undecided": str(r.witness["undecided"]),
+    lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}): {p} in {_fmt_set(r.value)}",
+             f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
+             f"{_fmt_set(r.witness['not_Cj'])}",
+             (f"the C^{j} range is exactly {_fmt_set(r.value)}, certified on both sides" if r.witness["exact"] else
+              f"undecided: {_fmt_set(r.witness['undecided'])} (decide points with `subdiv holder --C {j}`)")
+             + f"   [{r.status}]"]
+    _emit(args, {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
+                 "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
                  "status": r.status}, "\n".join(lines))
