@@ -243,6 +243,29 @@ def test_cli_mary_json_and_binary_only_commands():
     assert p.returncode == 2 and "binary schemes only" in p.stderr and p.stderr.count("\n") == 1
 
 
+@pytest.mark.parametrize("argv", [
+    ["symbol", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2"],
+    ["norm", "--scheme", "four-point", "--param", "w=1/16", "--m", "2", "--L", "1,2"],
+    ["norm", "--scheme", "four-point", "--m", "2", "--solve", "w"],
+    ["matrices", "--scheme", "bspline-3", "--transition"],
+    ["holder", "--scheme", "bspline-2", "--C", "1", "--json"],
+    ["refine", "--scheme", "chaikin", "--points", "0,0;1,0;1,1", "--steps", "2", "--exact"],
+])
+def test_cli_arity_two_equals_default(argv):
+    def timeless(r):          # wall-clock "seconds" fields differ from run to run
+        return r[0], [x for x in r[1].splitlines() if '"seconds"' not in x], r[2]
+
+    assert timeless(_run(*argv)) == timeless(_run(*argv, "--arity", "2"))
+
+
+def test_cli_list_mary_and_sobolev_inconclusive():
+    rc, out, _ = _run("list", "--mary", "--json")
+    rows = {r["slug"]: r for r in json.loads(out)["schemes"]}
+    assert rows["ternary-four-point"]["arity"] == 3 and "arity" not in rows["chaikin"]
+    rc, out, _ = _run("holder", "--scheme", "ternary-bspline-2", "--sobolev", "--json")
+    assert rc == 0 and json.loads(out)["sobolev"]["status"] == "inconclusive"
+
+
 def test_cli_arity_two_is_byte_identical():
     p1 = subprocess.run([sys.executable, "-m", "analysis", "factor", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2"],
                         capture_output=True, text=True)

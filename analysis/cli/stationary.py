@@ -274,8 +274,10 @@ def cmd_list(args) -> None:
     import schemes
 
     rows = []
-    for e in schemes.entries(numeric=args.numeric):
+    for e in schemes.entries(numeric=args.numeric, mary=getattr(args, "mary", False)):
         rows.append({"slug": e.slug, "title": e.title, "params": [p.name for p in e.params], "source": e.source})
+        if getattr(e, "arity", 2) != 2:                   # m-ary entries only (binary rows unchanged)
+            rows[-1]["arity"] = e.arity
     text = "\n".join(f"{r['slug']:28s} {('(' + ', '.join(r['params']) + ') ') if r['params'] else ''}{r['title']}"
                      for r in rows)
     _emit(args, {"schemes": rows}, text)
@@ -333,4 +335,5 @@ def register(sub) -> None:
     s = sub.add_parser("list", help="the catalogue of named schemes")
     s.add_argument("--json", action="store_true")
     s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
+    s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary; issue 12)")
     s.set_defaults(func=cmd_list)
