@@ -69,7 +69,14 @@ def lagrange_mary_symbol(n_points: int, m: int) -> LaurentSymbol:
 def ternary_four_point_symbol() -> LaurentSymbol:
     """Hassan–Ivrissimitzis–Dodgson–Sabin (2002): ``f_{3i} = f_i``,
     ``f_{3i+1} = a0 f_{i-1} + a1 f_i + a2 f_{i+1} + a3 f_{i+2}``, ``f_{3i+2}`` the mirror, with
-    ``a0 = -1/18 - mu/6``, ``a1 = 13/18 + mu/2``, ``a2 = 7/18 - mu/2``, ``a3 = -1/18 + mu/6``."""
+    ``a0 = -1/18 - mu/6``, ``a1 = 13/18 + mu/2``, ``a2 = 7/18 - mu/2``, ``a3 = -1/18 + mu/6``.
+
+    The coefficients were typed from memory; they could not be checked against the paper (only its
+    first page and those of papers quoting it are in the stored corpora): see the catalogue entry's notes.
+
+    >>> ternary_four_point_symbol().subs({MU: sp.Rational(1, 27)}) == lagrange_mary_symbol(4, 3)
+    True
+    """
     r = sp.Rational
     a0, a1, a2, a3 = -r(1, 18) - MU / 6, r(13, 18) + MU / 2, r(7, 18) - MU / 2, -r(1, 18) + MU / 6
     return LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
@@ -90,12 +97,20 @@ ENTRIES = tuple(_bspline_entry(d, m) for m in (3, 4) for d in range(1, 6)) + (
         slug="ternary-four-point", title="Ternary interpolatory 4-point scheme with tension mu",
         symbol=ternary_four_point_symbol(), params=(MU,), arity=3,
         defaults={"mu": sp.Rational(1, 27)},
-        source="Hassan, Ivrissimitzis, Dodgson, Sabin, Comput. Aided Geom. Design 19 (2002) 1-18",
-        notes="a0..a3 as in ternary_four_point_symbol: transcribed from the paper as remembered by the "
-              "implementer (the paper could not be fetched from the search corpora); checked in "
-              "tests/test_issue12_mary.py: interpolatory, symmetric, sum rules for every mu, and at "
-              "mu = 1/27 it equals the ternary Lagrange (Dubuc-Deslauriers) scheme. Default mu = 1/27 "
-              "(cubic reproduction, computed)."),
+        source="Hassan, Ivrissimitzis, Dodgson, Sabin, Comput. Aided Geom. Design 19 (2002) 1-18 "
+               "(mask NOT checked against the paper, see notes)",
+        notes="a0..a3 as in ternary_four_point_symbol, typed from memory by the implementer. Transcription "
+              "check attempted 2026-11-24 with the search corpora (pages/code/docs): the stored copies of the "
+              "paper and of the papers quoting it (Beccari-Casciola-Romani, "
+              "https://123dok.org/document/zlgj223o-an-interpolating-point-c.html; Mustafa-Khan 2009, "
+              "https://studylib.net/doc/10817457/) hold only their first page, without the mask or the "
+              "parameter ranges, so the coefficients are UNVERIFIED. The only published claims retrieved are "
+              "the paper's title ('An interpolating 4-point C2 ternary stationary subdivision scheme') and "
+              "Beccari et al.'s summary ('Hassan et al. (2002) showed that we can achieve higher smoothness and "
+              "smaller support for the so-called interpolating 4-point stationary scheme, by going from binary "
+              "(Dyn et al., 1987) to ternary'); both are checked in tests/test_issue12_mary.py. Internal "
+              "checks: interpolatory, symmetric, sum rules for every mu, and at mu = 1/27 it equals the "
+              "ternary Lagrange (Dubuc-Deslauriers) scheme. Default mu = 1/27 (cubic reproduction, computed)."),
     SchemeEntry(
         slug="ternary-dd-4", title="Ternary Dubuc-Deslauriers 4-point (reproduces cubics)",
         symbol=lagrange_mary_symbol(4, 3), params=(), arity=3,
