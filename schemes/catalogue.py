@@ -80,6 +80,9 @@ class SchemeEntry:
         The even/odd rules as printed, when the entry is defined from rules.
     aliases : tuple of str
         Other names :func:`get` accepts for this entry.
+    arity : int
+        ``m`` in ``(S_a f)_i = sum_j a_{i-mj} f_j`` (2 for binary; m-ary entries live in
+        :mod:`schemes.mary`, issue 12).
 
     Examples
     --------
@@ -99,8 +102,11 @@ class SchemeEntry:
     defaults: Mapping[str, sp.Expr] = field(default_factory=dict, hash=False)
     stencils: Rules | None = None
     aliases: tuple = ()
+    arity: int = 2
 
     def __post_init__(self) -> None:
+        if not isinstance(self.arity, int) or self.arity < 2:
+            raise ValueError(f"{self.slug}: arity must be an integer >= 2")
         if not _SLUG.match(self.slug):
             raise ValueError(f"slug {self.slug!r} is not kebab-case")
         for a in self.aliases:
@@ -267,6 +273,9 @@ class NumericSchemeEntry:
 
 _REGISTRY: dict[str, SchemeEntry] | None = None
 _NUMERIC: dict[str, NumericSchemeEntry] = {}
+#: m-ary entries (issue 12): found by get(), listed only with names(mary=True) / entries(mary=True).
+MARY_MODULE = "schemes.mary"
+_MARY: dict[str, SchemeEntry] = {}
 _ALIASES: dict[str, str] = {}
 
 
@@ -304,11 +313,16 @@ def _registry() -> dict[str, SchemeEntry]:
         _ALIASES.update(aliases)
         _NUMERIC.clear()
         _NUMERIC.update(numeric)
+        _MARY.clear()
+        for e in importlib.import_module(MARY_MODULE).ENTRIES:
+            if e.slug in reg or e.slug in numeric or e.slug in aliases or e.slug in _MARY:
+                raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {MARY_MODULE}")
+            _MARY[e.slug] = e
         _REGISTRY = reg
     return _REGISTRY
 
 
-def names(*, aliases: bool = False, numeric: bool = False) -> list[str]:
+def names(*, aliases: bool = False, numeric: bool = False, mary: bool = False) -> list[str]:
     """The slugs of all entries, in catalogue order (with ``aliases=True`` also the aliases).
 
     With ``numeric=True`` the :class:`NumericSchemeEntry` slugs (Daubechies) follow the exact
@@ -325,12 +339,14 @@ def names(*, aliases: bool = False, numeric: bool = False) -> list[str]:
     out = list(reg)
     if numeric:
         out += list(_NUMERIC)
+    if mary:
+        out += list(_MARY)
     if aliases:
         out += [a for a, t in _ALIASES.items() if numeric or t in reg]
     return out
 
 
-def entries(*, numeric: bool = False) -> list:
+def entries(*, numeric: bool = False, mary: bool = False) -> list:
     """All entries with an exact symbol, in catalogue order (``numeric=True``: then the
     :class:`NumericSchemeEntry` ones).
 
@@ -342,6 +358,8 @@ def entries(*, numeric: bool = False) -> list:
     out: list = list(_registry().values())
     if numeric:
         out += list(_NUMERIC.values())
+    if mary:
+        out += list(_MARY.values())
     return out
 
 
@@ -363,11 +381,16 @@ def get(slug: str) -> SchemeEntry:
         return reg[key]
     if key in _NUMERIC:
         return _NUMERIC[key]
+    if key in _MARY:
+        return _MARY[key]
     if key in _ALIASES:
         target = _ALIASES[key]
         return reg[target] if target in reg else _NUMERIC[target]
     candidates = list(reg) + list(_NUMERIC) + list(_ALIASES)
     close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
+    if not close:                      # m-ary names are suggested only when no binary name is close
+        candidates = candidates + list(_MARY)
+        close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
     m = re.fullmatch(r"(.*?)(\d+)", key)
     if m:
         # a numbered family ("daubechies-5"): the numerically nearest members

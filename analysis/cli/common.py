@@ -66,8 +66,36 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
     return out
 
 
-def scheme_from_args(args) -> tuple[LaurentSymbol, str]:
-    """The symbol (with --param values substituted) and a label for it."""
+def scheme_arity(args) -> int:
+    """The arity of the scheme input: ``--arity M`` (an integer >= 2), else the catalogue entry's
+    arity, else 2. A ``--arity`` that contradicts the entry's is an error (issue 12)."""
+    from ..algebra.mary import check_arity
+
+    text = getattr(args, "arity", None)
+    given = None
+    if text is not None:
+        try:
+            given = check_arity(int(str(text).strip()))
+        except ValueError:
+            raise AnalysisError(f"--arity must be an integer >= 2, not {text!r}") from None
+    own = 2
+    if getattr(args, "scheme", None) is not None:
+        import schemes
+
+        own = getattr(schemes.get(args.scheme), "arity", 2)
+        if given is not None and given != own:
+            raise AnalysisError(f"scheme {args.scheme!r} has arity {own}; drop --arity or give --arity {own}")
+    return own if given is None else given
+
+
+def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, str]:
+    """The symbol (with --param values substituted) and a label for it.
+
+    Commands without m-ary support refuse an m-ary input (``--arity M`` or an m-ary catalogue entry)
+    with a one-line error; the m-ary commands (:mod:`analysis.cli.mary`) pass ``arity_ok=True``."""
+    if not arity_ok and (m := scheme_arity(args)) != 2:
+        raise AnalysisError(f"this command analyses binary schemes only (arity {m} given); m-ary schemes: "
+                            "subdiv symbol, factor, norm, refine, matrices, holder, range with --arity")
     given = [x for x in ("scheme", "mask", "even", "symbol") if getattr(args, x, None) is not None]
     if len(given) != 1:
         raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
@@ -112,6 +140,8 @@ def _add_scheme_args(p: argparse.ArgumentParser) -> None:
     g.add_argument("--odd-first", metavar="P")
     g.add_argument("--symbol", metavar="EXPR", help='a Laurent polynomial in z, e.g. "(1+z)**4/(8*z**2)"')
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
+    p.add_argument("--arity", metavar="M", help="m-ary scheme: (S_a f)_i = sum_j a_{i-Mj} f_j (default 2, "
+                   "or the catalogue entry's arity)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
 
 

@@ -13,7 +13,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .common import _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
+from . import mary as _mary
+from .common import scheme_arity, _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -233,6 +234,8 @@ def _stability_part(args, a, budget):
 
 
 def cmd_holder(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_holder(args, arity)
     budget = float(args.budget)
     entry = _numeric_entry(args)
     if entry is not None:
@@ -261,6 +264,8 @@ def cmd_holder(args) -> None:
 
 
 def cmd_range(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_range(args, arity)
     from ..regularity.ranges import alpha_curve, ck_parameter_set
 
     if args.figure:

@@ -25,10 +25,13 @@ from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient
 
 
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
+from . import mary as _mary
+from .common import scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
 
 
 def cmd_symbol(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_symbol(args, arity)
     from ..algebra.factorization import sum_rules, symmetry
 
     a, label = scheme_from_args(args)
@@ -70,6 +73,8 @@ def _describe_exceptional(cases, indent="  ") -> list[str]:
 
 
 def cmd_factor(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_factor(args, arity)
     from ..algebra.factorization import polynomial_reproduction, smoothing_factor, sum_rules
 
     a, label = scheme_from_args(args)
@@ -101,6 +106,8 @@ def cmd_factor(args) -> None:
 
 
 def cmd_norm(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_norm(args, arity)
     from ..stationary.difference import difference_norm, scheme_norm
 
     a, label = scheme_from_args(args)
@@ -180,6 +187,8 @@ def _read_points(args):
 
 
 def cmd_refine(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_refine(args, arity)
     import numpy as np
 
     from ..stationary import refinement
@@ -224,6 +233,8 @@ def _not_rational(v):
 
 
 def cmd_matrices(args) -> None:
+    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
+        return _mary.cmd_matrices(args, arity)
     from ..algebra.factorization import smoothing_factor
     from ..stationary.transition import basic_limit_support, local_eigenvalues, transition_matrices
 
@@ -263,8 +274,10 @@ def cmd_list(args) -> None:
     import schemes
 
     rows = []
-    for e in schemes.entries(numeric=args.numeric):
+    for e in schemes.entries(numeric=args.numeric, mary=getattr(args, "mary", False)):
         rows.append({"slug": e.slug, "title": e.title, "params": [p.name for p in e.params], "source": e.source})
+        if getattr(e, "arity", 2) != 2:                   # m-ary entries only (binary rows unchanged)
+            rows[-1]["arity"] = e.arity
     text = "\n".join(f"{r['slug']:28s} {('(' + ', '.join(r['params']) + ') ') if r['params'] else ''}{r['title']}"
                      for r in rows)
     _emit(args, {"schemes": rows}, text)
@@ -322,4 +335,5 @@ def register(sub) -> None:
     s = sub.add_parser("list", help="the catalogue of named schemes")
     s.add_argument("--json", action="store_true")
     s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
+    s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary; issue 12)")
     s.set_defaults(func=cmd_list)

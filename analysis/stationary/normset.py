@@ -46,6 +46,7 @@ import sympy as sp
 
 from ..algebra.algebraic import IntervalSet, RealAlgebraic, rational_between as _sample_between
 from .difference import difference_symbol, iterated_symbol
+from .mary import difference_symbol_mary, iterated_symbol_mary
 from ..result import CERTIFIED, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 
@@ -87,15 +88,21 @@ def _parameter(a: LaurentSymbol, param) -> sp.Symbol:
                         + ", ".join(p.name for p in a.params) + ")")
 
 
-def _residue_polys(a: LaurentSymbol, m: int, L: int, spelling: str, p: sp.Symbol):
-    am = difference_symbol(a, m, spelling=spelling)
+def _residue_polys(a: LaurentSymbol, m: int, L: int, spelling: str, p: sp.Symbol, arity: int = 2):
+    if arity == 2:
+        am = difference_symbol(a, m, spelling=spelling)
+    else:
+        am = difference_symbol_mary(a, m, arity, spelling=spelling)
     if not am.domain.is_PolynomialRing or not am.domain.domain.is_QQ:
         raise AnalysisError(
             f"a parameter range needs coefficients that are polynomials in {p.name} over the rationals "
             f"(this symbol's domain is {am.domain})")
-    prod = iterated_symbol(am, L)
-    scale = sp.Rational(1, 2 ** L)
-    mod = 2 ** L
+    if arity == 2:
+        prod = iterated_symbol(am, L)
+    else:
+        prod = iterated_symbol_mary(am, L, arity)
+    scale = sp.Rational(1, arity ** L)
+    mod = arity ** L
     by_res: dict[int, list[sp.Poly]] = {}
     for i, c in prod.items():
         poly = sp.Poly(scale * c, p, domain=sp.QQ)
@@ -153,14 +160,14 @@ def _bound_to_algebraic(x) -> RealAlgebraic | None:
 
 
 def norm_function(a: LaurentSymbol, m: int, L: int, param=None, *, spelling: str = "paper",
-                  within=(-sp.oo, sp.oo)) -> Result:
+                  within=(-sp.oo, sp.oo), arity: int = 2) -> Result:
     """``p -> ||(1/2 S_{a_m})^L||_inf`` as exact pieces ``max(polynomials)`` on cells of ``within``.
 
     ``value`` is a list of :class:`NormPiece`; the breakpoints are the real roots of the
     coefficients (at the breakpoints the norm is the common limit: it is continuous).
     """
     p = _parameter(a, param)
-    am, by_res = _residue_polys(a, m, L, spelling, p)
+    am, by_res = _residue_polys(a, m, L, spelling, p, arity)
     lo, hi = (_bound_to_algebraic(w) for w in within)
     cuts = [r for r in _unique_roots([q for qs in by_res.values() for q in qs]) if _inside(r, lo, hi)]
     bounds = [lo] + cuts + [hi]
@@ -188,17 +195,19 @@ def _norm_below_at_point(by_res, x: RealAlgebraic, bound) -> bool:
 
 
 def norm_solution_set(a: LaurentSymbol, m: int, L: int, param=None, *, spelling: str = "paper",
-                      within=(-sp.oo, sp.oo), bound=1) -> Result:
+                      within=(-sp.oo, sp.oo), bound=1, arity: int = 2) -> Result:
     """The exact set ``{p in within : ||(1/2 S_{a_m})^L||_inf < bound}`` (an :class:`IntervalSet`).
 
     The set is open (the norm is continuous). ``witness["pieces"]`` is the piecewise norm;
     ``witness["implies"]`` says which smoothness the Dyn–Levin test gives on the set (C^{m-1}).
+    ``arity`` (default 2): the m-ary test ``||(1/arity S_{a_m})^L||_inf < bound`` with the m-ary
+    difference symbol of :mod:`analysis.stationary.mary` (issue 12).
     """
     bound = sp.Rational(bound)
-    fn = norm_function(a, m, L, param, spelling=spelling, within=within)
+    fn = norm_function(a, m, L, param, spelling=spelling, within=within, arity=arity)
     pieces: list[NormPiece] = fn.value
     p = _parameter(a, param)
-    _, by_res = _residue_polys(a, m, L, spelling, p)
+    _, by_res = _residue_polys(a, m, L, spelling, p, arity)
 
     # cut points: cell boundaries and, inside each cell, where a residue polynomial meets the bound
     points: list[RealAlgebraic] = []

@@ -1,0 +1,237 @@
+"""The m-ary branch of ``subdiv symbol | factor | norm | refine | matrices | holder | range`` (issue 12).
+
+The binary commands call these when the input has arity ``M != 2`` (``--arity M`` or an m-ary catalogue
+entry); with arity 2 nothing here runs, so binary output is unchanged.
+
+Examples
+--------
+::
+
+    subdiv holder --scheme ternary-bspline-3
+    subdiv holder --mask "1,2" --arity 3                   # not convergent, naming the root of unity
+    subdiv range --scheme ternary-four-point --C 2 --L 1
+    subdiv norm --scheme ternary-four-point --m 3 --solve mu
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..jsonable import exact_and_float
+from ..result import AnalysisError
+from .common import _emit, _int_arg, _parse_Ls, _parse_within, scheme_from_args
+
+
+def _fmt_set(S) -> str:
+    """A sympy set of reals as ``(a, b] U [c, oo)``."""
+    if S == sp.EmptySet:
+        return "empty"
+    parts = S.args if isinstance(S, sp.Union) else (S,)
+    out = []
+    for I in parts:
+        if isinstance(I, sp.Interval):
+            out.append(("(" if I.left_open else "[") + f"{sp.sstr(I.start)}, {sp.sstr(I.end)}"
+                       + (")" if I.right_open else "]"))
+        else:
+            out.append(sp.sstr(I))
+    return " U ".join(out)
+
+
+def _input(args, m: int):
+    a, label = scheme_from_args(args, arity_ok=True)
+    return a, label, f"scheme: {label}   (arity {m}, domain {a.domain})"
+
+
+def cmd_symbol(args, m: int) -> None:
+    from ..algebra.mary import sum_rules_mary, symmetry_mary
+
+    a, label, head = _input(args, m)
+    sr, sym = sum_rules_mary(a, m), symmetry_mary(a, m)
+    lines = [head, f"support:  [{a.start}, {a.end}]", f"mask:     {', '.join(sp.sstr(c) for c in a.mask)}",
+             f"a(z) =    {a.pretty()}",
+             f"residue sums A_r = sum_j a_(r+{m}j): {', '.join(sp.sstr(x) for x in sr.witness['residue_sums'])}",
+             ("sum rules hold: a(1) = %d, a(eps) = 0 for eps^%d = 1, eps != 1" % (m, m)) if sr.value else
+             "sum rules FAIL: " + "; ".join(sr.witness["failures"])
+             + (f" (they hold for {sr.witness['solutions']})" if sr.witness.get("solutions") else ""),
+             f"symmetric: {'yes' if sym.value else 'no'} (mask centre {sym.witness['centre']}, "
+             f"limit function centre {sym.witness['limit_centre']})"]
+    _emit(args, {"scheme": label, "arity": m, "start": a.start, "end": a.end, "mask": list(a.mask),
+                 "sum_rules": sr.to_json(), "symmetry": sym.to_json()}, "\n".join(lines))
+
+
+def cmd_factor(args, m: int) -> None:
+    from ..algebra.mary import polynomial_generation_mary, polynomial_reproduction_mary, smoothing_factor_mary
+
+    a, label, head = _input(args, m)
+    f = smoothing_factor_mary(a, m)
+    lines = [head, f"a(z) = ((1+...+z^{m - 1})/{m})^{f.value} b(z),  b(z) = {f.witness['b'].pretty()}   [{f.status}]"]
+    for e in f.witness["exceptional"]:
+        lines.append(f"  at {sp.sstr(e['condition'])}: k = {e['k']}")
+    data = {"scheme": label, "arity": m, "k": f.value, "b": f.witness["b"],
+            "exceptional": [{"condition": e["condition"], "k": e["k"]} for e in f.witness["exceptional"]]}
+    if a.is_numeric or a.params:
+        g = polynomial_generation_mary(a, m)
+        r = polynomial_reproduction_mary(a, m)
+        lines.append(f"generates polynomials of degree {g.value}; reproduces degree {r.value} "
+                     f"(tau = a'(1)/{m} = {sp.sstr(r.witness['tau'])}, {r.provenance['parametrisation']})")
+        for h in r.witness["higher"]:
+            lines.append(f"  reproduces degree {h['degree']} at {sp.sstr(h['condition'])}")
+        data.update({"generation_degree": g.value, "reproduction_degree": r.value, "tau": r.witness["tau"],
+                     "higher": r.witness["higher"]})
+    _emit(args, data, "\n".join(lines))
+
+
+def cmd_norm(args, m: int) -> None:
+    from ..stationary.mary import difference_norm_mary, scheme_norm_mary
+
+    a, label, head = _input(args, m)
+    Ls = _parse_Ls(args.L)
+    k = _int_arg(args.m, "--m")
+    if k < 0:
+        raise AnalysisError("--m must be >= 0")
+    if any(m ** L > 10 ** 6 for L in Ls):
+        raise AnalysisError(f"--L too large for arity {m} (at most {m}^L = 10^6 residues)")
+    lines, rows = [head], []
+    if args.solve is not None or not a.is_numeric:
+        from ..stationary.normset import norm_solution_set
+
+        if args.solve is None:
+            raise AnalysisError("free parameter(s): give values with --param, or --solve NAME")
+        within = _parse_within(args.within)
+        lines.append(f"set of {args.solve} where ||(1/{m} S_a{k})^L||_inf < 1, a{k} = ({m} z^{m - 1}/(1+...+z^{m - 1}))^{k} a")
+        for L in Ls:
+            r = norm_solution_set(a, k, L, args.solve, spelling=args.spelling, within=within, arity=m)
+            lines.append(f"  L = {L}: {r.value}   [{r.status}]")
+            rows.append({"L": L, "m": k, "set": r.value, "status": r.status})
+        lines.append(f"  on these sets the scheme is C^{k - 1} (m-ary Dyn-Levin); outside them this test proves nothing")
+        _emit(args, {"scheme": label, "arity": m, "parameter": args.solve, "results": rows}, "\n".join(lines))
+        return
+    for L in Ls:
+        if k == 0:
+            r = scheme_norm_mary(a, L, m)
+            lines.append(f"  L = {L}: ||S_a^L||_inf = {sp.sstr(r.value)}   [{r.status}]")
+            rows.append({"L": L, "norm": exact_and_float(r.value), "status": r.status})
+        else:
+            r = difference_norm_mary(a, k, m, L, spelling=args.spelling)
+            c = r.witness["contractive"]
+            lines.append(f"  L = {L}: ||(1/{m} S_a{k})^{L}||_inf = {sp.sstr(r.value)} ~ {float(r.value):.12g}  "
+                         f"{'< 1: C^' + str(k - 1) + ' (Dyn-Levin)' if c else '>= 1: proves nothing'}   [{r.status}]")
+            rows.append({"L": L, "m": k, "norm": exact_and_float(r.value), "contractive": c, "status": r.status})
+    _emit(args, {"scheme": label, "arity": m, "results": rows}, "\n".join(lines))
+
+
+def cmd_refine(args, m: int) -> None:
+    import numpy as np
+
+    from ..algebra.symbol import parse_coefficient
+    from ..stationary.mary import refine_mary
+
+    if args.output:
+        raise AnalysisError("--output is not available with --arity yet; use --json")
+    if args.open and args.end_rule != "interior":
+        raise AnalysisError("m-ary open polygons keep interior points only (--end-rule interior)")
+    a, label, _ = _input(args, m)
+    if args.points is None:
+        raise AnalysisError("give the polygon with --points \"x,y;x,y;...\" (--points-file: binary only)")
+    data = [[parse_coefficient(v) for v in r.split(",")] for r in args.points.split(";") if r.strip()]
+    if not data or len({len(r) for r in data}) != 1 or any(v.free_symbols for r in data for v in r):
+        raise AnalysisError("--points must be numbers, the same number of coordinates per point")
+    steps = _int_arg(args.steps, "--steps")
+    if steps < 0 or steps > 12:
+        raise AnalysisError("--steps must be between 0 and 12 with --arity")
+    pts = [[sp.Rational(v) if args.exact else float(v) for v in row] for row in data]
+    out = refine_mary(a, pts, m, steps, closed=not args.open, exact=args.exact)
+    rows = [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]
+    text = "\n".join([f"scheme: {label} (arity {m}); {len(data)} -> {len(out)} points after {steps} step(s)"
+                      + (" (open polygon, interior points)" if args.open else " (closed polygon)")]
+                     + [", ".join(str(v) for v in r) for r in rows])
+    _emit(args, {"scheme": label, "arity": m, "steps": steps, "closed": not args.open, "count": len(out),
+                 "points": rows}, text)
+
+
+def cmd_matrices(args, m: int) -> None:
+    from ..regularity.mary import difference_mask_mary
+    from ..stationary.mary import basic_limit_support_mary, local_eigenvalues_mary, transition_matrices_mary
+
+    a, label, head = _input(args, m)
+    ev = local_eigenvalues_mary(a, m)
+    sup = basic_limit_support_mary(a, m)
+    w = ev.witness["window"]
+    lines = [head, f"local subdivision matrix on f[{w[0]}..{w[1]}]:",
+             *("  " + sp.sstr(list(row)) for row in ev.witness["matrix"].tolist()),
+             f"characteristic polynomial: {sp.sstr(ev.witness['charpoly'])}",
+             "eigenvalues: " + ", ".join(sp.sstr(k) + (f" (x{v})" if v > 1 else "") for k, v in ev.value.items())
+             + f"   [{ev.status}]",
+             f"support of the basic limit function: [{sp.sstr(sup.value[0])}, {sp.sstr(sup.value[1])}] "
+             f"(mask support / {m - 1})"]
+    data = {"scheme": label, "arity": m, "local_window": w, "local_matrix": ev.witness["matrix"].tolist(),
+            "eigenvalues": [{"value": k, "multiplicity": v} for k, v in ev.value.items()],
+            "charpoly": ev.witness["charpoly"], "support": sup.to_json()}
+    if args.transition:
+        k, c = difference_mask_mary(a, m)
+        T = transition_matrices_mary(c, m)
+        lines.append(f"transition matrices of c = {m}^{k} a/q_{m}^{k + 1} = {c.pretty()} "
+                     f"(alpha = {k} - log_{m} JSR):")
+        lines += [f"  T{e} = {sp.sstr(M.tolist())}" for e, M in enumerate(T)]
+        data["transition"] = {"k": k, "c": c, **{f"T{e}": M.tolist() for e, M in enumerate(T)}}
+    _emit(args, data, "\n".join(lines))
+
+
+def cmd_holder(args, m: int) -> None:
+    from ..jsonable import fmt_bound
+    from ..regularity.mary import NotConvergentMary, holder_exponent_mary, smoothness_mary
+
+    if getattr(args, "approx", False):
+        raise AnalysisError("--approx is not available for m-ary schemes yet (issue 12)")
+    a, label, head = _input(args, m)
+    budget = float(args.budget)
+    lines, data = [head], {"scheme": label, "arity": m}
+    try:
+        h = holder_exponent_mary(a, m, budget_seconds=budget)
+    except NotConvergentMary as exc:
+        r = exc.result()
+        lines.append(f"{r.witness['reason']}   [{r.status}]")
+        data["alpha"] = r.to_json()
+        _emit(args, data, "\n".join(lines))
+        return
+    if h.value is not None:
+        lines.append(f"Hoelder exponent alpha = {sp.sstr(h.value)}   [{h.status}]")
+    else:
+        lines.append(f"Hoelder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
+                     f"   [{h.status}]")
+    lines.append(f"  alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1}), c = {h.witness['c'].pretty()}")
+    data["alpha"] = {"value": h.value, "lower": h.lower, "upper": h.upper, "status": h.status, "k": h.witness["k"]}
+    if args.C is not None:
+        j = _int_arg(args.C, "--C")
+        s = smoothness_mary(a, m, j, budget_seconds=budget)
+        verdict = {True: f"C^{j}", False: f"not C^{j}", None: "undecided"}[s.value]
+        lines.append(f"{verdict}: {s.witness['reason']}   [{s.status}]")
+        data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness["reason"]}
+    if getattr(args, "sobolev", False):
+        why = ("the m-ary transition-operator route (autocorrelation mask, invariant subspace of the m-ary "
+               "transition operator) is not implemented: no Sobolev exponent is claimed")
+        lines.append(f"Sobolev exponent: not computed — {why}   [inconclusive]")
+        data["sobolev"] = {"value": None, "status": "inconclusive", "reason": why}
+    _emit(args, data, "\n".join(lines))
+
+
+def cmd_range(args, m: int) -> None:
+    from ..regularity.mary import ck_range_mary
+
+    if args.figure:
+        raise AnalysisError("--figure is not available with --arity yet")
+    a, label, head = _input(args, m)
+    j = _int_arg(args.C, "--C")
+    within = _parse_within(args.within)
+    Ls = [1, 2]
+    r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within)
+    p = r.witness["parameter"]
+    lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}): {p} in {_fmt_set(r.value)}",
+             f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
+             f"{_fmt_set(r.witness['not_Cj'])}",
+             (f"the C^{j} range is exactly {_fmt_set(r.value)}, certified on both sides" if r.witness["exact"] else
+              f"undecided: {_fmt_set(r.witness['undecided'])} (decide points with `subdiv holder --C {j}`)")
+             + f"   [{r.status}]"]
+    _emit(args, {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
+                 "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
+                 "status": r.status}, "\n".join(lines))

@@ -1,0 +1,47 @@
+"""Benchmark (issue 12): certified Hölder exponent of every m-ary catalogue scheme with at most 12
+mask coefficients (parameters at their default; the ternary 4-point family also at mu = 1/10, -1/10).
+
+Prints one row per scheme (arity, length, alpha or its enclosure, status, seconds) and the median and
+maximum time. Target (issue 12): median under 2 s, none over 30 s.
+
+Run:  python benchmarks/bench_mary.py
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+
+import sympy as sp
+
+import schemes
+from analysis.regularity.mary import holder_exponent_mary
+
+EXTRA = {"ternary-four-point": [{"mu": sp.Rational(1, 10)}, {"mu": sp.Rational(-1, 10)}]}
+
+
+def main() -> None:
+    rows, times = [], []
+    for e in schemes.entries(mary=True):
+        if e.arity == 2:
+            continue
+        for values in [dict(e.defaults)] + EXTRA.get(e.slug, []):
+            a = e.symbol_at(**values)
+            if len(a) > 12:
+                continue
+            t0 = time.perf_counter()
+            h = holder_exponent_mary(a, e.arity)
+            dt = time.perf_counter() - t0
+            times.append(dt)
+            alpha = sp.sstr(h.value) if h.value is not None else f"[{float(h.lower):.10f}, {float(h.upper):.10f}]"
+            label = e.slug + ("" if not values else " " + ",".join(f"{k}={v}" for k, v in values.items()))
+            rows.append((label, e.arity, len(a), alpha, h.status, dt))
+    w = max(len(r[0]) for r in rows)
+    print(f"{'scheme':<{w}}  m  len  alpha                          status     seconds")
+    for label, m, n, alpha, status, dt in rows:
+        print(f"{label:<{w}}  {m}  {n:>3}  {alpha:<30} {status:<10} {dt:7.3f}")
+    print(f"{len(times)} schemes: median {statistics.median(times):.3f} s, max {max(times):.3f} s")
+
+
+if __name__ == "__main__":
+    main()
