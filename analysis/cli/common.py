@@ -6,7 +6,8 @@ nothing of a library), and checking output paths before any computation (:func:`
 A scheme is given in one of four ways — a catalogue name (``--scheme``), a mask (``--mask``,
 ``--start``), paper-style rules (``--rules``) or a symbol expression (``--symbol``) — with
 parameter values ``--param NAME=VALUE`` (exact: ``1/100``, ``(sqrt(6)-1)/80``; decimals are read
-exactly).
+exactly). Masks, rules and symbols may use the level ``n`` and ``--where NAME=EXPR`` helper
+definitions: a level-dependent scheme (:mod:`analysis.cli.level_input`).
 """
 
 from __future__ import annotations
@@ -67,7 +68,18 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
 
 
 def scheme_from_args(args) -> tuple[LaurentSymbol, str]:
-    """The symbol (with --param values substituted) and a label for it."""
+    """The symbol (with --param values substituted) and a label for it.
+
+    Input naming the level ``n`` is a one-line error here (a stationary scheme is needed);
+    ``--where`` definitions without ``n`` are substituted (:mod:`analysis.cli.level_input`).
+    """
+    from .level_input import stationary_or_error
+
+    inline = stationary_or_error(args, getattr(args, "command", None) or "this command",
+                                 _parse_params(getattr(args, "param", None)))
+    if inline is not None:
+        return inline, next(x for x in ("scheme", "mask", "rules", "symbol")
+                            if getattr(args, "even" if x == "rules" else x, None) is not None)
     given = [x for x in ("scheme", "mask", "even", "symbol") if getattr(args, x, None) is not None]
     if len(given) != 1:
         raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
@@ -112,6 +124,9 @@ def _add_scheme_args(p: argparse.ArgumentParser) -> None:
     g.add_argument("--odd-first", metavar="P")
     g.add_argument("--symbol", metavar="EXPR", help='a Laurent polynomial in z, e.g. "(1+z)**4/(8*z**2)"')
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
+    p.add_argument("--where", action="append", metavar="NAME=EXPR",
+                   help="helper definition for --mask/--rules/--symbol; may use the level n, parameters and "
+                        "other names, e.g. c=cos(theta/2**(n+1)) (repeatable)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
 
 

@@ -152,6 +152,50 @@ def cmd_reproduce(args) -> None:
     _emit(args, out, "\n".join(lines))
 
 
+def holder_level_dependent(args, s) -> None:
+    """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status)."""
+    from ..levels.ck import level_smoothness
+
+    if getattr(args, "approx", False) or getattr(args, "sobolev", False):
+        raise AnalysisError("--approx and --sobolev are for stationary schemes; this scheme depends on the level n")
+    k_max = None
+    if args.C is not None:
+        try:
+            k_max = int(args.C)
+        except ValueError:
+            raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
+        if k_max < 0:
+            raise AnalysisError("--C must be >= 0")
+    r = level_smoothness(s, k_max=k_max)
+    lim = r.witness["limit"]
+    lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n)",
+             f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(sp.Symbol('h', positive=True), 2 ** (-sp.Symbol('n')))))}",
+             f"  limit a(z) = {lim['symbol'].pretty()}: C^{lim['C^k_certified_up_to']} certified"
+             + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
+    for v in r.witness["verdicts"]:
+        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
+        if v["status"] == "certified":
+            lines.append(f"  {name}: yes [certified] — {v['route']}")
+        elif "reason" in v:
+            lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
+        else:
+            why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])}" for t in v["tried"])
+            lines.append(f"  {name}: undecided [inconclusive] — {why}")
+    best = r.value
+    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for level-dependent schemes)"
+                 if best >= 0 else "  => convergence not certified")
+    _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
+
+
+def holder_growing_support(args, message: str) -> None:
+    """``subdiv holder`` on a symbol whose support grows with the level: an inconclusive, saying why."""
+    reason = (f"{message}; the theorems implemented (Dyn-Levin 1995, Conti-Dyn-Manni-Mazure 2015, "
+              "Charina-Conti-Guglielmi-Protasov 2017) all need one bounded support for every level")
+    data = {"scheme": "symbol", "level_dependent": True,
+            "smoothness": {"status": "inconclusive", "value": None, "witness": {"reason": reason}}}
+    _emit(args, data, f"scheme: symbol (level-dependent)\n  convergence: undecided [inconclusive] — {reason}")
+
+
 def register(sub) -> None:
     """Add the sub-commands to the ``subdiv`` parser."""
     s = sub.add_parser("series", help="weighted series sum 2^(mn)||S_(a^n) - S_a||: verdict and enclosure")
