@@ -61,15 +61,18 @@ def _int(text, what: str) -> int:
         raise AnalysisError(f"{what} must be an integer, not {text!r}") from None
 
 
-def level_scheme_from_args(args, params=None):
+def level_scheme_from_args(args, params=None, *, keep_params: bool = False):
     """The level-dependent scheme given by the arguments, or ``None``; ``params``: the parsed
-    ``--param`` values (name -> exact number), substituted."""
+    ``--param`` values (name -> exact number), substituted; other free names are an error unless
+    ``keep_params`` (commands that take parameter boxes)."""
     if not uses_level(args):
         return None
     from ..levels.level_dependent import LevelDependentScheme as L
 
     where = getattr(args, "where", None) or []
     given = [x for x in ("scheme", "mask", "even", "symbol") if getattr(args, x, None) is not None]
+    if getattr(args, "odd", None) is not None and "even" not in given:
+        raise AnalysisError("--odd is only used together with --even")
     if len(given) != 1:
         raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
     kind = given[0]
@@ -82,7 +85,8 @@ def level_scheme_from_args(args, params=None):
     elif kind == "symbol":
         s = L.from_symbol(args.symbol, where=where, slug="symbol")
     elif kind == "mask":
-        s = L.from_mask(_items(args.mask, "mask"), _int(args.start, "--start"), where=where, slug="mask")
+        s = L.from_mask(_items(args.mask, "mask"), _int(getattr(args, "start", "0"), "--start"), where=where,
+                        slug="mask")
     else:
         if args.odd is None:
             raise AnalysisError("--even needs --odd as well")
@@ -98,7 +102,7 @@ def level_scheme_from_args(args, params=None):
                          params=[p for p in free if p.name not in ("n", "h")], slug="rules")
     if params:
         s = s.subs(params)
-    if s.params:
+    if s.params and not keep_params:
         names = ", ".join(s.param_names)
         raise AnalysisError(f"undefined name(s) {names}: define them with --where NAME=EXPR "
                             f"or give --param NAME=VALUE")

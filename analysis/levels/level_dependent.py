@@ -301,7 +301,8 @@ class LevelDependentScheme:
             start += 1
         if params is None:
             free = set().union(*(c.free_symbols for c in coeffs)) - {N, H, sp.Symbol("n"), sp.Symbol("h")}
-            params = tuple(sorted(free, key=lambda x: x.name))
+            params = tuple(sp.Symbol(x.name, real=True) for x in sorted(free, key=lambda x: x.name))
+            coeffs = [c.subs({sp.Symbol(p.name): p for p in params}) for c in coeffs]
         return cls(tuple(coeffs), int(start), tuple(params), **kw)
 
     # ---------------------------------------------------------------- data
