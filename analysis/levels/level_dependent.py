@@ -293,7 +293,8 @@ class LevelDependentScheme:
 
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
-        coeffs = [sp.sympify(c).subs(defs) for c in coeffs]
+        coeffs = [to_h(sp.sympify(c).subs(defs)) for c in coeffs]
+        coeffs = [sp.cancel(c) if c.is_rational_function(H) else c for c in coeffs]   # h (2 + 1/h) -> 2h + 1
         while len(coeffs) > 1 and coeffs[-1] == 0:
             coeffs.pop()
         while len(coeffs) > 1 and coeffs[0] == 0:
@@ -374,6 +375,9 @@ class LevelDependentScheme:
         cache = self.__dict__.setdefault("_taylor_cache", {})
         if J in cache:
             return cache[J]
+        longer = [Jc for Jc in cache if Jc > J]
+        if longer:                          # the same series, truncated (no new sympy.series)
+            return tuple(r[:J] for r in cache[min(longer)])
         rows = []
         for c, c0 in zip(self.mask, self._limits):
             g = c - c0
