@@ -27,7 +27,7 @@ Examples
 >>> from schemes.level_dependent import get
 >>> r = level_smoothness(get("exp-cubic-trig").subs({"t": 1}))
 >>> r.value, r.status, [v["route"] for v in r.witness["verdicts"]][:3]
-(2, 'certified', ['Dyn-Levin direct', 'Dyn-Levin on the 1-th divided difference scheme', 'Dyn-Levin on the 2-th divided difference scheme'])
+(2, 'certified', ['Dyn-Levin direct', 'Dyn-Levin on the 1st divided difference scheme', 'Dyn-Levin on the 2nd divided difference scheme'])
 
 Algorithm
 ---------
@@ -169,6 +169,10 @@ class _Differences:
         return j
 
 
+def _ordinal(j: int) -> str:
+    return f"{j}{ {1: 'st', 2: 'nd', 3: 'rd'}.get(j if j < 20 else j % 10, 'th')}"
+
+
 def _ok(r: Result) -> bool:
     return r.is_certified and r.value is True
 
@@ -188,7 +192,7 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
                         "theorem": r.witness["theorem"], "hypotheses": r.witness["hypotheses"]}
             tried.append({"route": "Dyn-Levin direct", "failed": r.witness["failed"]})
             continue
-        route = f"Dyn-Levin on the {j}-th divided difference scheme"
+        route = f"Dyn-Levin on the {_ordinal(j)} divided difference scheme"
         if _ok(r):
             return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED, "route": route,
                     "theorem": (f"Dyn-Levin 1995 applied to e^n = (2/(1+z))^{j} a^n (S_(e^n) C^{k - j}) "
