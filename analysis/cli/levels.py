@@ -94,13 +94,15 @@ def cmd_series(args) -> None:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
     if args.pieces < 1:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
+    if not 0 <= args.depth <= 8:
+        raise AnalysisError(f"--depth must be between 0 and 8, not {args.depth}")
     if args.difference:
         s = s.difference(args.difference)
     vals = _values(args)
     lead = leading_asymptotics(s)
     rows, lines = [], [f"scheme {s.slug}: ||S_(a^n) - S_a|| ~ {lead.witness['rate']} (exact)"]
     for m in _ints(args.m, "--m"):
-        r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces)
+        r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces, depth=args.depth)
         rows.append({"m": m, **r.to_json()})
         v = r.witness.get("verdict")
         if v == "convergent":
@@ -238,7 +240,9 @@ def register(sub) -> None:
     s.add_argument("--m", default="0,1,2", help="weights, e.g. 0,1,2")
     s.add_argument("--difference", type=int, default=0, help="k: use the k-th divided difference scheme")
     s.add_argument("--N", type=int, default=40, help="levels summed explicitly")
-    s.add_argument("--pieces", type=int, default=1, help="sub-boxes of the parameter box")
+    s.add_argument("--pieces", type=int, default=1, help="sub-boxes of each parameter box")
+    s.add_argument("--depth", type=int, default=0,
+                   help="adaptive subdivision: bisect an undecided sub-box up to DEPTH times (default 0)")
     _add_inline(s)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)
