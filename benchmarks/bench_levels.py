@@ -1,6 +1,7 @@
-"""Issue 13: `subdiv holder` on level-dependent schemes typed inline (exponential B-splines).
+"""Issue 13: `subdiv holder` on level-dependent schemes typed inline (exponential B-splines), and
+seed 003's weighted series over the whole (alpha, omega) rectangle.
 
-Run: ``python benchmarks/bench_levels.py`` (target: each under 10 s on 2 cores).
+Run: ``python benchmarks/bench_levels.py`` (targets on 2 cores: holder under 10 s, rectangle under 60 s).
 Each line runs the command in a fresh process, as a researcher would type it.
 """
 
@@ -19,14 +20,21 @@ CASES = [
 ]
 
 
+SERIES = [
+    ("seed 003 (2), e^n, m = 1, full rectangle", ["series", "--scheme", "seed003-trigonometric", "--difference", "1",
+                                                  "--box", "alpha=0,pi/3", "--box", "omega=1/10000,(sqrt(6)-1)/80",
+                                                  "--m", "1", "--depth", "2"]),
+]
+
+
 def main() -> None:
-    for label, argv in CASES:
-        cmd = [sys.executable, "-m", "analysis", "holder", *argv]
+    for label, argv in [(lab, ["holder", *a]) for lab, a in CASES] + SERIES:
+        cmd = [sys.executable, "-m", "analysis", *argv]
         t = time.perf_counter()
         out = subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
         dt = time.perf_counter() - t
         last = out.strip().splitlines()[-1].strip()
-        print(f"{label:<32} {dt:6.2f} s   {last}")
+        print(f"{label:<42} {dt:6.2f} s   {last}")
 
 
 if __name__ == "__main__":
