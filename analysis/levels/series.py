@@ -411,12 +411,30 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                   provenance={"method": "Dyn-Levin norm test"})
 
 
-def same_support(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
+def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0) -> Result:
     """Certify that ``a^n`` and ``a`` have the same support for every level ``n >= 0``.
 
     Outside the limit's support the level coefficient must vanish identically; inside, it is
     enclosed away from 0 for ``n < N`` (arb) and for ``n >= N`` by ``|a_k| > A_k h_N^q``.
+    Over parameter boxes, ``depth > 0`` bisects every boxed parameter when a box fails (the
+    interval enclosures tighten on smaller boxes), at most ``depth`` times; certified when every
+    sub-box is.
     """
+    r = _same_support_box(s, values, N=N)
+    env = _parse_values(s, values)
+    if r.is_certified or depth <= 0 or not any(isinstance(v, tuple) for v in env.values()):
+        return r
+    parts = [same_support(s, c, N=N, depth=depth - 1) for c in _bisect(env)]
+    if all(p.is_certified for p in parts):
+        return Result(value=True, status=CERTIFIED,
+                      witness={"same_support": True, "support": (s.start, s.end),
+                               "sub_boxes": sum(p.witness.get("sub_boxes", 1) for p in parts)},
+                      provenance={"method": "arb enclosures (n < N) + Taylor tail (n >= N), bisected boxes",
+                                  "N": N})
+    return next(p for p in parts if not p.is_certified)
+
+
+def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
     env = _parse_values(s, values)
     lim = s._limits
     models = taylor_models(s, env)
@@ -485,7 +503,7 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
             raise AnalysisError(f"give values for {', '.join(names)}")
     lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box)
     ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth)
-    sup = same_support(target, env, N=N)
+    sup = same_support(target, env, N=N, depth=depth)
     hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
     ok = (sup.is_certified and sup.value and lim.is_certified and lim.value is True
           and ser.is_certified and ser.witness.get("verdict") == "convergent")
