@@ -114,3 +114,18 @@ def test_growing_support_is_inconclusive(capsys):
     assert code == 0, err
     r = json.loads(out)["smoothness"]
     assert r["status"] == "inconclusive" and "grows with the level" in r["witness"]["reason"]
+
+
+def test_rules_with_level_follow_the_stationary_convention(capsys):
+    # the limit of the level-dependent rules equals the stationary reading of the limit rules
+    code, out, err = call(capsys, "symbol", "--even", "1/4,3/4", "--odd", "3/4,1/4", "--first", "-1", "--json")
+    assert code == 0, err
+    stationary = json.loads(out)
+    from argparse import Namespace
+
+    from analysis.cli.level_input import level_scheme_from_args
+
+    ns = Namespace(scheme=None, mask=None, symbol=None, even="1/4+c,3/4-c", odd="3/4-c,1/4+c", first="-1",
+                   even_first=None, odd_first=None, where=["c=2**(-2*n)/16"])
+    a = level_scheme_from_args(ns).limit()
+    assert a.start == stationary["start"] and [sp.sstr(c) for c in a.mask] == stationary["mask"]
