@@ -5,9 +5,13 @@ Exponential B-spline schemes (Dyn–Levin; Romani) generate ``{1, e^{tx}, e^{-tx
 ``cos(t/2^{n+1})``:
 
 * degree 2 (Chaikin-like): ``a^n(z) = (1+z)(1 + 2 v_n z + z^2) / (2 (1 + v_n)) z^-2``,
-* degree 3 (cubic):       ``a^n(z) = (1+z)^2 (1 + 2 v_n z + z^2) / (4 (1 + v_n)) z^-2``.
+* degree 3 (cubic):       ``a^n(z) = (1+z)^2 (1 + 2 v_n z + z^2) / (4 (1 + v_n)) z^-2``,
+* degree d (2..5):        ``a^n(z) = (1+z)^(d-1) (1 + 2 v_n z + z^2) / (2^(d-1) (1 + v_n)) z^-s``
+  (``exp-quartic-*``: d = 4, s = 2; ``exp-quintic-*``: d = 5, s = 3).
 
-The limits are Chaikin's scheme and the cubic B-spline.
+The limits are the polynomial B-spline schemes ``(1+z)^(d+1) / 2^d``. The exponential B-spline of
+degree d (order d + 1, frequencies ``0`` (d - 1 times) and ``+-t`` resp. ``+-i t``) is C^(d-1) and
+not C^d (Unser–Blu 2005), like the polynomial one.
 
 Examples
 --------
@@ -21,6 +25,8 @@ References
 ----------
 N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*, J. Math.
 Anal. Appl. 193 (1995) 594-621.
+M. Unser, T. Blu, *Cardinal exponential splines: part I — theory and filtering algorithms*,
+IEEE Trans. Signal Process. 53 (2005) 1425-1438.
 L. Romani, *From approximating subdivision schemes for exponential splines to high-performance
 interpolating algorithms*, J. Comput. Appl. Math. 224 (2009) 383-396.
 """
@@ -39,10 +45,10 @@ T = sp.Symbol("t", positive=True)
 _Z = sp.Symbol("z")
 
 
-def _from_symbol(expr, slug, title, v) -> LevelDependentScheme:
-    num = sp.Poly(sp.expand(expr * _Z ** 2), _Z)
+def _from_symbol(expr, slug, title, v, shift=2) -> LevelDependentScheme:
+    num = sp.Poly(sp.expand(expr * _Z ** shift), _Z)
     coeffs = [sp.simplify(c) for c in reversed(num.all_coeffs())]
-    return LevelDependentScheme(tuple(coeffs), -2, (T,), slug=slug, title=title,
+    return LevelDependentScheme(tuple(coeffs), -shift, (T,), slug=slug, title=title,
                                 source="exponential B-spline (Dyn-Levin 1995; Romani 2009)",
                                 notes=f"v_n = {v.subs(H, 2 ** -sp.Symbol('n'))}",
                                 defaults={"t": 1})
@@ -56,6 +62,10 @@ def _cubic(v):
     return (1 + _Z) ** 2 * (1 + 2 * v * _Z + _Z ** 2) / (4 * (1 + v)) / _Z ** 2
 
 
+def _degree(d, v):
+    return (1 + _Z) ** (d - 1) * (1 + 2 * v * _Z + _Z ** 2) / (2 ** (d - 1) * (1 + v)) / _Z ** (d // 2 + 1)
+
+
 _VH = sp.cosh(T * H / 2)
 _VT = sp.cos(T * H / 2)
 
@@ -64,7 +74,15 @@ EXP_CHAIKIN_TRIG = _from_symbol(_chaikin(_VT), "exp-chaikin-trig", "trigonometri
 EXP_CUBIC_HYP = _from_symbol(_cubic(_VH), "exp-cubic-hyp", "hyperbolic exponential cubic B-spline", _VH)
 EXP_CUBIC_TRIG = _from_symbol(_cubic(_VT), "exp-cubic-trig", "trigonometric exponential cubic B-spline", _VT)
 
-ENTRIES = {e.slug: e for e in (EXP_CHAIKIN_HYP, EXP_CHAIKIN_TRIG, EXP_CUBIC_HYP, EXP_CUBIC_TRIG)}
+EXP_QUARTIC_HYP = _from_symbol(_degree(4, _VH), "exp-quartic-hyp", "hyperbolic exponential quartic B-spline", _VH, 3)
+EXP_QUARTIC_TRIG = _from_symbol(_degree(4, _VT), "exp-quartic-trig", "trigonometric exponential quartic B-spline",
+                                _VT, 3)
+EXP_QUINTIC_HYP = _from_symbol(_degree(5, _VH), "exp-quintic-hyp", "hyperbolic exponential quintic B-spline", _VH, 3)
+EXP_QUINTIC_TRIG = _from_symbol(_degree(5, _VT), "exp-quintic-trig", "trigonometric exponential quintic B-spline",
+                                _VT, 3)
+
+ENTRIES = {e.slug: e for e in (EXP_CHAIKIN_HYP, EXP_CHAIKIN_TRIG, EXP_CUBIC_HYP, EXP_CUBIC_TRIG,
+                               EXP_QUARTIC_HYP, EXP_QUARTIC_TRIG, EXP_QUINTIC_HYP, EXP_QUINTIC_TRIG)}
 
 
 def _registry() -> dict[str, LevelDependentScheme]:

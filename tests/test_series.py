@@ -68,9 +68,10 @@ def test_exponential_chaikin_is_C1_by_theorem():
     assert r.status == "certified"
 
 
-def test_two_boxes_rejected():
-    with pytest.raises(AnalysisError, match="at most one"):
-        weighted_series(TRIG, {"alpha": (1, 2), "omega": (0, 1)}, 0, pieces=2)
+def test_two_boxes_accepted():
+    # issue 13 item 5: two boxed parameters are split on the product grid (formerly an error)
+    r = weighted_series(TRIG, {"alpha": (1, 2), "omega": (0, 1)}, 0, pieces=2)
+    assert r.status == "certified" and r.witness["sub_boxes"] == 4
 
 
 @pytest.mark.parametrize("values, kw, message", [

@@ -6,7 +6,8 @@ nothing of a library), and checking output paths before any computation (:func:`
 A scheme is given in one of four ways — a catalogue name (``--scheme``), a mask (``--mask``,
 ``--start``), paper-style rules (``--rules``) or a symbol expression (``--symbol``) — with
 parameter values ``--param NAME=VALUE`` (exact: ``1/100``, ``(sqrt(6)-1)/80``; decimals are read
-exactly).
+exactly). Masks, rules and symbols may use the level ``n`` and ``--where NAME=EXPR`` helper
+definitions: a level-dependent scheme (:mod:`analysis.cli.level_input`).
 """
 
 from __future__ import annotations
@@ -92,10 +93,19 @@ def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, st
     """The symbol (with --param values substituted) and a label for it.
 
     Commands without m-ary support refuse an m-ary input (``--arity M`` or an m-ary catalogue entry)
-    with a one-line error; the m-ary commands (:mod:`analysis.cli.mary`) pass ``arity_ok=True``."""
+    with a one-line error; the m-ary commands (:mod:`analysis.cli.mary`) pass ``arity_ok=True``.
+    Input naming the level ``n`` is a one-line error here (a stationary scheme is needed);
+    ``--where`` definitions without ``n`` are substituted (:mod:`analysis.cli.level_input`)."""
     if not arity_ok and (m := scheme_arity(args)) != 2:
         raise AnalysisError(f"this command analyses binary schemes only (arity {m} given); m-ary schemes: "
                             "subdiv symbol, factor, norm, refine, matrices, holder, range with --arity")
+    from .level_input import stationary_or_error
+
+    inline = stationary_or_error(args, getattr(args, "command", None) or "this command",
+                                 _parse_params(getattr(args, "param", None)))
+    if inline is not None:
+        return inline, next(x for x in ("scheme", "mask", "rules", "symbol")
+                            if getattr(args, "even" if x == "rules" else x, None) is not None)
     given = [x for x in ("scheme", "mask", "even", "symbol") if getattr(args, x, None) is not None]
     if len(given) != 1:
         raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
@@ -142,6 +152,9 @@ def _add_scheme_args(p: argparse.ArgumentParser) -> None:
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     p.add_argument("--arity", metavar="M", help="m-ary scheme: (S_a f)_i = sum_j a_{i-Mj} f_j (default 2, "
                    "or the catalogue entry's arity)")
+    p.add_argument("--where", action="append", metavar="NAME=EXPR",
+                   help="helper definition for --mask/--rules/--symbol; may use the level n, parameters and "
+                        "other names, e.g. c=cos(theta/2**(n+1)) (repeatable)")
     p.add_argument("--json", action="store_true", help="machine-readable output")
 
 

@@ -13,6 +13,8 @@ Examples
     subdiv bound --claim "003:Lemma3.1(iii)-upper" --box alpha=1/100,pi/3 --param omega=1/100
     subdiv bound --lhs "3/4" --rhs "sin(3*alpha/2**(n+2))/sin(alpha/2**n)" --n0 1 --box alpha=1/100,1
     subdiv reproduce --scheme exp-chaikin-trig --lambdas "I*t,-I*t" --curve circle --param t=pi/4 --points 8
+    subdiv series --symbol "(1+z)**2*(1+2*v*z+z**2)/(4*(1+v)*z**2)" --where "v=cosh(t/2**(n+1))" --param t=1
+    subdiv reproduce --scheme exp-cubic-trig --frequencies
 """
 
 from __future__ import annotations
@@ -25,12 +27,30 @@ from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient
 
 
-def _level_scheme(name):
+def _level_scheme(args):
+    """The level-dependent scheme: a catalogue name, or inline --mask/--symbol with n and --where."""
     from schemes.level_dependent import get
 
-    if not name:
-        raise AnalysisError("give --scheme NAME (a level-dependent scheme)")
-    return get(name)
+    from .level_input import is_stationary, level_scheme_from_args
+
+    inline = [x for x in ("mask", "symbol", "where") if getattr(args, x, None)]
+    if not inline:
+        if not args.scheme:
+            raise AnalysisError("give --scheme NAME (a level-dependent scheme), or --symbol/--mask using the level n")
+        return get(args.scheme)
+    if args.scheme:
+        raise AnalysisError("give --scheme NAME or --symbol/--mask, not both")
+    s = level_scheme_from_args(args, keep_params=True)
+    if s is None or is_stationary(s):
+        raise AnalysisError("the scheme does not depend on the level n: use a stationary command (e.g. subdiv holder)")
+    return s
+
+
+def _add_inline(s) -> None:
+    s.add_argument("--symbol", metavar="EXPR", help='a^n(z), may use the level n, e.g. "(1+z)**2*(1+2*v*z+z**2)/(4*(1+v)*z**2)"')
+    s.add_argument("--mask", metavar="LIST", help="level-n mask coefficients (may use n)")
+    s.add_argument("--start", default="0", metavar="N", help="exponent of the first --mask coefficient")
+    s.add_argument("--where", action="append", metavar="NAME=EXPR", help="helper definition (may use n), repeatable")
 
 
 def _box(items):
@@ -69,18 +89,20 @@ def cmd_series(args) -> None:
     from ..levels.level_dependent import leading_asymptotics
     from ..levels.series import weighted_series
 
-    s = _level_scheme(args.scheme)
+    s = _level_scheme(args)
     if args.difference < 0:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
     if args.pieces < 1:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
+    if not 0 <= args.depth <= 8:
+        raise AnalysisError(f"--depth must be between 0 and 8, not {args.depth}")
     if args.difference:
         s = s.difference(args.difference)
     vals = _values(args)
     lead = leading_asymptotics(s)
     rows, lines = [], [f"scheme {s.slug}: ||S_(a^n) - S_a|| ~ {lead.witness['rate']} (exact)"]
     for m in _ints(args.m, "--m"):
-        r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces)
+        r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces, depth=args.depth)
         rows.append({"m": m, **r.to_json()})
         v = r.witness.get("verdict")
         if v == "convergent":
@@ -129,7 +151,7 @@ def cmd_reproduce(args) -> None:
 
     if args.plot:
         check_writable(args.plot, "the plot")
-    s = _level_scheme(args.scheme)
+    s = _level_scheme(args)
     if args.curve:
         check_curve_options(args.points, args.steps, args.plot)
     vals = _parse_params(args.param)
@@ -147,9 +169,66 @@ def cmd_reproduce(args) -> None:
         out["curve"] = c.to_json()
         lines.append(f"{args.curve}: deviation {c.value:.6g} (Hausdorff {c.witness['hausdorff']:.6g}; "
                      f"{c.status}, float64)")
+    if args.frequencies:
+        from ..levels.reproduction import exponential_frequencies
+
+        fr = exponential_frequencies(s, vals or None)
+        out["frequencies"] = fr.to_json()
+        gen = ", ".join(f"{sp.sstr(k)}" + (f" (multiplicity {m})" if m > 1 else "") for k, m in fr.value["generated"].items())
+        lines.append(f"frequencies generated at every level: {gen or 'none'} [{fr.status}]")
+        lines.append(f"exponentials reproduced: {', '.join(sp.sstr(x) for x in fr.value['reproduced']) or 'none'} "
+                     f"[{fr.status}]")
+        if fr.witness["unsolved_factors"] or fr.witness["unverified_candidates"]:
+            lines.append("  the list may be incomplete: factors not solved: "
+                         f"{', '.join(fr.witness['unsolved_factors']) or 'none'}; candidates neither proved nor "
+                         f"refuted: {', '.join(fr.witness['unverified_candidates']) or 'none'} (give --param values)")
     if len(out) == 1:
-        raise AnalysisError("give --lambdas and/or --curve")
+        raise AnalysisError("give --lambdas, --frequencies and/or --curve")
     _emit(args, out, "\n".join(lines))
+
+
+def holder_level_dependent(args, s) -> None:
+    """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status)."""
+    from ..levels.ck import level_smoothness
+
+    if getattr(args, "approx", False) or getattr(args, "sobolev", False):
+        raise AnalysisError("--approx and --sobolev are for stationary schemes; this scheme depends on the level n")
+    k_max = None
+    if args.C is not None:
+        try:
+            k_max = int(args.C)
+        except ValueError:
+            raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
+        if k_max < 0:
+            raise AnalysisError("--C must be >= 0")
+    r = level_smoothness(s, k_max=k_max)
+    lim = r.witness["limit"]
+    lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n)",
+             f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(sp.Symbol('h', positive=True), 2 ** (-sp.Symbol('n')))))}",
+             f"  limit a(z) = {lim['symbol'].pretty()}: C^{lim['C^k_certified_up_to']} certified"
+             + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
+    for v in r.witness["verdicts"]:
+        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
+        if v["status"] == "certified":
+            lines.append(f"  {name}: yes [certified] — {v['route']}")
+        elif "reason" in v:
+            lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
+        else:
+            why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])}" for t in v["tried"])
+            lines.append(f"  {name}: undecided [inconclusive] — {why}")
+    best = r.value
+    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for level-dependent schemes)"
+                 if best >= 0 else "  => convergence not certified")
+    _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
+
+
+def holder_growing_support(args, message: str) -> None:
+    """``subdiv holder`` on a symbol whose support grows with the level: an inconclusive, saying why."""
+    reason = (f"{message}; the theorems implemented (Dyn-Levin 1995, Conti-Dyn-Manni-Mazure 2015, "
+              "Charina-Conti-Guglielmi-Protasov 2017) all need one bounded support for every level")
+    data = {"scheme": "symbol", "level_dependent": True,
+            "smoothness": {"status": "inconclusive", "value": None, "witness": {"reason": reason}}}
+    _emit(args, data, f"scheme: symbol (level-dependent)\n  convergence: undecided [inconclusive] — {reason}")
 
 
 def register(sub) -> None:
@@ -161,7 +240,10 @@ def register(sub) -> None:
     s.add_argument("--m", default="0,1,2", help="weights, e.g. 0,1,2")
     s.add_argument("--difference", type=int, default=0, help="k: use the k-th divided difference scheme")
     s.add_argument("--N", type=int, default=40, help="levels summed explicitly")
-    s.add_argument("--pieces", type=int, default=1, help="sub-boxes of the parameter box")
+    s.add_argument("--pieces", type=int, default=1, help="sub-boxes of each parameter box")
+    s.add_argument("--depth", type=int, default=0,
+                   help="adaptive subdivision: bisect an undecided sub-box up to DEPTH times (default 0)")
+    _add_inline(s)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)
 
@@ -184,5 +266,8 @@ def register(sub) -> None:
     s.add_argument("--points", type=int, default=10, help="control points on the curve (>= 3)")
     s.add_argument("--steps", type=int, default=6, help="refinement steps (0..12)")
     s.add_argument("--plot", metavar="FILE", help="write the curve and curvature plot (PNG)")
+    s.add_argument("--frequencies", action="store_true",
+                   help="the frequencies generated and reproduced at every level (exact)")
+    _add_inline(s)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_reproduce)

@@ -14,7 +14,8 @@ from __future__ import annotations
 import sympy as sp
 
 from . import mary as _mary
-from .common import scheme_arity, _add_scheme_args, _emit, _int_arg, _parse_within, check_writable, scheme_from_args
+from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_writable,
+                     scheme_arity, scheme_from_args)
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -237,6 +238,18 @@ def cmd_holder(args) -> None:
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_holder(args, arity)
     budget = float(args.budget)
+    from .level_input import is_stationary, level_scheme_from_args
+
+    from .levels import holder_growing_support, holder_level_dependent
+
+    try:
+        level = level_scheme_from_args(args, _parse_params(args.param))
+    except AnalysisError as exc:
+        if str(exc).startswith("the support of a^n grows"):
+            return holder_growing_support(args, str(exc))
+        raise
+    if level is not None and not is_stationary(level):
+        return holder_level_dependent(args, level)
     entry = _numeric_entry(args)
     if entry is not None:
         if args.param:

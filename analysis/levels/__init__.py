@@ -1,9 +1,11 @@
 """Level-dependent (non-stationary) schemes.
 
 What lives here: level-dependent symbols ``a^n(z)`` with their limit, rigorous distances
-``||S_{a^n} - S_a||`` and Taylor models in ``h = 2^-n`` (:mod:`.level_dependent`), weighted
-series with analytic tails and the smoothness transfer (:mod:`.series`), lemma inequalities over
-``(n, parameter box)`` (:mod:`.bounds`), exponential reproduction and curve deviation
+``||S_{a^n} - S_a||`` and Taylor models in ``h = 2^-n``, and the constructors from symbols, masks
+and ``where`` definitions (:mod:`.level_dependent`); ball evaluation of sympy expressions
+(:mod:`.balls`); weighted series with analytic tails and the smoothness transfer (:mod:`.series`);
+the C^k verdict for every k with its theorem (:mod:`.ck`); lemma inequalities over
+``(n, parameter box)`` (:mod:`.bounds`); exponential frequencies, reproduction and curve deviation
 (:mod:`.reproduction`).
 
 Layering: may import :mod:`analysis.algebra`, :mod:`analysis.stationary`, :mod:`analysis.jsr`

@@ -63,7 +63,6 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from fractions import Fraction
 from functools import cached_property
 from typing import Any, Mapping, Sequence
 
@@ -73,6 +72,8 @@ import sympy as sp
 
 from ..result import CERTIFIED, NUMERICAL, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol, parse_coefficient
+from .balls import (_FUNCS, _ball, _fraction, _to_ball, arb_abs, ball, ball_to_interval,  # noqa: F401
+                    workprec)
 
 #: ``h = 2^-n``, the variable of all expansions.
 H = sp.Symbol("h", positive=True)
@@ -116,131 +117,80 @@ def entire_form(expr: sp.Expr) -> sp.Expr:
         sp.sinh, lambda u: u * sp.sinc(sp.I * u))
 
 
-# --------------------------------------------------------------------------------------------
-# ball evaluation (python-flint arb/acb): rigorous
-# --------------------------------------------------------------------------------------------
-
-class workprec:
-    """Context manager: python-flint working precision in bits (like ``mpmath.workprec``)."""
-
-    def __init__(self, bits: int):
-        self.bits = int(bits)
-
-    def __enter__(self):
-        self._old = flint.ctx.prec
-        flint.ctx.prec = self.bits
-        return self
-
-    def __exit__(self, *exc):
-        flint.ctx.prec = self._old
+_Z = sp.Symbol("z")
+_GROWING = ("the support of a^n grows with the level n (a power of z depends on n): such a scheme has no "
+            "stationary limit with the same support")
+_RESERVED = {"n", "h", "z", "I", "E", "pi", "oo", "nan", "zoo"}
 
 
-_FUNCS = {"sin": "sin", "cos": "cos", "sinh": "sinh", "cosh": "cosh", "tan": "tan", "tanh": "tanh",
-          "exp": "exp", "log": "log", "sinc": "sinc", "sqrt": "sqrt", "sec": "sec", "csc": "csc",
-          "cot": "cot", "coth": "coth", "sech": "sech", "csch": "csch"}
+def _grows(e: sp.Expr) -> bool:
+    return any(p.base.has(_Z) and p.exp.has(N) for p in e.atoms(sp.Pow))
 
 
-def ball(expr, env: Mapping[str, Any] | None = None, *, complex_: bool = False):
-    """A rigorous ``arb`` (or ``acb``) enclosure of a sympy expression.
-
-    ``env`` maps parameter names to arb/acb balls or exact sympy numbers (or ``(lo, hi)``
-    pairs: the ball covering that interval). Use inside :class:`workprec`.
-
-    >>> with workprec(80):
-    ...     b = ball(sp.sin(sp.pi / 6) - sp.Rational(1, 2))
-    >>> b.contains(0)
-    True
-    """
-    env = dict(env or {})
-    cenv = {k: _to_ball(v, complex_) for k, v in env.items()}
-    return _ball(sp.sympify(expr), cenv, complex_)
-
-
-def _to_ball(v, complex_: bool):
-    if isinstance(v, (flint.arb, flint.acb)):
-        return flint.acb(v) if complex_ and isinstance(v, flint.arb) else v
-    if isinstance(v, tuple) and len(v) == 2:
-        lo, hi = (_ball(sp.sympify(x), {}, False) for x in v)
-        b = lo.union(hi)
-        return flint.acb(b) if complex_ else b
-    return _ball(sp.sympify(v), {}, complex_)
-
-
-def _ball(e: sp.Expr, env, cx: bool):
-    T = flint.acb if cx else flint.arb
-    if e.is_Integer:
-        return T(int(e))
-    if e.is_Rational:
-        return T(int(e.p)) / int(e.q)
-    if e is sp.pi:
-        return T(flint.arb.pi())
-    if e is sp.E:
-        return T(flint.arb(1).exp())
-    if e is sp.I:
-        if not cx:
-            raise AnalysisError("the expression is complex: evaluate with complex_=True")
-        return flint.acb(0, 1)
-    if isinstance(e, sp.Float):
-        return T(flint.arb(mpmath.mpf(e)))
-    if e.is_Symbol:
+def _read(text, defs: Mapping, what: str) -> sp.Expr:
+    loc = {"n": N, "z": _Z, **{k.name: k for k in defs}}
+    if isinstance(text, str):
         try:
-            return env[e.name]
-        except KeyError:
-            raise AnalysisError(f"no value for the parameter {e.name}") from None
-    if e.is_Add:
-        out = T(0)
-        for t in e.args:
-            out = out + _ball(t, env, cx)
-        return out
-    if e.is_Mul:
-        out = T(1)
-        for t in e.args:
-            out = out * _ball(t, env, cx)
-        return out
-    if e.is_Pow:
-        b, x = e.args
-        if x.is_Integer:
-            bb = _ball(b, env, cx)
-            k = int(x)
-            return bb ** k if k >= 0 else 1 / bb ** (-k)
-        if x == sp.Rational(1, 2):
-            return _ball(b, env, cx).sqrt()
-        return (_ball(x, env, cx) * _ball(b, env, cx).log()).exp()
-    if isinstance(e, sp.Abs):
-        v = _ball(e.args[0], env, cx)
-        return abs(v)
-    name = type(e).__name__
-    if name == "sinc" and not cx and e.args[0].has(sp.I):
-        # real sinc(i v) = sinh(v)/v, even and increasing in |v|: enclose by its values at the ends
-        v = _ball(sp.expand(e.args[0] / sp.I), env, False)
-        lo, hi = flint.arb(v.abs_lower()), flint.arb(v.abs_upper())
-        f = [flint.arb(1) if x == 0 else x.sinh() / x for x in (lo, hi)]
-        return f[0].union(f[1])
-    if name in _FUNCS and len(e.args) == 1:
-        return getattr(_ball(e.args[0], env, cx), _FUNCS[name])()
-    raise AnalysisError(f"cannot evaluate {name} in ball arithmetic")
+            e = sp.sympify(text, rational=True, locals=loc)
+        except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
+            raise AnalysisError(f"cannot read the {what} {text!r}") from None
+    else:
+        e = sp.sympify(text).subs({sp.Symbol("n"): N})
+    if not isinstance(e, sp.Expr) or e.has(sp.zoo, sp.nan, sp.oo):
+        raise AnalysisError(f"the {what} {text!r} is not a finite formula")
+    return e
 
 
-def arb_abs(x):
-    """``|x|`` for an arb ball, with lower end clipped at 0 (arb's ``abs`` may dip below 0)."""
-    if x.contains(0):
-        return flint.arb(0).union(flint.arb(x.abs_upper()))
-    return abs(x)
+def resolve_where(where) -> dict:
+    """Helper definitions ``NAME=EXPR`` resolved to expressions in ``n`` and the parameters.
 
+    ``where`` is a mapping ``name -> expr`` or a sequence of ``"NAME=EXPR"`` strings (or pairs).
+    A definition may use ``n``, parameters and other names, in any order; a name used in its own
+    definition, directly or through others, is a cycle (:class:`AnalysisError`). Names that are
+    not defined stay free (parameters).
 
-def ball_to_interval(b) -> tuple[sp.Rational, sp.Rational]:
-    """The exact rational endpoints ``(mid - rad, mid + rad)`` of an arb ball."""
-    if not b.is_finite():
-        raise AnalysisError("the enclosure is not finite (a pole or a too wide parameter box)")
-    m, e = b.mid().man_exp()
-    r, f = b.rad().man_exp()
-    mid = sp.Rational(int(m)) * sp.Rational(2) ** int(e)
-    rad = sp.Rational(int(r)) * sp.Rational(2) ** int(f)
-    return mid - rad, mid + rad
+    >>> resolve_where(["s=sin(x)", "c=sqrt(1-s**2)"])
+    {s: sin(x), c: sqrt(1 - sin(x)**2)}
+    >>> resolve_where(["a=b+1", "b=2*a"])
+    Traceback (most recent call last):
+    ...
+    analysis.result.AnalysisError: cycle in the --where definitions: a -> b -> a
+    """
+    if not where:
+        return {}
+    items = list(where.items()) if isinstance(where, Mapping) else []
+    if not isinstance(where, Mapping):
+        for it in where:
+            if isinstance(it, str):
+                if "=" not in it:
+                    raise AnalysisError(f"malformed --where {it!r}: use NAME=EXPR, e.g. c=cos(theta/2**(n+1))")
+                it = it.split("=", 1)
+            items.append((str(it[0]).strip(), it[1]))
+    syms: dict[str, sp.Symbol] = {}
+    for name, _ in items:
+        name = str(name).strip()
+        if not name.isidentifier() or name in _RESERVED:
+            raise AnalysisError(f"--where: {name!r} cannot be defined (a name like c or v_n, not n, z, h, I, E, pi)")
+        if name in syms:
+            raise AnalysisError(f"--where: {name} is defined twice")
+        syms[name] = sp.Symbol(name)
+    raw = {syms[str(k).strip()]: _read(v, syms.values(), f"definition of {k}") for k, v in items}
+    done: dict = {}
 
+    def visit(s, path):
+        if s in done:
+            return done[s]
+        if s in path:
+            cyc = path[path.index(s):] + [s]
+            raise AnalysisError("cycle in the --where definitions: " + " -> ".join(x.name for x in cyc))
+        e = raw[s]
+        e = e.subs({d: visit(d, path + [s]) for d in e.free_symbols if d in raw})
+        done[s] = e
+        return e
 
-def _fraction(x: sp.Rational) -> Fraction:
-    return Fraction(int(x.p), int(x.q))
+    for s in raw:
+        visit(s, [])
+    return {s: done[s] for s in raw}
 
 
 # --------------------------------------------------------------------------------------------
@@ -301,6 +251,60 @@ class LevelDependentScheme:
         lo, hi = min(entries), max(entries)
         return cls(tuple(entries.get(i, sp.Integer(0)) for i in range(lo, hi + 1)), lo,
                    tuple(params), **kw)
+
+    @classmethod
+    def from_symbol(cls, expr, *, where=None, params: Sequence[sp.Symbol] | None = None,
+                    **kw) -> "LevelDependentScheme":
+        """The scheme of a symbol ``a^n(z)`` given as a string or sympy expression in ``z`` and ``n``.
+
+        ``where``: helper definitions ``NAME -> EXPR`` (a mapping, or ``"NAME=EXPR"`` strings) that
+        may use ``n``, parameters and each other (:func:`resolve_where`). Every other free symbol
+        is a parameter.
+
+        >>> e = LevelDependentScheme.from_symbol("(1+z)*(1+2*c*z+z**2)/(2*(1+c))/z**2",
+        ...                                      where={"c": "cos(theta/2**(n+1))"})
+        >>> e.params, e.limit()
+        ((theta,), LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ))
+        """
+        defs = resolve_where(where)
+        e = _read(expr, defs, "symbol")
+        num, den = sp.fraction(sp.together(e))
+        try:
+            dp, np_ = sp.Poly(den, _Z), sp.Poly(num, _Z)
+        except sp.PolynomialError:
+            raise AnalysisError(_GROWING if e.has(_Z) and _grows(e) else
+                                "the symbol must be a Laurent polynomial in z") from None
+        if len(dp.terms()) != 1:
+            raise AnalysisError("the symbol must be a Laurent polynomial in z (only powers of z may divide)")
+        shift, dc = -dp.monoms()[0][0], dp.coeffs()[0]
+        coeffs = [sp.cancel(c / dc) for c in reversed(np_.all_coeffs())]
+        return cls._build(coeffs, shift, defs, params, kw)
+
+    @classmethod
+    def from_mask(cls, coeffs: Sequence, start: int = 0, *, where=None,
+                  params: Sequence[sp.Symbol] | None = None, **kw) -> "LevelDependentScheme":
+        """The scheme with ``a^n_{start+k} = coeffs[k]`` (strings or sympy, may use ``n`` and ``where`` names).
+
+        >>> LevelDependentScheme.from_mask(["1/4", "3/4 - 2**(-n)", "3/4 + 2**(-n)", "1/4"], -2).mask[1]
+        3/4 - h
+        """
+        defs = resolve_where(where)
+        return cls._build([_read(c, defs, "coefficient") for c in coeffs], start, defs, params, kw)
+
+    @classmethod
+    def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
+        coeffs = [to_h(sp.sympify(c).subs(defs)) for c in coeffs]
+        coeffs = [sp.cancel(c) if c.is_rational_function(H) else c for c in coeffs]   # h (2 + 1/h) -> 2h + 1
+        while len(coeffs) > 1 and coeffs[-1] == 0:
+            coeffs.pop()
+        while len(coeffs) > 1 and coeffs[0] == 0:
+            coeffs.pop(0)
+            start += 1
+        if params is None:
+            free = set().union(*(c.free_symbols for c in coeffs)) - {N, H, sp.Symbol("n"), sp.Symbol("h")}
+            params = tuple(sp.Symbol(x.name, real=True) for x in sorted(free, key=lambda x: x.name))
+            coeffs = [c.subs({sp.Symbol(p.name): p for p in params}) for c in coeffs]
+        return cls(tuple(coeffs), int(start), tuple(params), **kw)
 
     # ---------------------------------------------------------------- data
     @property
@@ -371,6 +375,9 @@ class LevelDependentScheme:
         cache = self.__dict__.setdefault("_taylor_cache", {})
         if J in cache:
             return cache[J]
+        longer = [Jc for Jc in cache if Jc > J]
+        if longer:                          # the same series, truncated (no new sympy.series)
+            return tuple(r[:J] for r in cache[min(longer)])
         rows = []
         for c, c0 in zip(self.mask, self._limits):
             g = c - c0

@@ -130,6 +130,85 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
                   provenance={"method": "exact generalized sum rules at every level (sympy)"})
 
 
+def exponential_frequencies(s: LevelDependentScheme, values: Mapping[str, Any] | None = None) -> Result:
+    """The frequencies ``lambda`` (with multiplicity) whose exponential polynomials ``x^j e^{lambda x}``
+    every level generates, and those whose ``e^{lambda x}`` it reproduces — exactly.
+
+    Returns certified ``value = {"generated": {lambda: m}, "reproduced": [lambda, ...]}``:
+    ``a^n(z)`` vanishes to order ``m`` at ``z = -e^{-lambda h/2}`` identically in ``h`` (so the
+    space spanned by ``x^j e^{lambda x}``, ``j < m``, is generated; Conti–Romani 2011), and
+    ``a^n(e^{-lambda h/2}) = 2 e^{-lambda tau h/2}`` for the reproduced ones (:func:`reproduction`).
+
+    >>> from schemes.level_dependent import get
+    >>> r = exponential_frequencies(get("exp-cubic-trig"))
+    >>> r.status, r.value["generated"], r.value["reproduced"]
+    ('certified', {0: 2, -I*t: 1, I*t: 1}, [0])
+
+    Algorithm: the numerator of ``a^n(z)`` is factored in ``z`` over the expressions in ``h`` (sympy);
+    each root ``r(h)`` of a factor gives the candidate ``lambda = lim_{h->0} -2 log(-r(h))/h``; a
+    candidate is kept only when the exact identities ``D^j a^n(-e^{-lambda h/2}) = 0``, ``j < m``,
+    hold (zero test in sympy). Factors sympy cannot solve are listed in ``witness["unsolved"]``
+    and candidates neither proved nor refuted in ``witness["unverified_candidates"]`` (then the list
+    may be incomplete and the status is inconclusive).
+    """
+    if values:
+        s = s.subs(values)
+    z = _Z
+    num, _ = sp.fraction(sp.together(sp.expand(sum(c * z ** k for k, c in enumerate(s.mask)))))
+    gen: dict = {}
+    unsolved = []
+    for f, mult in sp.factor_list(num, z)[1]:
+        if not f.has(z):
+            continue
+        try:
+            roots = sp.roots(sp.Poly(f, z))
+        except (sp.PolynomialError, NotImplementedError):
+            roots = {}
+        if sum(roots.values()) != sp.degree(f, z):
+            unsolved.append(sp.sstr(f))
+            continue
+        for r, m in roots.items():
+            try:
+                lam = sp.simplify(sp.limit(-2 * sp.log(-r) / H, H, 0))
+            except (NotImplementedError, ValueError):
+                unsolved.append(sp.sstr(f))
+                continue
+            if lam.has(sp.Limit) or H in lam.free_symbols:
+                unsolved.append(sp.sstr(f))
+                continue
+            if lam.has(sp.oo, -sp.oo, sp.zoo, sp.nan):      # r(h) does not tend to -1: no frequency
+                continue
+            gen[lam] = gen.get(lam, 0) + m * mult
+    verified, unverified = {}, []
+    sym = sum(c * z ** (s.start + k) for k, c in enumerate(s.mask))
+    for lam, m in gen.items():
+        at = -sp.exp(-lam * H / 2)
+        j = 0
+        while j < m and _exact_zero(sp.diff(sym, z, j).subs(z, at)):
+            j += 1
+        if j:
+            verified[lam] = j
+        if j < m and _certify_nonzero(sp.diff(sym, z, j).subs(z, at), s, None) is None:
+            unverified.append(sp.sstr(lam))       # neither proved nor refuted: the list may be incomplete
+    a = s.limit()
+    tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / 2)
+    reproduced = []
+    for lam in verified:
+        e = _symbol(s, sp.exp(-lam * H / 2)) - 2 * sp.exp(-lam * tau * H / 2)
+        if _certify_nonzero(e, s, None) is not None:      # refuted by a certified nonzero value (fast)
+            continue
+        if _exact_zero(e):
+            reproduced.append(lam)
+        else:
+            unverified.append(f"reproduction of {sp.sstr(lam)}")
+    value = {"generated": verified, "reproduced": reproduced}
+    st = CERTIFIED if not (unsolved or unverified) else INCONCLUSIVE
+    return Result(value=value, status=st,
+                  witness={"unsolved_factors": unsolved, "unverified_candidates": unverified,
+                           "statement": "x^j e^(lambda x), j < m, generated at every level; e^(lambda x) reproduced"},
+                  provenance={"method": "exact factorization in z, limits of roots, exact identities (sympy)"})
+
+
 # --------------------------------------------------------------------------------------------
 # refinement and curves (float64: numerical)
 # --------------------------------------------------------------------------------------------

@@ -69,8 +69,11 @@ def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
     if isinstance(pieces, bool) or not isinstance(pieces, int) or pieces < 1:
         raise AnalysisError(f"pieces must be an integer >= 1, not {pieces!r}")
     boxed = [k for k, v in values.items() if isinstance(v, tuple)]
-    if len(boxed) > 1:
-        raise AnalysisError("give a box for at most one parameter (fix the others)")
+    if len(boxed) > 1:           # several boxes: the product of the splits of each (issue 13)
+        out = [dict(values)]
+        for k in boxed:
+            out = [{**b, k: piece[k]} for b in out for piece in _split({k: values[k]}, pieces)]
+        return out
     if not boxed:
         return [dict(values)]
     k = boxed[0]
@@ -225,14 +228,47 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
     return {"verdict": "unknown", "N": N}
 
 
+def _bisect(box: dict) -> list[dict]:
+    """Halve every boxed parameter of ``box`` (2^d children)."""
+    out = [dict(box)]
+    for k, v in box.items():
+        if isinstance(v, tuple):
+            lo, hi = v
+            mid = sp.nsimplify(sp.Rational(str(sp.N((lo + hi) / 2, 15))))
+            out = [{**b, k: half} for b in out for half in ((lo, mid), (mid, hi))]
+    return out
+
+
+def _adaptive_boxes(s, boxes, m, N, J, depth):
+    """``_box_series`` on each box; a box whose enclosure is not finite or whose verdict is unknown
+    is bisected in every boxed parameter, at most ``depth`` times (adaptive subdivision)."""
+    done_boxes, outs = [], []
+    todo = [(b, 0) for b in boxes]
+    while todo:
+        b, d = todo.pop()
+        try:
+            o = _box_series(s, b, m, N, J)
+        except AnalysisError:
+            if d >= depth or not any(isinstance(v, tuple) for v in b.values()):
+                raise
+            o = None
+        if (o is None or o["verdict"] == "unknown") and d < depth and any(isinstance(v, tuple) for v in b.values()):
+            todo.extend((c, d + 1) for c in _bisect(b))
+            continue
+        done_boxes.append(b)
+        outs.append(o)
+    return done_boxes, outs
+
+
 def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, m: int = 0, *,
-                    difference: int = 0, N: int = 40, J: int | None = None, pieces: int = 1) -> Result:
+                    difference: int = 0, N: int = 40, J: int | None = None, pieces: int = 1,
+                    depth: int = 0) -> Result:
     """Decide and enclose ``sum_{n>=0} 2^{mn} ||S_{a^n} - S_a||_inf``.
 
     Parameters
     ----------
     values : mapping
-        ``name -> exact value`` or ``name -> (lo, hi)`` (a closed box, at most one parameter).
+        ``name -> exact value`` or ``name -> (lo, hi)`` (a closed box; several parameters may be boxed).
     m : int
         The weight exponent (0: asymptotic equivalence; m: the C^m transfer of Dyn–Levin).
     difference : int
@@ -240,7 +276,10 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
     N : int
         Levels summed explicitly; the rest is the analytic tail.
     pieces : int
-        Sub-boxes of the parameter box.
+        Sub-boxes of each parameter box (several boxed parameters: the product grid).
+    depth : int
+        Adaptive subdivision: a sub-box that is not decided is bisected in every boxed parameter,
+        at most ``depth`` times (0: no adaptive subdivision, as before).
 
     Returns a :class:`Result`: certified ``[lower, upper]`` and ``witness["verdict"] ==
     "convergent"``; or ``value = oo`` with ``"divergent"`` and the certified leading constant; or
@@ -256,8 +295,7 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
     env = _parse_values(s, values)
     lead = leading_asymptotics(s)
     q = lead.witness["order"]
-    boxes = _split(env, pieces)
-    outs = [_box_series(s, b, m, N, J) for b in boxes]
+    boxes, outs = _adaptive_boxes(s, _split(env, pieces), m, N, J, depth)
     verdicts = {o["verdict"] for o in outs}
     C = lead.value
     point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
@@ -373,12 +411,30 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                   provenance={"method": "Dyn-Levin norm test"})
 
 
-def same_support(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
+def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0) -> Result:
     """Certify that ``a^n`` and ``a`` have the same support for every level ``n >= 0``.
 
     Outside the limit's support the level coefficient must vanish identically; inside, it is
     enclosed away from 0 for ``n < N`` (arb) and for ``n >= N`` by ``|a_k| > A_k h_N^q``.
+    Over parameter boxes, ``depth > 0`` bisects every boxed parameter when a box fails (the
+    interval enclosures tighten on smaller boxes), at most ``depth`` times; certified when every
+    sub-box is.
     """
+    r = _same_support_box(s, values, N=N)
+    env = _parse_values(s, values)
+    if r.is_certified or depth <= 0 or not any(isinstance(v, tuple) for v in env.values()):
+        return r
+    parts = [same_support(s, c, N=N, depth=depth - 1) for c in _bisect(env)]
+    if all(p.is_certified for p in parts):
+        return Result(value=True, status=CERTIFIED,
+                      witness={"same_support": True, "support": (s.start, s.end),
+                               "sub_boxes": sum(p.witness.get("sub_boxes", 1) for p in parts)},
+                      provenance={"method": "arb enclosures (n < N) + Taylor tail (n >= N), bisected boxes",
+                                  "N": N})
+    return next(p for p in parts if not p.is_certified)
+
+
+def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
     env = _parse_values(s, values)
     lim = s._limits
     models = taylor_models(s, env)
@@ -415,7 +471,7 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
 
 
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,
-               difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1) -> Result:
+               difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0) -> Result:
     """C^m of ``{S_{a^n}}`` by Dyn–Levin 1995 (Theorem 1.1 of seed 003), hypotheses checked.
 
     With ``difference = k`` the theorem is applied to the k-th divided difference scheme
@@ -446,8 +502,8 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
         else:
             raise AnalysisError(f"give values for {', '.join(names)}")
     lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box)
-    ser = weighted_series(target, env, mm, N=N, pieces=pieces)
-    sup = same_support(target, env, N=N)
+    ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth)
+    sup = same_support(target, env, N=N, depth=depth)
     hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
     ok = (sup.is_certified and sup.value and lim.is_certified and lim.value is True
           and ser.is_certified and ser.witness.get("verdict") == "convergent")
