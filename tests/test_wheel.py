@@ -28,8 +28,14 @@ ROOT = Path(__file__).resolve().parents[1]
 pytestmark = pytest.mark.slow
 
 
+#: the environment of every subprocess: no PYTHONPATH (a checkout on it would shadow the wheel, and
+#: its egg-info would make pip think the wheel is installed already)
+CLEAN_ENV = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+
+
 def _run(cmd, cwd, env=None, timeout=600):
-    proc = subprocess.run(cmd, cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+    proc = subprocess.run(cmd, cwd=cwd, env=CLEAN_ENV if env is None else env, capture_output=True, text=True,
+                          timeout=timeout)
     assert proc.returncode == 0, f"{cmd} failed ({proc.returncode}):\n{proc.stdout[-2000:]}\n{proc.stderr[-2000:]}"
     return proc
 
@@ -45,11 +51,11 @@ def installed(tmp_path_factory):
     venv.EnvBuilder(with_pip=False).create(env_dir)
     py = env_dir / "bin" / "python"
     site = Path(subprocess.check_output([str(py), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])"],
-                                        text=True).strip())
+                                        text=True, env=CLEAN_ENV).strip())
     deps = {sysconfig.get_paths()["purelib"], sysconfig.get_paths()["platlib"]}
     (site / "_subdiv_test_deps.pth").write_text("\n".join(sorted(deps)) + "\n")
     _run([sys.executable, "-m", "pip", "--python", str(py), "install", "--no-deps", "--no-index",
-          str(wheels[0]), "-q"], cwd=build)
+          "--force-reinstall", str(wheels[0]), "-q"], cwd=build)
     return env_dir, site
 
 
@@ -66,7 +72,7 @@ def test_report_and_check_from_an_empty_directory(installed, tmp_path):
     env_dir, site = installed
     work = tmp_path / "empty"
     work.mkdir()
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PYTHONHOME")}
+    env = CLEAN_ENV
     where = _run([str(env_dir / "bin" / "python"), "-c",
                   "import analysis, papers; print(analysis.__file__); print(papers.__file__)"], cwd=work, env=env)
     for line in where.stdout.split():
