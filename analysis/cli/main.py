@@ -33,7 +33,8 @@ from ..result import AnalysisError
 from .common import _Parser, _StdoutGuard, _version, attach_dash_values
 
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
-                                     "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report")
+                                     "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
+                                     "analysis.cli.derive")
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
