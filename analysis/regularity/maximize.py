@@ -30,8 +30,9 @@ With ``N`` the generic number of factors ``(1+z)``, ``k = N - 1`` and ``c(t) = 2
    matrices are enclosed by Arb ball matrices (the coefficients of ``c`` evaluated on the ball
    ``I``); for each candidate word ``w`` (the float search's spectrum-maximising products) the
    eigenvalues of the ball product ``T_w(I)`` are enclosed (``acb_mat.eig``, valid for every
-   matrix in the balls), or, for a real dominant eigenvalue, a sign change of the ball
-   determinant ``det(T_w(I) - x I)`` between ``x = +-r`` and beyond the spectrum, so ``min_{t in I} rho(T_w(t)) >= r_w`` and, since
+   matrix in the balls), or, for a real dominant eigenvalue, an exact sign change of the
+   characteristic polynomial ``det(x I - T_w(t))`` (polynomial in ``t``, Taylor-bounded on
+   ``I``) between ``x = +-r`` and infinity, so ``min_{t in I} rho(T_w(t)) >= r_w`` and, since
    ``rho(T_w)^(1/|w|) <= JSR``, ``alpha(t) <= k - log2(r_w)/|w|`` on ``I``. Intervals whose bound
    exceeds ``alpha_lower(t*) + gap`` are bisected (down to ``min_width``). At the exceptional
    parameters in the box (more factors ``(1+z)``, where the generic formula may underestimate
@@ -87,6 +88,29 @@ class _Family:
         self.polys = [sp.Poly(sp.expand(x), p) for x in c.mask]
         self.float_coeffs = [[float(v) for v in q.all_coeffs()] for q in self.polys]
         self.exceptional = f.witness["exceptional"]
+        self.p = p
+        self._K = sp.QQ[p]
+        self._charpolys: dict = {}
+
+    def charpoly(self, word):
+        """``det(x I - T_w(t))`` exactly: a list of coefficients (highest first), each a Poly in ``t``."""
+        if word not in self._charpolys:
+            from sympy.polys.matrices import DomainMatrix
+
+            K = self._K
+            c = [K.from_sympy(q.as_expr()) for q in self.polys]
+            n = max(len(c) - 1, 1)
+
+            def T(eps):
+                return DomainMatrix([[c[2 * i - j + eps] if 0 <= 2 * i - j + eps < len(c) else K.zero
+                                      for j in range(n)] for i in range(n)], (n, n), K)
+
+            M = (T(0), T(1))
+            P = M[word[0]]
+            for e in word[1:]:
+                P = M[e] * P
+            self._charpolys[word] = [_fmpq_poly(sp.Poly(K.to_sympy(x), self.p)) for x in P.charpoly()]
+        return self._charpolys[word]
 
     def floats(self, t: float):
         c = [np.polyval(q, t) for q in self.float_coeffs]
@@ -144,7 +168,8 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
             Pm = np.eye(len(Tf[0]))
             for e in w:
                 Pm = Tf[e] @ Pm
-            r_lo = _real_root_bound(P, Pm, len(Pm))
+            rr = _real_root_bound(F, w, lo, hi, Pm)
+            r_lo = max(flint.arb(flint.fmpq(int(rr.p), int(rr.q))).lower(), _trace_bound(P))
             for kw in ({"algorithm": "rump"}, {"multiple": True}):
                 try:
                     eig = P.eig(**kw)
@@ -163,27 +188,77 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     return best
 
 
-def _real_root_bound(P, P_mid, n: int):
-    """A lower bound of ``rho`` valid for every matrix in the ball ``P``, from a real dominant
-    eigenvalue: if ``det(P - x I)`` has the sign of ``det(P - X I)`` (``|X|`` beyond every
-    eigenvalue) opposite at ``x = s r`` for all matrices in the ball, a real eigenvalue lies
-    between ``s r`` and ``s X``, so ``rho >= r``. ``r`` is taken just inside the float eigenvalue."""
+def _fmpq_poly(q: sp.Poly):
     import flint
 
+    return flint.fmpq_poly([flint.fmpq(int(sp.Rational(v).p), int(sp.Rational(v).q)) for v in q.all_coeffs()[::-1]])
+
+
+def _fmpq(x: sp.Rational):
+    import flint
+
+    return flint.fmpq(int(x.p), int(x.q))
+
+
+def _sign_on_interval(poly, tm, h) -> int:
+    """The sign of the ``fmpq_poly`` ``poly(t)`` for every ``t`` in ``[tm - h, tm + h]`` (0 when not certain).
+
+    Exact: Taylor coefficients at ``tm``; ``|poly(t) - poly(tm)| <= sum_{j>=1} |c_j| h^j``."""
+    import flint
+
+    coeffs = poly(flint.fmpq_poly([tm, 1])).coeffs()      # Taylor coefficients at tm, constant first
+    if not coeffs:
+        return 0
+    c0 = coeffs[0]
+    rest, hj = flint.fmpq(0), flint.fmpq(1)
+    for cj in coeffs[1:]:
+        hj *= h
+        rest += abs(cj) * hj
+    if abs(c0) > rest:
+        return 1 if c0 > 0 else -1
+    return 0
+
+
+def _real_root_bound(F: "_Family", word, lo, hi, P_mid) -> sp.Rational:
+    """A rational ``r`` with ``rho(T_w(t)) >= r`` for every ``t`` in ``[lo, hi]`` (0 if none found).
+
+    When the float spectrum at the midpoint is dominated by a real eigenvalue of sign ``s``, the
+    exact characteristic polynomial ``chi(x) = det(x I - T_w(t))`` (monic, sign ``s^n`` as
+    ``x -> s oo``) is evaluated at ``x = s r``: a certified sign ``-s^n`` on the whole interval
+    means a real eigenvalue beyond ``s r``, so ``rho >= r`` (intermediate value theorem)."""
     ev = np.linalg.eigvals(P_mid)
     lam = ev[int(np.argmax(abs(ev)))]
-    if abs(lam.imag) > 1e-12 * max(abs(lam), 1e-300) or lam == 0:
-        return flint.arb(0)
+    if lam == 0 or abs(lam.imag) > 1e-12 * abs(lam):
+        return sp.Integer(0)
     sgn = 1 if lam.real > 0 else -1
-    X = sum(abs(P[i, j]).upper() for i in range(n) for j in range(n)) + 1
+    chi = F.charpoly(word)
+    n = len(chi) - 1
+    tm, h = _fmpq((lo + hi) / 2), _fmpq((hi - lo) / 2)
+    for shrink in (sp.Rational(1, 10 ** 9), sp.Rational(1, 10 ** 7), sp.Rational(1, 10 ** 5),
+                   sp.Rational(1, 10 ** 4), sp.Rational(1, 10 ** 3), sp.Rational(1, 100)):
+        r = sp.Rational(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12)) * (1 - shrink)
+        x = _fmpq(sgn * r)
+        val = chi[0] * 0
+        for c in chi:                                   # Horner in x
+            val = val * x + c
+        if _sign_on_interval(val, tm, h) == -(sgn ** n):
+            return r
+    return sp.Integer(0)
+
+
+def _trace_bound(P, squarings: int = 5):
+    """``rho(P) >= (|tr P^j| / n)^(1/j)``, ``j = 1, 2, 4, ..`` (``|sum lambda^j| <= n rho^j``): crude, never fails."""
+    import flint
+
+    n = P.nrows()
     best = flint.arb(0)
-    for shrink in (1e-9, 1e-7, 1e-5, 1e-3):
-        r = abs(lam.real) * (1 - shrink)
-        xr = flint.arb(sgn * r)
-        d1 = (P - flint.acb_mat(n, n, [xr if i == j else 0 for i in range(n) for j in range(n)])).det().real
-        dX = (P - flint.acb_mat(n, n, [sgn * X if i == j else 0 for i in range(n) for j in range(n)])).det().real
-        if (d1 > 0 and dX < 0) or (d1 < 0 and dX > 0):
-            return flint.arb(r)
+    Q, j = P, 1
+    for _ in range(squarings + 1):
+        tr = sum((Q[i, i] for i in range(n)), flint.acb(0))
+        v = (abs(tr) / n).lower()
+        if v > 0:
+            best = max(best, (flint.arb(v).log() / j).exp().lower())
+        Q, j = Q * Q, 2 * j
     return best
 
 
