@@ -106,7 +106,7 @@ def cmd_derive(args) -> None:
     if w["parameters"]:
         lines.append("free parameters: " + ", ".join(f"{x} = {c}" for x, c in w["free_coefficients"].items()))
         if arity == 2 and r.value is not None:
-            lines.append(f"analyse: subdiv range --mask \"{w['mask']}\" --start {w['start']} ...")
+            lines.append(f"analyse: subdiv range --mask \"{w['mask']}\" --start {w['start']} --C 1 --within=LO,HI")
     if args.maximize:
         from ..regularity.maximize import maximize_holder
 
