@@ -289,6 +289,8 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     """
     t0 = time.perf_counter()
     params = a.params
+    if not params:
+        raise AnalysisError("nothing to maximise: the family has no free parameter (dimension 0)")
     if param is None:
         if len(params) != 1:
             names = ", ".join(p.name for p in params) or "none"
