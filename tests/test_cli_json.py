@@ -95,6 +95,8 @@ CASES = {
     "nonuniform-chamfer": (["nonuniform", "chamfer", "--levels", "4"], lambda d: "midpoint_deviation" in d["witness"]),
     "nonuniform-claims": (["nonuniform", "claims", "--seed", "000"], lambda d: len(d) > 0 and "status" in d[0]),
     "check": (["check", "000"], lambda d: d["agree"] is True and d["claims"] > 0),
+    "derive": (["derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1"],
+               lambda d: d["dimension"] == 1 and d["status"] == "certified"),
 }
 
 
