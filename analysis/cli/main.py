@@ -3,7 +3,7 @@ one line on stderr and an exit code, and guards standard output).
 
 The command groups live in their own modules and register themselves (:data:`COMMAND_MODULES`):
 :mod:`.stationary`, :mod:`.regularity`, :mod:`.atlas`, :mod:`.levels`, :mod:`.nonuniform`,
-:mod:`.report`; what they share is in :mod:`.common`.
+:mod:`.report`, :mod:`.derive`; what they share is in :mod:`.common`.
 
 Every command takes a scheme in one of four ways — a catalogue name, a mask, paper-style
 rules, or a symbol expression — and parameter values with ``--param NAME=VALUE`` (exact:
@@ -34,7 +34,7 @@ from .common import _Parser, _StdoutGuard, _version, attach_dash_values
 
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
-                                     "analysis.cli.paperfile")
+                                     "analysis.cli.paperfile", "analysis.cli.derive")
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:

@@ -5,7 +5,8 @@ point for exact (rational or algebraic), closed-form, ball and approximately rea
 and the C^k verdict :func:`~analysis.regularity.holder.smoothness` (:mod:`.holder`); the
 L2-Sobolev exponent (:mod:`.sobolev`); stability of the integer shifts (:mod:`.stability`);
 C^k parameter ranges with certified boundaries, alpha curves and the proof or refutation of a
-claimed interval (:mod:`.ranges`); two-parameter atlases (:mod:`.atlas`).
+claimed interval (:mod:`.ranges`); two-parameter atlases (:mod:`.atlas`); the smoothest member of
+a one-parameter family with a certified gap (:mod:`.maximize`).
 
 Layering: may import :mod:`analysis.algebra`, :mod:`analysis.stationary` and :mod:`analysis.jsr`.
 """

@@ -1,0 +1,148 @@
+"""``subdiv derive``: masks from requirements (see :mod:`analysis.algebra.derive`), and the smoothest member.
+
+Examples
+--------
+::
+
+    subdiv derive --support 7 --interpolatory --symmetric primal --reproduce 1
+    subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 --json
+    subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 3 \\
+        --maximize holder --within 0,1/32
+
+The printed mask string can be pasted into ``subdiv range --mask "..." --start S`` or
+``subdiv atlas --mask "..." --start S`` (the free parameters ``t1, t2, ...`` are parameters there).
+"""
+
+from __future__ import annotations
+
+
+
+from ..result import AnalysisError
+
+
+def register(subparsers) -> None:
+    """Add ``subdiv derive`` to the sub-command parsers of :func:`analysis.cli.main.build_parser`."""
+    s = subparsers.add_parser("derive", help="the exact family of masks satisfying requirements")
+    s.add_argument("--arity", default="2", metavar="M", help="arity m >= 2 (default 2)")
+    s.add_argument("--support", required=True, metavar="N", help="number of mask coefficients")
+    s.add_argument("--start", metavar="S", help="first index (default centred: -(N // 2))")
+    s.add_argument("--interpolatory", action="store_true", help="a_{mi} = delta_{i0}")
+    s.add_argument("--symmetric", choices=("primal", "dual", "any"), help="a_i = a_{start+end-i}")
+    s.add_argument("--sum-rules", metavar="K", help="sum rules of order K (generation of degree K-1)")
+    s.add_argument("--generate", metavar="D", help="polynomial generation of degree D")
+    s.add_argument("--reproduce", metavar="D", help="polynomial reproduction of degree D")
+    s.add_argument("--tau", metavar="T", help="reproduction shift (default (start+end)/(2(m-1)))")
+    s.add_argument("--exp", action="append", metavar="LAMBDA",
+                   help="reproduce exp(LAMBDA x) (repeatable: 1, -1, I*pi/2)")
+    s.add_argument("--level", default="0", metavar="N", help="level of the exponential reproduction (default 0)")
+    s.add_argument("--fix", action="append", metavar="aI=V", help="fix a coefficient, e.g. a0=1/2 (repeatable)")
+    s.add_argument("--names", metavar="LIST", help="names of the free parameters (default t1,t2,...)")
+    s.add_argument("--max-sum-rules", action="store_true", help="the most sum rules on the support")
+    s.add_argument("--maximize", choices=("holder",), help="the smoothest member (one free parameter)")
+    s.add_argument("--within", metavar="LO,HI", help="box of the parameter for --maximize")
+    s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap in alpha (default 1/1000)")
+    s.add_argument("--budget", default="60", metavar="SECONDS", help="time budget of --maximize (default 60)")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
+    s.set_defaults(func=cmd_derive)
+
+
+def _int(text, what: str, lo: int) -> int:
+    try:
+        v = int(str(text))
+    except (TypeError, ValueError):
+        raise AnalysisError(f"{what} must be an integer, not {text!r}") from None
+    if v < lo:
+        raise AnalysisError(f"{what} must be >= {lo}")
+    return v
+
+
+def cmd_derive(args) -> None:
+    from ..algebra.derive import derive_mask, max_sum_rules
+    from .common import _emit, _parse_within, _split_list
+
+    kw = {"interpolatory": args.interpolatory, "symmetric": args.symmetric}
+    for opt, key, lo in (("sum_rules", "sum_rules", 1), ("generate", "generation", 0),
+                         ("reproduce", "reproduction", 0)):
+        v = getattr(args, opt)
+        if v is not None:
+            kw[key] = _int(v, f"--{opt.replace('_', '-')}", lo)
+    if args.tau is not None:
+        kw["tau"] = args.tau
+    if args.exp:
+        kw["exponentials"] = args.exp
+        kw["level"] = _int(args.level, "--level", 0)
+    fixed = {}
+    for item in args.fix or []:
+        if "=" not in item:
+            raise AnalysisError(f"malformed --fix {item!r}: use aI=VALUE, e.g. a0=1/2")
+        k, v = (t.strip() for t in item.split("=", 1))
+        fixed[k] = v
+    if fixed:
+        kw["fixed"] = fixed
+    if args.names:
+        kw["names"] = _split_list(args.names, "--names")
+    arity = _int(args.arity, "--arity", 2)
+    support = _int(args.support, "--support", 1)
+    start = None if args.start is None else _int(args.start, "--start", -10 ** 6)
+    if args.max_sum_rules:
+        if "sum_rules" in kw:
+            raise AnalysisError("--max-sum-rules and --sum-rules exclude each other")
+        r = max_sum_rules(arity, support, start, **kw)
+    else:
+        r = derive_mask(arity, support, start, **kw)
+    w = r.witness
+    data = {"status": r.status, "dimension": w["dimension"], "parameters": list(w["parameters"]),
+            "free_coefficients": w["free_coefficients"], "mask": w["mask"], "start": w["start"],
+            "arity": arity, "tau": w["tau"], "requirements": w["requirements"], "equations": w["equations"],
+            "rank": w["rank"], "symbol": r.value, "method": r.provenance["method"], "domain": r.provenance["domain"]}
+    if "order" in w:
+        data["max_sum_rules"] = w["order"]
+    lines = [f"family of arity {arity} on [{w['support'][0]}, {w['support'][1]}]: dimension {w['dimension']} "
+             f"({r.status}, exact; {w['equations']} equations, rank {w['rank']}, {r.provenance['domain']})",
+             "requirements: " + "; ".join(w["requirements"]),
+             f"mask (start {w['start']}): {w['mask']}"]
+    if "order" in w:
+        lines.append(f"most sum rules on this support: {w['order']}")
+    if w["parameters"]:
+        lines.append("free parameters: " + ", ".join(f"{x} = {c}" for x, c in w["free_coefficients"].items()))
+        if arity == 2 and r.value is not None:
+            lines.append(f"analyse: subdiv range --mask \"{w['mask']}\" --start {w['start']} --C 1 --within=LO,HI")
+    if args.maximize:
+        from ..regularity.maximize import maximize_holder
+
+        if args.within is None:
+            raise AnalysisError("--maximize needs --within LO,HI (a box for the free parameter)")
+        if arity != 2:
+            raise AnalysisError("--maximize holder is for binary schemes (--arity 2)")
+        if r.value is None:
+            raise AnalysisError("--maximize needs an algebraic mask (real exponentials give transcendental coefficients)")
+        lo, hi = _parse_within(args.within)
+        if not (lo.is_finite and hi.is_finite):
+            raise AnalysisError("--within needs a finite box for --maximize")
+        try:
+            budget = float(args.budget)
+        except ValueError:
+            raise AnalysisError(f"--budget must be a number of seconds, not {args.budget!r}") from None
+        if not budget > 0:
+            raise AnalysisError("--budget must be positive")
+        from .common import parse_coefficient
+
+        m = maximize_holder(r.value, within=(lo, hi), gap=parse_coefficient(args.gap), budget_seconds=budget)
+        data["maximize"] = {"status": m.status, "maximiser": m.value, "alpha_lower_at_maximiser": m.lower,
+                            "alpha_upper_on_box": m.upper, "gap": m.witness.get("gap"),
+                            "intervals": m.witness.get("intervals"), "seconds": m.provenance.get("seconds"),
+                            "message": m.provenance.get("message")}
+        if m.value is None:
+            lines.append(f"maximize holder: {m.status} ({m.provenance.get('message')})")
+        else:
+            h = m.witness["alpha_at"]
+            p = m.witness["parameter"]
+            lines.append(f"smoothest member: {p} = {m.value} (~{float(m.value):.8g}); alpha there in "
+                         f"[{float(h.lower):.6f}, {float(h.upper):.6f}] ({h.status})")
+            lines.append(f"alpha <= {float(m.upper):.6f} on the whole box [{lo}, {hi}]: certified gap "
+                         f"{float(m.witness['gap']):.2e} ({m.status}; {m.witness['intervals']} sub-intervals, "
+                         f"{m.provenance['seconds']} s)" + (f"; {m.provenance['message']}" if "message" in m.provenance else ""))
+    _emit(args, data, "\n".join(lines))
+
+
+
