@@ -6,8 +6,8 @@ of the exact sets where the m-ary Dyn–Levin test ``||(1/m S_{a_{j+1}})^L||_inf
 proven) and the exact set where one transition matrix of ``c = m^k a/q_m^(k+1)`` has a real
 eigenvalue of modulus ``>= m^(k-j)`` (``alpha <= j``: not C^j proven). What neither covers is
 reported as *undecided*: the verdict is then inconclusive (never certified), with the strip named.
-The Hölder exponent is enclosed (certified, :func:`analysis.regularity.mary.holder_exponent_mary`)
-at sample points only: its maximum over the interval is sampled, not certified.
+The Hölder exponent is enclosed (certified, :func:`analysis.regularity.mary.alpha_curve_mary`)
+at ``samples + 1`` rational points only: its maximum over the interval is sampled, not certified.
 
 The other kinds dispatch in their own ``evaluate`` (``self.arity``): sum rules, symmetry, support,
 eigenvalues, reproduction, norm test and holder use the m-ary functions of
@@ -48,8 +48,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...algebra.mary import smoothing_factor_mary
-from ...regularity.mary import ck_range_mary, holder_exponent_mary
-from ...result import AnalysisError
+from ...regularity.mary import alpha_curve_mary, ck_range_mary
 from ..model import Number, Verdict
 from .base import Kind, evidence, interval_text, parse_interval
 
@@ -128,22 +127,6 @@ def ck_range_verdict(kind: Kind) -> Verdict:
                                     "or longer norm tests", evidence=ev)
 
 
-def _alpha_samples(a, m: int, p, lo, hi, n: int, budget: float) -> list[dict]:
-    """Certified enclosures of alpha at the midpoints of ``n`` equal subintervals of ``(lo, hi)``."""
-    out = []
-    for i in range(n):
-        x = sp.nsimplify(lo + (hi - lo) * sp.Rational(2 * i + 1, 2 * n))
-        if not x.is_Rational:
-            x = sp.Rational(str(sp.N(x, 12)))
-        try:
-            h = holder_exponent_mary(a.subs({p: x}), m, budget_seconds=budget)
-            lo_, hi_ = (h.value, h.value) if h.value is not None else (h.lower, h.upper)
-            out.append({"p": x, "lower": lo_, "upper": hi_, "status": h.status})
-        except AnalysisError as exc:
-            out.append({"p": x, "lower": None, "upper": None, "status": f"no alpha: {exc}"})
-    return out
-
-
 def profile_verdict(kind) -> Verdict:
     """The ``smoothness profile`` kind for an m-ary one-parameter family (see the module docstring)."""
     a, m = kind.symbol(), kind.arity
@@ -164,7 +147,7 @@ def profile_verdict(kind) -> Verdict:
     largest = max([j for j, r in sets.items() if r.value != sp.EmptySet], default=-1)
     ev = [evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)} ({m}-ary)", table=(("j", "set", "status"), *rows),
                    text=f"{N} generic factors (1+...+z^{m - 1})/{m}; largest j with a non-empty C^j set: {largest}")]
-    curve = _alpha_samples(a, m, p, lo, hi, kind.get("samples", 8), ALPHA_BUDGET)
+    curve = alpha_curve_mary(a, m, p, within=(lo, hi), samples=kind.get("samples", 8), budget_seconds=ALPHA_BUDGET).value
     best = max((x for x in curve if x["lower"] is not None), key=lambda x: x["lower"], default=None)
     alpha_line = "no certified alpha"
     if best is not None:
