@@ -142,6 +142,8 @@ def profile_verdict(kind) -> Verdict:
         rows.append((f"C^{j}", set_text(r.value), "certified" if r.witness["exact"] else
                      f"undecided on {set_text(r.witness['undecided'])}"))
         nums.append(Number(f"C^{j} set", set_text(r.value)))
+        if not r.witness["exact"]:
+            nums.append(Number(f"C^{j} undecided", set_text(r.witness["undecided"])))
         if r.value == sp.EmptySet and r.witness["exact"]:
             break
     largest = max([j for j, r in sets.items() if r.value != sp.EmptySet], default=-1)
