@@ -196,7 +196,27 @@ def test_range_figure_mary(tmp_path, capsys):
     assert fig.stat().st_size > 1000 and "alpha at 9 points" in out
 
 
-def test_atlas_mary_is_a_one_line_error(capsys):
+FAMILY = "(1+z+z**2)**2/(3*z**2)*(1 + s*(z-2+1/z) + t*(z**2-2+z**-2))"
+
+
+def test_atlas_mary(tmp_path, capsys):
+    """A two-parameter ternary family through the ternary linear B-spline (s = t = 0: the hat function,
+    alpha = 1 exactly) and the ternary cubic B-spline (s = 2/9, t = 1/9: (1+z+z^2)^4/(27 z^4), a cubic
+    spline, alpha = 3: de Boor); more factors 1+z+z^2 exactly on s + t = 1/3 (checked by division)."""
+    s_, t_ = sp.symbols("s t")
+    expr = sp.expand((1 + Z + Z**2) ** 2 * (Z**2 + s_ * (Z**3 - 2 * Z**2 + Z) + t_ * (Z**4 - 2 * Z**2 + 1)))
+    rem = sp.rem(sp.Poly(expr, Z), sp.Poly((1 + Z + Z**2) ** 3, Z))
+    assert all(sp.simplify(c.subs(s_, sp.Rational(1, 3) - t_)) == 0 for c in rem.all_coeffs())
+    assert sp.expand(expr.subs({s_: sp.Rational(2, 9), t_: sp.Rational(1, 9)}) * 9 - (1 + Z + Z**2) ** 4) == 0
+    fig = tmp_path / "atlas.png"
+    assert main(["atlas", "--symbol", FAMILY, "--arity", "3", "--x", "s=0:1/3:4", "--y", "t=0:1/9:3", "--j", "1,2",
+                 "--executor", "serial", "--no-progress", "--json", "--figure", str(fig)]) == 0
+    d = json.loads(capsys.readouterr().out)
+    pts = {(sp.Rational(x["p1"]["exact"] if isinstance(x["p1"], dict) else x["p1"]),
+            sp.Rational(x["p2"]["exact"] if isinstance(x["p2"], dict) else x["p2"])): x for x in d["value"]}
+    lin, cub = pts[(0, 0)], pts[(sp.Rational(2, 9), sp.Rational(1, 9))]
+    assert (lin["C^1"], lin["C^2"], cub["C^1"], cub["C^2"]) == (False, False, True, True)
+    assert (sp.Rational(str(lin["alpha"])), sp.Rational(str(cub["alpha"]))) == (1, 3)
+    assert cub["exceptional"] and fig.stat().st_size > 1000
     assert main(["atlas", "--scheme", "ternary-four-point", "--x", "mu=0:1/9:2", "--y", "mu=0:1/9:2"]) == 2
-    err = capsys.readouterr().err.strip()
-    assert err.count("\n") == 0 and err.startswith("subdiv: error: ") and "arity 3" in err
+    assert "different parameters" in capsys.readouterr().err
