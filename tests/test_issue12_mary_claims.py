@@ -220,3 +220,12 @@ def test_atlas_mary(tmp_path, capsys):
     assert cub["exceptional"] and fig.stat().st_size > 1000
     assert main(["atlas", "--scheme", "ternary-four-point", "--x", "mu=0:1/9:2", "--y", "mu=0:1/9:2"]) == 2
     assert "different parameters" in capsys.readouterr().err
+
+
+def test_mary_kinds_list_matches_the_classes():
+    from analysis.claims.kinds import KIND_CLASSES
+    from analysis.claims.kinds.base import MARY_KINDS
+    from analysis.claims.template import template
+
+    assert sorted(n for n, c in KIND_CLASSES.items() if c.mary) == sorted(MARY_KINDS)
+    assert all(k in " ".join(template().split()) for k in MARY_KINDS)
