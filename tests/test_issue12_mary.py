@@ -272,9 +272,11 @@ def test_cli_mary_json_and_binary_only_commands():
                         "--json"], capture_output=True, text=True)
     doc = json.loads(p.stdout)
     assert doc["arity"] == 3 and doc["alpha"]["value"] == 3 and doc["smoothness"]["value"] is True
+    # atlas takes m-ary input since the second half of issue 12 (tests/test_issue12_mary_claims.py):
+    # a missing axis is still a one-line error
     p = subprocess.run([sys.executable, "-m", "analysis", "atlas", "--scheme", "ternary-bspline-2"],
                        capture_output=True, text=True)
-    assert p.returncode == 2 and "binary schemes only" in p.stderr and p.stderr.count("\n") == 1
+    assert p.returncode == 2 and "give both axes" in p.stderr and p.stderr.count("\n") == 1
 
 
 @pytest.mark.parametrize("argv", [

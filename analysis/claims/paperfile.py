@@ -28,7 +28,10 @@ A scheme is given by exactly one of ``catalogue`` (a catalogue slug, resolved by
 ``catalogue`` callable the command line passes in: the engine does not import the catalogue),
 ``mask`` + ``start``, ``rules = { even = [...], odd = [...], first = p }``, ``symbol`` (an
 expression in ``z``) or ``level_mask`` + ``start`` (a level-dependent scheme, coefficients in
-``n`` or ``h = 2^-n``).
+``n`` or ``h = 2^-n``). ``arity = M`` (issue 12; default 2, or the catalogue entry's arity) makes
+the scheme m-ary, ``(S_a f)_i = sum_j a_{i-Mj} f_j``: the kinds of
+:data:`analysis.claims.kinds.base.MARY_KINDS` then use the m-ary analyses, the others refuse the
+claim when the file is loaded.
 
 Bad files are one-line :class:`~analysis.result.AnalysisError` messages: a TOML syntax error
 names the file and line; an unknown kind lists the kinds; an unknown scheme, parameter or field
@@ -100,7 +103,7 @@ from .model import Claim, Paper
 __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
 
 PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
-SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "parameters", "notes", "title"}
+SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "parameters", "notes", "title", "arity"}
 #: the keys of a claim table that are not fields of its kind
 CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind", "command", "objects"}
 _DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask")
@@ -174,6 +177,7 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     if isinstance(start, bool) or not isinstance(start, int):
         raise AnalysisError(f"{w}: start must be an integer")
     declared = tuple(syms.values()) if params else None
+    arity = _arity(t, how, w)
     symbol, level, definition = None, None, ""
     try:
         if how == "catalogue":
@@ -181,6 +185,11 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
                 raise AnalysisError("catalogue names need the catalogue (run the file with `subdiv`)")
             entry = catalogue(str(t["catalogue"]))
             symbol = getattr(entry, "symbol", entry)
+            own = getattr(entry, "arity", 2)
+            if arity is not None and arity != own:
+                raise AnalysisError(f"catalogue entry {t['catalogue']!r} has arity {own}, not {arity} "
+                                    f"(drop 'arity' or write arity = {own})")
+            arity = own
             definition = f"catalogue entry {t['catalogue']!r}"
         elif how == "mask":
             coeffs = [parse_coefficient(c, locals_=syms) for c in t["mask"]]
@@ -218,7 +227,24 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     if unknown:
         raise AnalysisError(f"{w}: unknown parameter {unknown[0]!r}: it does not occur in the scheme "
                             f"(its parameters: {', '.join(sorted(have)) or 'none'})")
-    return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level)
+    arity = arity or 2
+    if arity != 2:
+        definition += f" (arity {arity})"
+    return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level, arity=arity)
+
+
+def _arity(t: Mapping, how: str, w: str) -> int | None:
+    """The scheme's ``arity`` (issue 12): an integer >= 2; m-ary schemes are given by mask, symbol or
+    catalogue (``rules`` are even/odd, i.e. binary; level-dependent schemes are binary)."""
+    if "arity" not in t:
+        return None
+    m = t["arity"]
+    if isinstance(m, bool) or not isinstance(m, int) or m < 2:
+        raise AnalysisError(f"{w}: arity must be an integer >= 2, not {m!r}")
+    if m != 2 and how in ("rules", "level_mask"):
+        raise AnalysisError(f"{w}: arity {m} needs the scheme as mask, symbol or catalogue "
+                            f"({how} describes binary schemes)")
+    return m
 
 
 def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue | None = None) -> Paper:

@@ -40,6 +40,9 @@ notes = "The template of `subdiv new-paper`: one example claim of every kind."
 
 # A scheme: exactly one of catalogue = "four-point" | mask + start | rules = { even, odd, first }
 #           | symbol = "(1+z)**3/(4*z**2)" | level_mask + start (level-dependent; n or h = 2^-n).
+# An m-ary scheme adds arity = 3 (mask, symbol or catalogue; a catalogue entry brings its arity):
+# kinds mask identity, sum rules, symmetry, support, eigenvalues, reproduction, norm test,
+# ck range, holder and smoothness profile then use the m-ary analyses (issue 12).
 [schemes.four-point]
 mask = ["-w", 0, "1/2 + w", 1, "1/2 + w", 0, "-w"]
 start = -3

@@ -68,12 +68,13 @@ def _ascii_map(result, js) -> list[str]:
 
 def cmd_atlas(args) -> None:
     from ..regularity.atlas import holder_atlas, parse_axis, plot_atlas
-    from .common import _emit, check_writable, scheme_from_args
+    from .common import _emit, check_writable, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 
     if args.figure:
         check_writable(args.figure, "the figure")
-    a, label = scheme_from_args(args)
+    m = scheme_arity(args)                       # m-ary families (issue 12)
+    a, label = scheme_from_args(args, arity_ok=True)
     if args.x is None or args.y is None:
         raise AnalysisError("give both axes: --x NAME=LO:HI:N --y NAME=LO:HI:N")
     xn, xlo, xhi, xN = parse_axis(args.x)
@@ -87,12 +88,12 @@ def cmd_atlas(args) -> None:
     executor = None if args.executor == "serial" else args.executor
     r = holder_atlas(a, xn, (xlo, xhi), yn, (ylo, yhi), n1=xN, n2=yN, j_levels=js, refine_levels=refine,
                      executor=executor, workers=workers, budget_seconds=budget,
-                     progress=not args.no_progress)
+                     progress=not args.no_progress, **({"arity": m} if m != 2 else {}))
     figure = plot_atlas(r, args.figure) if args.figure else None
     w, c = r.witness, r.witness["counts"]
     js = list(w["grid"]["j_levels"])
     fixed = ", ".join(f"{p}" for p in (args.param or []))
-    lines = [f"scheme: {label}" + (f"   ({fixed})" if fixed else ""),
+    lines = [f"scheme: {label}" + (f"   ({fixed})" if fixed else "") + (f"   (arity {m})" if m != 2 else ""),
              f"atlas of alpha over {xn} in [{sp.sstr(xlo)}, {sp.sstr(xhi)}] ({xN} points) x "
              f"{yn} in [{sp.sstr(ylo)}, {sp.sstr(yhi)}] ({yN} points), refine {refine}, budget {budget:g} s",
              f"samples: {c['samples']} (per level {c['per_level']}); certified {c['certified']}, "
@@ -102,7 +103,8 @@ def cmd_atlas(args) -> None:
         lines.append(f"{key}: yes {v['yes']}, no {v['no']}, undecided {v['undecided']}")
     for ex in w["exceptional"]:
         cond = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in ex["condition"].items())
-        lines.append(f"exceptional: {cond}: {ex['factors']} factors (1+z) (generic {w['generic_k'] + 1}); "
+        q = "(1+z)" if m == 2 else f"(1+...+z^{m - 1})"
+        lines.append(f"exceptional: {cond}: {ex['factors']} factors {q} (generic {w['generic_k'] + 1}); "
                      f"alpha can jump up there ({w['exceptional_samples']} samples on such sets in all)")
     gen = [s for s in r.value if not s.get("exceptional") and s["alpha_lower"] is not None]
     if gen:

@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..jsonable import exact_and_float
 from ..result import AnalysisError
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, scheme_from_args
+from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_writable, scheme_from_args
 
 
 def _fmt_set(S) -> str:
@@ -219,10 +219,12 @@ def cmd_range(args, m: int) -> None:
     from ..regularity.mary import ck_range_mary
 
     if args.figure:
-        raise AnalysisError("--figure is not available with --arity yet")
+        check_writable(args.figure, "the figure")
     a, label, head = _input(args, m)
     j = _int_arg(args.C, "--C")
     within = _parse_within(args.within)
+    if args.figure and not all(w.is_finite for w in within):
+        raise AnalysisError("--figure needs finite bounds in --within, e.g. --within=-1,1")
     Ls = [1, 2]
     r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within)
     p = r.witness["parameter"]
@@ -232,6 +234,34 @@ def cmd_range(args, m: int) -> None:
              (f"the C^{j} range is exactly {_fmt_set(r.value)}, certified on both sides" if r.witness["exact"] else
               f"undecided: {_fmt_set(r.witness['undecided'])} (decide points with `subdiv holder --C {j}`)")
              + f"   [{r.status}]"]
-    _emit(args, {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
-                 "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
-                 "status": r.status}, "\n".join(lines))
+    data = {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
+            "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
+            "status": r.status}
+    if args.figure:
+        _figure(args, a, m, p, j, within, r, label, lines, data)
+    _emit(args, data, "\n".join(lines))
+
+
+def _figure(args, a, m: int, p: str, j: int, within, r, label: str, lines: list, data: dict) -> None:
+    """``range --figure`` for an m-ary family: certified alpha enclosures at ``max(grid, 8) + 1`` points,
+    the level alpha = j and the finite ends of the C^j set (issue 12)."""
+    from ..regularity.mary import alpha_curve_mary
+    from ..report.plots import plot_alpha_curve
+
+    grid = _int_arg(args.grid, "--grid")
+    if grid < 2 or grid > 400:
+        raise AnalysisError("--grid must be between 2 and 400")
+    try:
+        budget = float(args.budget)
+    except ValueError:
+        raise AnalysisError(f"--budget must be a number, not {args.budget!r}") from None
+    curve = alpha_curve_mary(a, m, p, within=within, samples=max(grid, 8), budget_seconds=budget)
+    parts = r.value.args if isinstance(r.value, sp.Union) else (() if r.value == sp.EmptySet else (r.value,))
+    ends = [{"exact_float": float(x)} for I in parts if isinstance(I, sp.Interval)
+            for x in (I.start, I.end) if x.is_finite and x not in within]
+    try:
+        plot_alpha_curve(curve, args.figure, j=j, boundaries=ends, label=f"{label} (arity {m})")
+    except OSError as exc:
+        raise AnalysisError(f"cannot write {args.figure}: {exc.strerror or exc}") from None
+    lines.append(f"figure written to {args.figure} (alpha at {len(curve.value)} points, {curve.status})")
+    data["figure"] = args.figure

@@ -221,10 +221,12 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
 
 
 def _evaluate_task(task: tuple) -> dict[str, Any]:
-    """The picklable unit of work: ``(mask, start, names, ((name, "p/q"), ...), j_levels, budget, key)``."""
-    mask, start, names, values, j_levels, budget, key = task
-    symbol = _rebuild(mask, start, names)
-    sample = evaluate_point(symbol, {n: sp.Rational(v) for n, v in values}, j_levels, budget)
+    """The picklable unit of work: ``(mask, start, names, ((name, "p/q"), ...), j_levels, budget, key[, arity])``."""
+    mask, start, names, values, j_levels, budget, key, *m = task
+    symbol, vals = _rebuild(mask, start, names), {n: sp.Rational(v) for n, v in values}
+    from .atlas_mary import evaluate_point_mary   # m-ary families (issue 12)
+    sample = (evaluate_point_mary(symbol, vals, m[0], j_levels, budget) if m else
+              evaluate_point(symbol, vals, j_levels, budget))
     sample["key"] = key
     return sample
 
@@ -361,7 +363,7 @@ def _exceptional(symbol: LaurentSymbol) -> list[dict]:
 def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1: int = 9, n2: int = 9,
                  j_levels: Iterable[int] = DEFAULT_J_LEVELS, refine_levels: int = 1,
                  executor="local", workers: int | None = None, budget_seconds: float = 2.0,
-                 progress: bool = True) -> Result:
+                 progress: bool = True, arity: int = 2) -> Result:
     """Certified Hölder-exponent enclosures and C^j verdicts on an adaptively refined 2-D grid.
 
     Parameters
@@ -390,6 +392,9 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
         but keeps a rigorous (wider) enclosure.
     progress
         Show a tqdm bar on stderr (only when stderr is a terminal).
+    arity
+        ``m`` of an m-ary family (issue 12; samples by :mod:`analysis.regularity.atlas_mary`, factors
+        ``1+...+z^{m-1}``, ``alpha = k - log_m JSR``); default 2, the binary code path.
 
     Returns
     -------
@@ -461,13 +466,14 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
     # an axis with one point is a fixed value: 'generic' refers to the sampled set
     fixed = {p: lo for p, n, lo in ((p1, n1, lo1), (p2, n2, lo2)) if n == 1}
     region = symbol.subs(fixed) if fixed else symbol
-    generic_k = _generic_k(region)
+    from . import atlas_mary as am
+    generic_k = _generic_k(region) if arity == 2 else am.generic_k_mary(region, am.check_arity(arity))
 
     def tasks_for(keys):
         out = []
         for (i, j) in keys:
             vals = ((p1, str(coord(i, N1, lo1, hi1))), (p2, str(coord(j, N2, lo2, hi2))))
-            out.append((mask, start, pnames, vals, js, budget, (i, j)))
+            out.append((mask, start, pnames, vals, js, budget, (i, j)) + ((arity,) if arity != 2 else ()))
         return out
 
     per_level, refined_cells = [], []
@@ -527,12 +533,12 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
                                   sp.Rational(0) if N2 == 0 else (hi2 - lo2) / N2)},
         "counts": {"samples": len(rows), "certified": certified, "inconclusive": len(rows) - certified,
                    "per_level": per_level, "refined_cells": refined_cells, "verdicts": tallies},
-        "exceptional": _exceptional(region),
+        "exceptional": _exceptional(region) if arity == 2 else am.exceptional_mary(region, arity),
         "generic_k": generic_k,
         "exceptional_samples": sum(1 for r in rows if r["exceptional"]),
         "seconds": round(wall, 3),
         "task_seconds": round(sum(r.get("seconds") or 0 for r in rows), 3),
-        "executor": description,
+        "executor": description, **({"arity": arity} if arity != 2 else {}),
     }
     return Result(value=rows, status=CERTIFIED if certified == len(rows) else INCONCLUSIVE, witness=witness,
                   provenance={"method": "certified Hölder enclosures (alpha = k - log2 JSR) at exact rational "
@@ -603,7 +609,8 @@ def plot_atlas(result: Result, path, *, title: str | None = None, cmap: str = "v
     if not rows or "p1" not in grid:
         raise AnalysisError("plot_atlas needs the Result of holder_atlas")
     n1, n2 = grid["p1"]["name"], grid["p2"]["name"]
-    js = list(grid.get("j_levels", ()))
+    js, m = list(grid.get("j_levels", ())), result.witness.get("arity", 2)
+    q = "(1+z)" if m == 2 else f"(1+...+z^{m - 1})"
     x = np.array([float(r["p1"]) for r in rows])
     y = np.array([float(r["p2"]) for r in rows])
     al = np.array([_mid(r) for r in rows])
@@ -648,7 +655,7 @@ def plot_atlas(result: Result, path, *, title: str | None = None, cmap: str = "v
                         edgecolors="magenta", linewidths=1.2, zorder=3)
         mappable = mappable if mappable is not None else sc
         handles.append(Line2D([], [], color="magenta", marker="s", mfc="none", ls="",
-                              label="sample with more factors (1+z)"))
+                              label=f"sample with more factors {q}"))
     fig.colorbar(mappable, ax=ax, label="Hölder exponent α (midpoint of the certified enclosure)")
     ax.plot(x, y, "k.", ms=2.5)
     handles.append(Line2D([], [], color="k", marker=".", ls="", label="sample"))
@@ -681,7 +688,7 @@ def plot_atlas(result: Result, path, *, title: str | None = None, cmap: str = "v
             drew = True
     if drew:
         handles.append(Line2D([], [], color="magenta", ls=(0, (4, 3)), marker="*",
-                              label="more factors (1+z)"))
+                              label=f"more factors {q}"))
     ax.set_xlim(xlo - 1e-9, xhi + 1e-9) if xlo == xhi else ax.set_xlim(xlo, xhi)
     if ylo != yhi:
         ax.set_ylim(ylo, yhi)

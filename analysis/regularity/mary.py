@@ -55,7 +55,7 @@ from .convergence import NotConvergent
 iv = mpmath.iv
 
 __all__ = ["NotConvergentMary", "difference_mask_mary", "holder_exponent_mary", "smoothness_mary",
-           "power_exponent"]
+           "power_exponent", "ck_range_mary", "alpha_curve_mary"]
 
 
 class NotConvergentMary(NotConvergent):
@@ -303,3 +303,36 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
                            "exact": exact},
                   provenance={"method": "m-ary Dyn-Levin norm sets (C^j) and exact real eigenvalues of the "
                                         "transition matrices (not C^j)", "arity": m})
+
+
+def alpha_curve_mary(a: LaurentSymbol, m: int, param=None, *, within=(-1, 1), samples: int = 24,
+                     budget_seconds: float = 10.0) -> Result:
+    """Certified enclosures of alpha(p) of a one-parameter m-ary family at ``samples + 1`` equally
+    spaced rational points of ``within`` (ends included), as
+    :func:`analysis.regularity.ranges.alpha_curve` for m = 2 (for a figure and the smoothness profile).
+    A point where the exponent cannot be enclosed (e.g. not convergent) is an inconclusive row with a note.
+
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import LaurentSymbol
+    >>> t = sp.Symbol("t")
+    >>> fam = LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)") * (1 - t) + LaurentSymbol.from_expr(
+    ...     "(1+z+z**2)**3/(9*z**3)") * t                           # cubic to quadratic ternary B-spline
+    >>> [(r["p"], r["lower"]) for r in alpha_curve_mary(fam, 3, within=(0, 1), samples=1).value]
+    [(0, 3), (1, 2)]
+    """
+    from ..stationary.normset import _parameter
+
+    m = check_arity(m)
+    p = _parameter(a, param)
+    lo, hi = (sp.Rational(sp.nsimplify(w)) for w in within)
+    rows = []
+    for i in range(samples + 1):
+        q = lo + (hi - lo) * sp.Rational(i, samples)
+        try:
+            h = holder_exponent_mary(a.subs({p: q}), m, budget_seconds=budget_seconds)
+            rows.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
+        except AnalysisError as exc:
+            rows.append({"p": q, "lower": None, "upper": None, "status": INCONCLUSIVE, "note": str(exc)})
+    status = CERTIFIED if all(r["status"] == CERTIFIED for r in rows) else INCONCLUSIVE
+    return Result(value=rows, status=status, witness={"parameter": p.name, "arity": m},
+                  provenance={"method": f"holder_exponent_mary (arity {m}) at rational sample points", "arity": m})

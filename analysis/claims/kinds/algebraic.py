@@ -34,8 +34,11 @@ from __future__ import annotations
 import sympy as sp
 
 from ...algebra.factorization import polynomial_generation, polynomial_reproduction, smoothing_factor, sum_rules, symmetry
+from ...algebra.mary import (polynomial_generation_mary, polynomial_reproduction_mary, smoothing_factor_mary,
+                             sum_rules_mary, symmetry_mary)
 from ...algebra.symbol import LaurentSymbol
 from ...result import AnalysisError
+from ...stationary.mary import basic_limit_support_mary, local_eigenvalues_mary
 from ...stationary.transition import basic_limit_support, local_eigenvalues
 from ..model import Number, Verdict, exact_result
 from .base import Kind, evidence, parse_number
@@ -60,12 +63,16 @@ class MaskIdentity(Kind):
                 "symbol": "printed symbol a(z)", "rules": "{even = [...], odd = [...], first = p}",
                 "same_as": "another scheme of the file", "at": "parameter values"}
     example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
+    mary = True
 
     def check(self) -> None:
         given = [k for k in ("mask", "symbol", "rules", "same_as") if k in self.fields]
         if len(given) != 1:
             raise AnalysisError(f"{self.where}: kind 'mask identity' needs exactly one of the fields "
                                 "'mask', 'symbol', 'rules', 'same_as'")
+        if "rules" in self.fields and self.arity != 2:
+            raise AnalysisError(f"{self.where}: kind 'mask identity' with 'rules' (even/odd) is binary; "
+                                f"for arity {self.arity} give 'mask' or 'symbol'")
         self.values()
         self.printed()
 
@@ -115,6 +122,7 @@ class SumRules(Kind):
     required = {"factors": "claimed k (generic)"}
     optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values"}
     example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
+    mary = True
 
     def check(self) -> None:
         self.integer("factors")
@@ -125,14 +133,20 @@ class SumRules(Kind):
             self.scheme.values(e["at"], self.where)
 
     def evaluate(self) -> Verdict:
-        a = self.symbol()
-        f = smoothing_factor(a)
-        sr = sum_rules(a)
+        a, m = self.symbol(), self.arity
+        f = smoothing_factor(a) if m == 2 else smoothing_factor_mary(a, m)
+        sr = sum_rules(a) if m == 2 else sum_rules_mary(a, m)
         k, found = f.value, f.witness["exceptional"]
         exc_text = "; ".join(f"{_cond_text(e['condition'])}: {e['k']} factors" for e in found) or "none"
-        ev = [evidence("exact division by (1+z)", f, text=f"{f.witness['identity']}; exceptional: {exc_text}"),
-              evidence("a(1) = 2 and a(-1) = 0", sr, text=f"a(1) = {sp.sstr(sr.witness['a(1)'])}, "
-                                                          f"a(-1) = {sp.sstr(sr.witness['a(-1)'])}")]
+        if m == 2:
+            ev = [evidence("exact division by (1+z)", f, text=f"{f.witness['identity']}; exceptional: {exc_text}"),
+                  evidence("a(1) = 2 and a(-1) = 0", sr, text=f"a(1) = {sp.sstr(sr.witness['a(1)'])}, "
+                                                              f"a(-1) = {sp.sstr(sr.witness['a(-1)'])}")]
+        else:
+            ev = [evidence(f"exact division by 1+...+z^{m - 1}", f, text=f"{f.witness['identity']}; exceptional: {exc_text}"),
+                  evidence(f"a(1) = {m} and a(eps) = 0 at the other {m}-th roots of unity", sr,
+                           text=f"residue sums {', '.join(map(sp.sstr, sr.witness['residue_sums']))}"
+                                + (f"; fails: {'; '.join(sr.witness['failures'])}" if sr.witness["failures"] else ""))]
         wrong = []
         if self.get("factors") != k:
             wrong.append(f"generic k = {k}, not {self.get('factors')}")
@@ -140,11 +154,13 @@ class SumRules(Kind):
             vals = self.scheme.values(e["at"], self.where)
             hit = [x for x in found if set(map(str, x["condition"])) == set(vals)
                    and all(_same(x["condition"][s], vals[str(s)]) for s in x["condition"])]
-            kk = hit[0]["k"] if hit else smoothing_factor(a.subs(vals), exceptional=False).value
+            kk = hit[0]["k"] if hit else (smoothing_factor(a.subs(vals), exceptional=False) if m == 2 else
+                                          smoothing_factor_mary(a.subs(vals), m, exceptional=False)).value
             if kk != e["factors"]:
                 wrong.append(f"at {_cond_text(vals)}: k = {kk}, not {e['factors']}")
         nums = [Number("factors", k), Number("exceptional values", len(found))]
-        corrected = f"a(z) = ((1+z)/2)^{k} b(z) for generic parameters (sum rules of order {k}); exceptional: {exc_text}"
+        q = "(1+z)/2" if m == 2 else f"(1+...+z^{m - 1})/{m}"
+        corrected = f"a(z) = ({q})^{k} b(z) for generic parameters (sum rules of order {k}); exceptional: {exc_text}"
         if wrong:
             return self.refuted("; ".join(wrong), corrected=corrected, evidence=ev, numbers=nums)
         claimed = len(self.get("exceptional", []))
@@ -162,6 +178,7 @@ class Symmetry(Kind):
     optional = {"symmetric": "true (default) or false", "centre": "claimed centre c/2 (our indexing)",
                 "at": "parameter values"}
     example = "symmetric = true\ncentre = 0"
+    mary = True
 
     def check(self) -> None:
         self.values()
@@ -170,7 +187,7 @@ class Symmetry(Kind):
             raise AnalysisError(f"{self.where}: field 'symmetric' must be true or false")
 
     def evaluate(self) -> Verdict:
-        r = symmetry(self.symbol())
+        r = symmetry(self.symbol()) if self.arity == 2 else symmetry_mary(self.symbol(), self.arity)
         want, centre = self.get("symmetric", True), self.number("centre")
         ev = [evidence("exact comparison a_i = a_(start+end-i)", r,
                        text=f"centre {sp.sstr(r.witness['centre'])} ({r.witness['kind']})")]
@@ -192,6 +209,7 @@ class Support(Kind):
     required = {"support": "[s, e]"}
     optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values"}
     example = 'support = [-3, 3]\nof = "limit function"'
+    mary = True
 
     OF = ("mask", "limit function", "limit function, centred")
 
@@ -207,7 +225,7 @@ class Support(Kind):
     def evaluate(self) -> Verdict:
         a = self.symbol()
         of = self.get("of", "mask")
-        r = basic_limit_support(a)
+        r = basic_limit_support(a) if self.arity == 2 else basic_limit_support_mary(a, self.arity)
         true = r.witness["centred"] if of.endswith("centred") else r.value
         if of == "mask":
             true = (a.start, a.end)
@@ -232,6 +250,7 @@ class Eigenvalues(Kind):
     optional = {"complete": "true: the list is the whole spectrum", "window": "[lo, hi] of the local matrix",
                 "at": "parameter values"}
     example = 'eigenvalues = ["1", "1/2", "1/4", "1/4", "1/8"]\ncomplete = true\nat = { w = "1/16" }'
+    mary = True
 
     def check(self) -> None:
         self.values()
@@ -247,7 +266,8 @@ class Eigenvalues(Kind):
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
-        r = local_eigenvalues(a, window=self.get("window"))
+        r = (local_eigenvalues(a, window=self.get("window")) if self.arity == 2 else
+             local_eigenvalues_mary(a, self.arity, window=self.get("window")))
         spectrum = [lam for lam, m in r.value.items() for _ in range(m)]
         rest, missing = list(spectrum), []
         for c in self.claimed:
@@ -284,6 +304,7 @@ class Reproduction(Kind):
     optional = {"generation": "claimed generation degree", "reproduction": "claimed reproduction degree",
                 "at": "parameter values"}
     example = "generation = 3\nreproduction = 3\nat = { w = \"1/16\" }"
+    mary = True
 
     def check(self) -> None:
         self.values()
@@ -293,7 +314,9 @@ class Reproduction(Kind):
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
-        g, r = polynomial_generation(a), polynomial_reproduction(a)
+        m = self.arity
+        g, r = ((polynomial_generation(a), polynomial_reproduction(a)) if m == 2 else
+                (polynomial_generation_mary(a, m), polynomial_reproduction_mary(a, m)))
         higher = "; ".join(f"{_cond_text(h['condition'])}: degree {h['degree']}" for h in r.witness["higher"])
         ev = [evidence("sum rules (generation)", g, text=f"degree {g.value}"),
               evidence("Conti-Hormann conditions (reproduction)", r,

@@ -38,7 +38,7 @@ from ...algebra.symbol import LaurentSymbol, parse_coefficient
 from ...result import AnalysisError, Result
 from ..model import Evidence, Verdict, certified, inconclusive, refuted
 
-__all__ = ["Domain", "SchemeSpec", "Kind", "parse_number", "parse_interval", "interval_text", "evidence"]
+__all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence"]
 
 
 def parse_number(x, what: str = "number") -> sp.Expr:
@@ -145,6 +145,8 @@ class SchemeSpec:
     notes: str = ""
     #: a level-dependent scheme (:class:`analysis.levels.level_dependent.LevelDependentScheme`)
     level: Any = None
+    #: the arity m of ``(S_a f)_i = sum_j a_{i-mj} f_j`` (issue 12; 2 for binary schemes)
+    arity: int = 2
 
     @property
     def params(self) -> tuple:
@@ -173,6 +175,11 @@ class SchemeSpec:
         return self.symbol.subs(values) if values else self.symbol
 
 
+#: the kinds available for m-ary schemes (their ``mary = True``; issue 12)
+MARY_KINDS = ("mask identity", "sum rules", "symmetry", "support", "eigenvalues", "reproduction", "norm test", "ck range", "holder",
+              "smoothness profile")
+
+
 def evidence(title: str, result: Result | None = None, text: str = "", table=None) -> Evidence:
     return Evidence(title, text=text, result=result, table=table)
 
@@ -188,6 +195,8 @@ class Kind:
     uses_scheme: ClassVar[bool] = True
     #: does the kind speak of a level-dependent scheme (``level_mask``) rather than a stationary one?
     level_scheme: ClassVar[bool] = False
+    #: can the kind speak of an m-ary scheme (arity != 2)?  (issue 12; the others refuse at load time)
+    mary: ClassVar[bool] = False
     #: example fields (TOML lines) for the template of ``subdiv new-paper``
     example: ClassVar[str] = ""
     summary: ClassVar[str] = ""
@@ -220,6 +229,9 @@ class Kind:
                 raise AnalysisError(f"{where}: kind {self.name!r} needs a "
                                     + ("level-dependent scheme (level_mask)" if self.level_scheme else
                                        f"stationary scheme; {s!r} is level-dependent"))
+            if self.scheme.arity != 2 and not self.mary:
+                raise AnalysisError(f"{where}: kind {self.name!r} is not available for arity {self.scheme.arity} "
+                                    f"(scheme {s!r}); the m-ary kinds are: {', '.join(MARY_KINDS)}")
         self.check()
 
     # ------------------------------------------------------------------ helpers for kinds
@@ -229,6 +241,11 @@ class Kind:
     def shown_kind(self) -> str:
         """The kind shown in reports and verdict files (the kind's name)."""
         return self.name
+
+    @property
+    def arity(self) -> int:
+        """The arity of the claim's scheme (2 without a scheme)."""
+        return self.scheme.arity if self.scheme is not None else 2
 
     def get(self, key: str, default=None):
         return self.fields.get(key, default)

@@ -136,6 +136,7 @@ class SmoothnessProfile(Kind):
                 "grid": "grid intervals per C^j search (default 8)", "samples": "alpha sample intervals (default 8)",
                 "tol": "boundary bracket width (default 1e-8)", "at": "values of the other parameters"}
     example = 'within = "(1/32, 1/8)"\nclaimed = { j = 1, interval = "(1/16, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
+    mary = True
 
     def check(self) -> None:
         self.values()
@@ -159,6 +160,10 @@ class SmoothnessProfile(Kind):
         return dom.lo, dom.hi
 
     def evaluate(self) -> Verdict:
+        if self.arity != 2:                       # issue 12: ck_range_mary for each j
+            from .mary import profile_verdict
+
+            return profile_verdict(self)
         a = self.symbol()
         p = self.single_parameter()
         lo, hi = self._within()

@@ -37,6 +37,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...regularity.holder import holder_exponent
+from ...regularity.mary import holder_exponent_mary
 from ...regularity.ranges import verify_smoothness_interval
 from ...regularity.sobolev import sobolev_exponent
 from ...result import CERTIFIED, REFUTED, AnalysisError, Result
@@ -130,8 +131,11 @@ class Holder(_ValueClaim):
     summary = "Hölder exponent at fixed parameters: value (± tolerance) or bounds, certified enclosure"
     quantity = "alpha"
     example = 'at = { w = "1/16" }\nvalue = 2'
+    mary = True
 
     def compute(self, a) -> Result:
+        if self.arity != 2:                       # alpha = k - log_m JSR (issue 12)
+            return holder_exponent_mary(a, self.arity, budget_seconds=float(self.number("budget") or 20))
         return holder_exponent(a, budget_seconds=float(self.number("budget") or 20))
 
 
@@ -154,6 +158,7 @@ class NormTest(Kind):
     summary = "the L-step norm test proves C^j on the claimed interval (exact norm set)"
     required = {"j": "smoothness C^j", "L": "number of steps", "interval": "claimed parameter interval"}
     example = 'j = 1\nL = 2\ninterval = "(0, 1/8)"'
+    mary = True
 
     def check(self) -> None:
         self.integer("j"), self.integer("L", 1), self.interval("interval")
@@ -166,11 +171,13 @@ class NormTest(Kind):
         lo, hi, lc, hc = self.interval("interval")
         dom = self.scheme.domains.get(p.name)
         within = (dom.lo, dom.hi) if dom is not None else (-sp.oo, sp.oo)
-        r = norm_solution_set(a, j + 1, L, p, within=within)
+        m = self.arity
+        r = (norm_solution_set(a, j + 1, L, p, within=within) if m == 2 else
+             norm_solution_set(a, j + 1, L, p, within=within, arity=m))
         S = r.value
         ok = contains_interval(S, lo, hi, closed=lc or hc)
         claim = interval_text(lo, hi, lc, hc)
-        ev = [evidence(f"exact set where ||(1/2 S_(a_{j + 1}))^{L}||_inf < 1", r, text=f"{p.name} in {S}")]
+        ev = [evidence(f"exact set where ||(1/{m} S_(a_{j + 1}))^{L}||_inf < 1", r, text=f"{p.name} in {S}")]
         nums = [Number("norm set", str(S))]
         if ok:
             return self.certified(f"the {L}-step norm test proves C^{j} for {p.name} in {claim}: it holds exactly on {S}",
@@ -187,12 +194,17 @@ class CkRange(Kind):
     required = {"j": "smoothness C^j", "interval": "claimed open parameter interval"}
     optional = {"at": "values of the other parameters"}
     example = 'j = 1\ninterval = "(0, 1/8)"'
+    mary = True
 
     def check(self) -> None:
         self.integer("j"), self.interval("interval")
         self.values()
 
     def evaluate(self) -> Verdict:
+        if self.arity != 2:                       # issue 12
+            from .mary import ck_range_verdict
+
+            return ck_range_verdict(self)
         a = self.symbol()
         p = self.single_parameter()
         j = self.get("j")
