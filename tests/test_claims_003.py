@@ -1,10 +1,9 @@
 """Seed 003's proof-check claims: verdicts computed by the engine agree with independent
-recomputations of the key facts, and with the reviewed golden file (reports/verdicts.json)."""
+recomputations of the key facts, and with the reviewed golden file (papers/seed003/verdicts.json)."""
 
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 import sympy as sp
@@ -15,7 +14,6 @@ from papers.seed003.derivations import _stationary
 from papers.seed003.transcription import LEMMA_3_4_D
 from schemes import seed003 as S
 
-REPORTS = Path(__file__).resolve().parents[1] / "reports"
 Z, W = sp.Symbol("z"), S.OMEGA
 
 
@@ -49,8 +47,11 @@ def test_partial_covers_are_inconclusive_with_certified_pieces(evaluated, cid):
 
 
 def test_matches_golden_file(evaluated):
-    """`subdiv check 003` on fresh verdicts: statuses and key numbers as reviewed."""
-    golden = json.loads((REPORTS / "verdicts.json").read_text(encoding="utf-8"))
+    """`subdiv check 003` on fresh verdicts: statuses and key numbers as reviewed (paper 003's part
+    of the CI regression, ``tests/test_report.py::test_committed_verdicts_are_reproduced``)."""
+    from analysis.claims import golden_path
+
+    golden = json.loads(golden_path(PAPER).read_text(encoding="utf-8"))
     fresh = verdicts_json({"003": list(evaluated.values())})
     assert compare_verdicts(golden, fresh, papers_=["003"]) == []
 
