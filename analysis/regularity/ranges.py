@@ -37,6 +37,7 @@ Trans. Comput. 66 (2017).
 from __future__ import annotations
 
 import sympy as sp
+from sympy.polys.matrices import DomainMatrix
 
 import math
 from typing import Sequence
@@ -72,8 +73,10 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
     theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
     out = []
     for sgn in (1, -1):
-        D = sp.Poly(sp.together((P - sgn * theta * sp.eye(P.shape[0])).det(method="berkowitz")), p)
-        num = sp.Poly(sp.fraction(sp.together(D.as_expr()))[0], p, domain=sp.QQ)
+        # the determinant over the polynomial ring (or field) of p: exact, and far faster than a
+        # symbolic Berkowitz determinant of expression entries
+        M = DomainMatrix.from_Matrix(P - sgn * theta * sp.eye(P.shape[0]))
+        num = sp.Poly(sp.fraction(sp.together(M.domain.to_sympy(M.det())))[0], p, domain=sp.QQ)
         if num.is_zero or num.degree() < 1:
             continue
         for r in RealAlgebraic.roots_of(num):

@@ -52,31 +52,10 @@ _L31_CORR = {"iii": ("1/4 + 3 omega <= beta_2^n <= (1/4)/c(alpha/2^n) + 3 omega"
 
 
 # --------------------------------------------------------------------------------------------
-# printed statements quoted by the claims
+# the definition items of the lemmas
 # --------------------------------------------------------------------------------------------
 
-#: Sect. 3.3, inequalities (1)-(6); Lemma 3.1 and Lemma 3.2, item by item.
-_INEQ_PRINTED = {
-    1: r"\frac{s(x)}{s(y)} \geq \frac{x}{y}, \quad 0 < x \leq y < \frac{\pi}{2},",
-    2: r"\theta \csc(\theta) < t \csc(t), \quad 0 < \theta < t < \frac{\pi}{2}",
-    3: r"c(x) < \frac{s(x)}{x}, \quad 0 < x < \frac{\pi}{2}.",
-    4: r"\frac{s'(x)}{s'(y)} \leq \frac{x}{y}, \quad 0 < x \leq y, \quad x, y \in \mathbb{R}^+ \setminus n'\pi,",
-    5: r"\theta \operatorname{csch}(\theta) > t \operatorname{csch}(t), \quad 0 < \theta < t, \quad \theta, t \in "
-       r"\mathbb{R}^+ \setminus n'\pi",
-    6: r"c'(x) > \frac{s'(x)}{x}, \quad x \in \mathbb{R}^+ \setminus n'\pi.",
-}
-_L31_PRINTED = {
-    "i": r"\beta_0^n = -7\omega,", "ii": r"\frac{3}{4} + 9\omega \leq \beta_1^n \leq \frac{3}{4} \frac{1}{c(\frac{\alpha}{2^n})} + 9\omega,",
-    "iii": r"\frac{1}{4} + 3\omega \leq \beta_2^n \leq \frac{1}{4} \frac{1}{c'(\frac{\alpha}{2^n})} + 3\omega,",
-    "iv": r"\beta_3^n = -5\omega,", "v": r"\gamma_0^n = -7\omega,",
-    "vi": r"\frac{3}{4} + 9\omega \geq \gamma_1^n > \frac{3}{4} \frac{1}{c'(\frac{\alpha}{2^n})} + 9\omega,",
-    "vii": r"\frac{1}{4} + 3\omega \geq \gamma_2^n > \frac{1}{4} \frac{1}{c(\frac{\alpha}{2^n})} + 3\omega,",
-    "viii": r"\gamma_3^n = -5\omega."}
-_L32_PRINTED = {
-    "i": r"|\beta_0^n + 7\omega| = 0,", "ii": r"|\beta_1^n - \frac{3}{4} - 9\omega| \leq C_1 \frac{1}{2^{2n}},",
-    "iii": r"|\beta_2^n - \frac{1}{4} - 3\omega| \leq C_2 \frac{1}{2^{2n}},", "iv": r"|\beta_3^n + 5\omega| = 0,",
-    "v": r"|\gamma_0^n + 7\omega| = 0,", "vi": r"|\gamma_1^n - \frac{3}{4} - 9\omega| < C_3 \frac{1}{2^{2n}},",
-    "vii": r"|\gamma_2^n - \frac{1}{4} - 3\omega| < C_4 \frac{1}{2^{2n}},", "viii": r"|\gamma_3^n + 5\omega| = 0,"}
+# (the statements as printed are in paper.toml)
 #: the items of Lemmas 3.1 and 3.2 that are definitions (checked as identities).
 _DEF = {"i": (BETA[0], -7 * OMEGA, "beta_0^n = -7 omega"), "iv": (BETA[3], -5 * OMEGA, "beta_3^n = -5 omega"),
         "v": (GAMMA[0], -7 * OMEGA, "gamma_0^n = -7 omega"), "viii": (GAMMA[3], -5 * OMEGA, "gamma_3^n = -5 omega")}

@@ -48,7 +48,10 @@ def _rule_3_2():
     return C.refuted("(3.2) is not the degree-6 B-spline", "see evidence", evidence=ev)
 
 
-def _displacements(printed: dict, what: str):
+def _displacements(what: str):
+    """(3.3) or (3.4): the printed displacement vectors vs Q - R from (3.1), (3.2)."""
+    from .transcription import _PRINTED_3_3, _PRINTED_3_4
+    printed = {"(3.3)": _PRINTED_3_3, "(3.4)": _PRINTED_3_4}[what]
     built = construction()
     rows, ok = [], True
     for name, (garbled, stencil, first) in printed.items():
@@ -134,7 +137,13 @@ def _matrix_3_6():
 
 
 # -------------------------------------------------------------------------- (3.7), (3.8), remarks
-def _subscheme(printed: dict, table: dict, subst: dict, slug: str, name: str):
+def _subscheme(which: str):
+    """(3.7) or (3.8): the printed sub-scheme coefficients vs (3.6) at the substitution."""
+    from schemes.seed004 import L_3_8, T_3_7
+    from .transcription import _PRINTED_3_7, _PRINTED_3_8
+    printed, table, subst, slug, name = {
+        "(3.7)": (_PRINTED_3_7, T_3_7, SUBSTITUTION_3_7, "seed004-t-nu", "t"),
+        "(3.8)": (_PRINTED_3_8, L_3_8, SUBSTITUTION_3_8, "seed004-l-mu", "l")}[which]
     derived = _from(RULE_3_6).subs(subst)
     built = construction()
     E = built["P_{2i}"].subs(subst)

@@ -8,7 +8,7 @@ import sympy as sp
 
 from analysis import claims as C
 from analysis.algebra.algebraic import sign as _sign
-from schemes.seed004 import NU, OMEGA, RULE_3_6, _from
+from schemes.seed004 import MU, NU, OMEGA, RULE_3_6, _from
 
 from .derivations import (_R_MINUS, _R_PLUS, _approx, _exact_eq, _iset_numbers, _lam5_set, _norm_sets, _s, _sym,
                           _true_ck, inequality_sets)
@@ -40,8 +40,12 @@ def _lemma_steps(L: int):
     return C.refuted(f"the nonzero points are P_{s} .. P_{e}", f"P_{s}^{L} .. P_{e}^{L}", evidence=ev, numbers=nums)
 
 
-def _support(slug: str, width_claim: int, name: str, fig_params):
+def _support(slug: str, width_claim: int, name: str, fig_params=()):
+    """Support width of the basic limit function; ``fig_params`` = [[label, {"mu": "1/10", ...}], ...]
+    (the members plotted)."""
     from analysis.stationary.transition import basic_limit_support
+    names = {"mu": MU, "nu": NU, "omega": OMEGA}
+    fig_params = [(lab, {names[k]: sp.Rational(v) for k, v in vals.items()}) for lab, vals in fig_params]
     a = _sym(slug)
     r = basic_limit_support(a)
     w = r.witness["width"]

@@ -3,7 +3,8 @@
 
 The readings of the rules (3.1)-(3.8) themselves are the catalogue's (:mod:`schemes.seed004`);
 here are the printed displacements (3.3)-(3.4), the coefficient lists of (3.6)-(3.8), the 10x10
-matrix after (3.6) and the boundary rules (3.9)-(3.10).
+matrix after (3.6) and the boundary rules (3.9)-(3.10) (the statements as printed are in
+``paper.toml``).
 
 Examples
 --------
@@ -21,8 +22,6 @@ from schemes.seed004 import MU, NU, OMEGA, RULE_3_3
 
 #: the Greek letters of the extracted text
 _GREEK = {"μ": MU, "ν": NU, "ω": OMEGA}
-_SIGNS_LOST = ("The extracted text lost every minus sign and fraction bar ('7128' is 7/128 or "
-               "-7/128); ")
 
 
 # -------------------------------------------------------------------------- (3.3), (3.4)
@@ -97,17 +96,4 @@ PRINTED_END_RULES = {
     "P2n-1": [("7ω", "n-3"), ("21μ+7ν+7ω5", "n-2"), ("42μ+14ν35ω+14", "n-1"), ("21μ+7ν+21ω+91", "n")],
     "P2n": [("7μ", "n-3"), ("21μ7ν7ω+5", "n-2"), ("42μ42ν+35ω42", "n-1"), ("21μ7ν21ω+165", "n")],
     "P2n+1": [("21μ", "n-3"), ("35μ21ν+7ω+7", "n-2"), ("7μ+42ν14ω110", "n-1"), ("7μ21ν+7ω+231", "n")],
-}
-
-_END_STATEMENT = {
-    "P0": "P0k+1=1128[(21μ+7ν+21ω+91)P0k+(42+42μ14ν35ω)P1k+(21μ+7ν+7ω5)P2k+7ωP3k]",
-    "P1": "P1k+1=1128[(7μ+21ν7ω+25)P0k+(7μ42ν+14ω+110)P1k+(35μ+21ν7ω7)P2k+21μP3k]",
-    "P2": "P2k+1=1128[(7μ+21ν7)P0k+(14μ35ν+21ω+105)P1k+(7μ+7ν35ω+35)P2k+(7ν+7ω5)P3k+7ωP4k]",
-    "P3": "P3k+1=1128[(7ν+21ω5)P0k+(7μ+7ν42ω+35)P1k+(7μ35ν+21ω+105)P2k+(35μ+21ν7)P3k+21μP4k]",
-    "P2n-4": "P2n4k+1=1128[21μPn4k+(35μ+21ν7)Pn3k+(7μ35ν+21ω+105)Pn2k+(7μ+7ν42ω+35)Pn1k+(7ν+7ω5)Pnk]",
-    "P2n-3": "P2n3k+1=1128[7ωPn4k+(7ν+7ω5)Pn3k+(7μ+7ν35ω+35)×Pn2k+(14μ35ν+21ω+105)Pn1k+(7μ+21ν7)Pnk]",
-    "P2n-2": "P2n2k+1=1128[21μPn3k+(35μ+21ν7ω7)Pn2k+(7μ42ν+14ω+110)Pn1k+(7μ+21ν7ω+25)Pnk]",
-    "P2n-1": "P2n1k+1=1128[7ωPn3k+(21μ+7ν+7ω5)Pn2k+(42μ+14ν35ω+14)Pn1k+(21μ+7ν+21ω+91)Pnk]",
-    "P2n": "P2nk+1=1128[7μPn3k+(21μ7ν7ω+5)Pn2k+(42μ42ν+35ω42)Pn1k+(21μ7ν21ω+165)Pnk]",
-    "P2n+1": "P2n+1k+1=1128[21μPn3k+(35μ21ν+7ω+7)Pn2k+(7μ+42ν14ω110)Pn1k+(7μ21ν+7ω+231)Pnk]",
 }

@@ -102,13 +102,16 @@ class Python(Kind):
     summary = "a bespoke Python evaluator \"package.module:function\" returning a Verdict"
     uses_scheme = False
     required = {"evaluator": "\"package.module:function\""}
-    optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")"}
+    optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")",
+                "args": "positional arguments of the evaluator (a list of TOML values; default none)"}
     example = 'evaluator = "papers.seed000.claims:_v_eta"'
 
     def check(self) -> None:
         ev = self.get("evaluator")
         if not isinstance(ev, str) or ev.count(":") != 1:
             raise AnalysisError(f"{self.where}: evaluator must be \"package.module:function\", not {ev!r}")
+        if not isinstance(self.get("args", []), list):
+            raise AnalysisError(f"{self.where}: args must be a list, e.g. args = [1, \"P0\"]")
         self.function()
 
     def shown_kind(self) -> str:
@@ -126,7 +129,7 @@ class Python(Kind):
         return f
 
     def evaluate(self) -> Verdict:
-        v = self.function()()
+        v = self.function()(*self.get("args", []))
         if not isinstance(v, Verdict):
             raise TypeError(f"{self.get('evaluator')} returned {type(v).__name__}, not a Verdict")
         return v

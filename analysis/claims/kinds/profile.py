@@ -5,7 +5,9 @@ For ``j = 0, 1, ...`` up to the largest ``j`` with a non-empty set, the C^j set 
 in ``within`` (:func:`analysis.regularity.ranges.ck_parameter_set`: every boundary bracketed by
 certified verdicts on both sides, exact where an eigenvalue of a spectrum-maximizing product
 crosses ``2^(k-j)``); the largest Hölder exponent over the sample points and where it is
-attained, with its certified enclosure at that point; beside the claimed range (proven or
+attained, with its certified enclosure at that point; an exceptional parameter value (more
+smoothing factors, e.g. a B-spline member) outside every run of a C^j set is certified at the point
+and listed as an isolated point of that set (its alpha joins the samples); beside the claimed range (proven or
 refuted by :func:`analysis.regularity.ranges.verify_smoothness_interval`) and which C^j set the
 printed interval actually is.
 
@@ -23,8 +25,10 @@ Examples
 >>> w = sp.Symbol("w")
 >>> a = LaurentSymbol.from_mask([w, sp.Rational(1, 2) - w, sp.Rational(1, 2) - w, w], start=-2) * 2
 >>> v = SmoothnessProfile({"within": "(0, 1/4)", "grid": 4, "samples": 4}, {"s": SchemeSpec("s", a)}, "x").evaluate()
->>> v.label, v.numbers[0].name
-('CERTIFIED TRUE', 'largest j')
+>>> v.label, v.numbers[0].name, v.numbers[0].value
+('INCONCLUSIVE', 'largest j', 1)
+>>> [(n.name, n.value) for n in v.numbers if "isolated" in n.name]   # w = 1/8: 3 smoothing factors
+[('C^1 isolated point', 1/8)]
 
 Algorithm
 ---------
@@ -45,6 +49,7 @@ import sympy as sp
 
 from ...algebra.algebraic import RealAlgebraic
 from ...algebra.factorization import smoothing_factor
+from ...regularity.holder import holder_exponent, smoothness
 from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
 from ...result import CERTIFIED, REFUTED, AnalysisError
 from ..model import Number, Verdict
@@ -120,6 +125,18 @@ def _run_contains(run: dict, lo, hi) -> bool:
     return _ra(_value(run["left"])).compare(_ra(lo)) <= 0 and _ra(hi).compare(_ra(_value(run["right"]))) <= 0
 
 
+def _exceptional(a, p, lo, hi) -> dict:
+    """Rational parameter values in (lo, hi) where the symbol has more smoothing factors: value -> factors."""
+    w = smoothing_factor(a, exceptional=True).witness.get("exceptional", [])
+    out = {}
+    for e in w:
+        cond = e.get("condition", {})
+        q = cond.get(p) if len(cond) == 1 else None
+        if q is not None and sp.sympify(q).is_Rational and lo < q < hi:
+            out[sp.Rational(q)] = e["k"]
+    return out
+
+
 def _short(b: dict) -> str:
     v = _value(b)
     return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
@@ -169,12 +186,26 @@ class SmoothnessProfile(Kind):
         lo, hi = self._within()
         grid, tol = self.get("grid", 8), float(self.number("tol") or 1e-8)
         k = smoothing_factor(a, exceptional=False).value
-        max_j = self.get("max_j", max(k - 1, 0))
-        rows, ev, nums, all_cert, sets = [], [], [], True, {}
+        exc = _exceptional(a, p, lo, hi)
+        max_j = self.get("max_j", max(max([k, *exc.values()]) - 1, 0))
+        rows, ev, nums, all_cert, sets, points = [], [], [], True, {}, {}
         for j in range(0, max_j + 1):
             r = ck_parameter_set(a, j, p, within=(lo, hi), grid=grid, tol=tol)
+            # a grid point at an exceptional value (more smoothing factors) gives a run that bisection
+            # shrinks onto it: that run is the isolated point
+            degenerate = [q for q in exc for x in r.value if "bracket" in x["left"] and "bracket" in x["right"]
+                          and _end_matches(x["left"], q) and _end_matches(x["right"], q)]
+            if degenerate:
+                r.value[:] = [x for x in r.value if not any(_end_matches(x["left"], q) and _end_matches(x["right"], q)
+                                                            for q in degenerate)]
             sets[j] = r
-            runs = " ∪ ".join(f"({boundary_text(x['left'])}, {boundary_text(x['right'])})" for x in r.value) or "empty"
+            # exceptional values outside every run: isolated C^j points (certified at the point)
+            iso = [q for q in exc if q in degenerate or (not any(_run_contains(x, q, q) for x in r.value)
+                                                          and smoothness(a.subs({p: q}), j).value is True)]
+            points[j] = iso
+            runs = " ∪ ".join([f"({boundary_text(x['left'])}, {boundary_text(x['right'])})" for x in r.value]
+                              + [f"{{{sp.sstr(q)}}} (isolated: exceptional value with {exc[q]} smoothing factors, "
+                                 "certified)" for q in iso]) or "empty"
             proven = r.status == CERTIFIED
             all_cert &= proven
             rows.append((f"C^{j}", runs, "certified" if proven else "boundaries certified, interior sampled"
@@ -186,18 +217,27 @@ class SmoothnessProfile(Kind):
                     nums.append(Number(f"C^{j} run {i + 1} {side}", sp.sstr(v) if v is not None else
                                        float((b["bracket"][0] + b["bracket"][1]) / 2),
                                        tol=0 if v is not None else 10 * tol))
-            if not r.value:
+            nums += [Number(f"C^{j} isolated point", q) for q in iso]
+            if not r.value and not iso:
                 break
-        largest = max([j for j, r in sets.items() if r.value], default=-1)
+        largest = max([j for j, r in sets.items() if r.value or points[j]], default=-1)
         ev.append(evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)}", table=(("j", "set", "status"), *rows),
                            result=sets[0] if all_cert else None,
-                           text=f"{k} generic smoothing factors; largest j with a non-empty set: {largest}"))
+                           text=f"{k} generic smoothing factors" + (
+                               "; exceptional values: " + ", ".join(f"{p.name} = {sp.sstr(q)} ({m} factors)"
+                                                                   for q, m in exc.items()) if exc else "")
+                           + f"; largest j with a non-empty set: {largest}"))
         curve = alpha_curve(a, p, within=(lo, hi), samples=self.get("samples", 8))
+        if any(points.values()):  # an isolated point of a C^j set: its alpha belongs beside the samples
+            for q in sorted({q for v in points.values() for q in v} - {x["p"] for x in curve.value}):
+                h = holder_exponent(a.subs({p: q}))
+                curve.value.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
         best = max((x for x in curve.value if x["lower"] is not None), key=lambda x: x["lower"], default=None)
         alpha_line = "no certified alpha"
         if best is not None:
             alo, ahi = sp.Rational(best["lower"]), sp.Rational(best["upper"])
-            alpha_line = (f"largest alpha at the {len(curve.value)} sample points: {p.name} = {sp.sstr(best['p'])}, "
+            alpha_line = (f"largest alpha at the {len(curve.value)} sample points"
+                          f"{' (with the isolated C^j points)' if any(points.values()) else ''}: {p.name} = {sp.sstr(best['p'])}, "
                           f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
                           "the maximum over the interval is sampled, not certified)")
             nums += [Number("alpha max (sampled) at", best["p"]),
