@@ -185,7 +185,7 @@ def profile_verdict(kind) -> Verdict:
     r = sets.get(cj)
     if r is None or not (bool(clo >= lo) and bool(chi <= hi)):
         r = _range(kind, a, p, cj, clo, chi)
-    S, V = r.value.intersect(sp.Interval.open(clo, chi)), r.witness["not_Cj"].intersect(sp.Interval.open(clo, chi))
+    V = r.witness["not_Cj"].intersect(sp.Interval.open(clo, chi))
     inside = sp.Interval.open(clo, chi).is_subset(r.value)
     exact_set = r.witness["exact"] and r.value == sp.Interval.open(clo, chi)
     which = (f"the printed interval {interval_text(clo, chi)} is the C^{cj} set" if exact_set else
