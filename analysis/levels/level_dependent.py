@@ -61,7 +61,6 @@ IEEE Trans. Comput. 66 (2017) 1281-1292.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any, Mapping, Sequence

@@ -33,14 +33,13 @@ polynomial reproduction*, J. Comput. Appl. Math. 236 (2011) 543-556.
 
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping, Sequence
 
 import numpy as np
 import sympy as sp
 
 from .bounds import _exact_zero
-from .level_dependent import H, LevelDependentScheme, _ball, _env_values, _to_ball, entire_form, workprec
+from .level_dependent import H, LevelDependentScheme, _ball, _env_values, _to_ball, workprec
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, AnalysisError, Result
 
 _Z = sp.Symbol("z")

@@ -61,7 +61,7 @@ import sympy as sp
 
 from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _residue_groups, ball_to_interval,
                      coefficient_differences, leading_asymptotics, taylor_models, workprec)
-from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
+from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 
 

@@ -41,7 +41,7 @@ M. F. Hassan, I. P. Ivrissimitzis, N. A. Dodgson, M. A. Sabin, Comput. Aided Geo
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+from typing import Sequence
 
 import mpmath
 import sympy as sp

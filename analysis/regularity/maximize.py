@@ -56,7 +56,6 @@ import itertools
 import math
 import time
 from fractions import Fraction
-from typing import Any, Sequence
 
 import numpy as np
 import sympy as sp

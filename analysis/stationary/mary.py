@@ -48,7 +48,7 @@ from __future__ import annotations
 
 from fractions import Fraction
 from math import lcm
-from typing import Any, Sequence
+from typing import Sequence
 
 import numpy as np
 import sympy as sp
