@@ -6,3 +6,15 @@ A paper folder's ``__init__.py`` defines ``PAPER`` (:class:`analysis.claims.Pape
 :func:`analysis.claims.papers` finds every such folder. Layering: a paper may import the whole
 engine (``analysis``, except :mod:`analysis.cli`) and the catalogue (``schemes``).
 """
+
+from pathlib import Path
+
+
+def load_bundled(init_file: str):
+    """The ``PAPER`` of a bundled paper folder: its ``paper.toml`` (beside ``init_file``), with
+    schemes given by catalogue name resolved in :mod:`schemes` (the engine may not import the
+    catalogue, so the paper supplies the lookup)."""
+    import schemes
+    from analysis.claims.paperfile import load_paper
+
+    return load_paper(Path(init_file).with_name("paper.toml"), catalogue=schemes.get)

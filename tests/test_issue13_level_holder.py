@@ -85,3 +85,19 @@ def test_frequencies_from_inline_symbol_with_parameter_value():
     r = exponential_frequencies(s)
     assert r.status == "certified"
     assert set(r.value["generated"]) == {0, sp.acosh(3), -sp.acosh(3)}
+
+
+def test_holder_takes_a_level_dependent_catalogue_name(capsys):
+    """`subdiv holder --scheme exp-chaikin-trig` (a name of the level-dependent catalogue): the arity
+    lookup of the m-ary input (issue 12) must not reject it as an unknown stationary scheme."""
+    import json
+
+    from analysis.cli import main
+
+    assert main(["holder", "--scheme", "exp-chaikin-trig", "--param", "t=1", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    # the exponential Chaikin scheme (degree 2) is C^1: certified through the catalogue name as inline
+    assert data["level_dependent"] is True
+    assert data["smoothness"]["value"] == 1 and data["smoothness"]["status"] == "certified"
+    assert main(["holder", "--scheme", "exp-chaikin-trig", "--arity", "3", "--param", "t=1"]) == 2
+    assert "arity 2" in capsys.readouterr().err

@@ -138,25 +138,39 @@ def smoothing_factor(a: LaurentSymbol, *, exceptional: bool = True, _depth: int 
     k, b = _generic_k(a)
     cases = []
     if exceptional and a.params and _depth < 4:
-        rem = b(-1)
-        for sol in _real_solutions(rem, a.params):
-            if not sol:
-                continue
-            try:
-                sub = a.subs(sol)
-            except AnalysisError:
-                continue
-            if sub.is_zero:
-                cases.append({"condition": sol, "k": None, "b": None, "note": "symbol vanishes"})
-                continue
-            inner = smoothing_factor(sub, exceptional=True, _depth=_depth + 1)
-            case = {"condition": sol, "k": inner.value, "b": inner.witness["b"]}
-            if inner.witness.get("exceptional"):
-                case["exceptional"] = inner.witness["exceptional"]
-            cases.append(case)
+        cases = exceptional_cases(a, [b(-1)], lambda sub: smoothing_factor(sub, exceptional=True,
+                                                                            _depth=_depth + 1))
     return Result(value=k, status=CERTIFIED,
                   witness={"b": b, "identity": f"a(z) = ((1+z)/2)^{k} b(z)", "exceptional": cases},
                   provenance={"method": "exact synthetic division by (1+z)", "domain": str(a.domain)})
+
+
+def exceptional_cases(a: LaurentSymbol, conditions, factor_at) -> list[dict]:
+    """The exceptional parameter values of a smoothing-factor count: the real solutions of
+    ``conditions[0] = 0`` at which every other condition vanishes too, each with the count
+    ``factor_at(a at that value)`` (a :class:`Result`; its own exceptional values nested).
+
+    Shared by the binary (:func:`smoothing_factor`, condition ``b(-1) = 0``) and the m-ary
+    (:func:`analysis.algebra.mary.smoothing_factor_mary`, the remainder's coefficients) counts.
+    """
+    cases = []
+    first = conditions[0] if conditions else sp.Integer(0)
+    for sol in _real_solutions(first, a.params):
+        if not sol or any(sp.simplify(c.subs(sol)) != 0 for c in conditions[1:]):
+            continue
+        try:
+            sub = a.subs(sol)
+        except AnalysisError:
+            continue
+        if sub.is_zero:
+            cases.append({"condition": sol, "k": None, "b": None, "note": "symbol vanishes"})
+            continue
+        inner = factor_at(sub)
+        case = {"condition": sol, "k": inner.value, "b": inner.witness["b"]}
+        if inner.witness.get("exceptional"):
+            case["exceptional"] = inner.witness["exceptional"]
+        cases.append(case)
+    return cases
 
 
 # --------------------------------------------------------------------------------------------

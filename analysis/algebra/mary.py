@@ -50,7 +50,7 @@ import sympy as sp
 
 from ..result import CERTIFIED, AnalysisError, Result
 from .symbol import LaurentSymbol, Z
-from .factorization import _real_solutions
+from .factorization import exceptional_cases
 
 __all__ = ["check_arity", "q_symbol", "sum_rules_mary", "convergence_failure_mary", "divide_q",
            "factor_out_mary", "smoothing_factor_mary", "polynomial_generation_mary",
@@ -233,19 +233,8 @@ def smoothing_factor_mary(a: LaurentSymbol, m: int, *, exceptional: bool = True,
     if exceptional and a.params and _depth < 4:
         coeffs = [sp.expand(c) for c in rem.all_coeffs() if c != 0]
         coeffs = [rem.domain.to_sympy(c) if not isinstance(c, sp.Basic) else c for c in coeffs]
-        first = coeffs[0] if coeffs else sp.Integer(0)
-        for sol in _real_solutions(first, a.params):
-            if not sol or any(sp.simplify(c.subs(sol)) != 0 for c in coeffs[1:]):
-                continue
-            try:
-                sub = a.subs(sol)
-            except AnalysisError:
-                continue
-            if sub.is_zero:
-                cases.append({"condition": sol, "k": None, "b": None, "note": "symbol vanishes"})
-                continue
-            inner = smoothing_factor_mary(sub, m, exceptional=True, _depth=_depth + 1)
-            cases.append({"condition": sol, "k": inner.value, "b": inner.witness["b"]})
+        cases = exceptional_cases(a, coeffs, lambda sub: smoothing_factor_mary(sub, m, exceptional=True,
+                                                                                _depth=_depth + 1))
     return Result(value=k, status=CERTIFIED,
                   witness={"b": b, "identity": f"a(z) = ((1+...+z^{m - 1})/{m})^{k} b(z)", "exceptional": cases},
                   provenance={"method": f"exact division by 1+z+...+z^{m - 1}", "arity": m,

@@ -30,17 +30,8 @@ Examples
 
 from __future__ import annotations
 
-from pathlib import Path
-
-from analysis.claims.paperfile import load_paper
-
-
-def _catalogue(name: str):
-    import schemes
-
-    return schemes.get(name)
-
+from papers import load_bundled
 
 #: the claims and metadata are data (issue 11): papers/seed004/paper.toml
-PAPER = load_paper(Path(__file__).with_name("paper.toml"), catalogue=_catalogue)
+PAPER = load_bundled(__file__)
 CLAIMS = list(PAPER.claims)
