@@ -36,7 +36,7 @@ import sympy as sp
 
 from ...algebra.symbol import LaurentSymbol, parse_coefficient
 from ...result import AnalysisError, Result
-from ..model import Evidence, Verdict, certified, inconclusive, refuted
+from ..model import Evidence, Number, Verdict, certified, inconclusive, refuted
 
 __all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence"]
 
@@ -291,3 +291,27 @@ class Kind:
 
     def evaluate(self) -> Verdict:  # pragma: no cover - every kind overrides it
         raise NotImplementedError
+
+
+def sampled_alpha_maximum(p, curve: list, note: str = ""):
+    """The largest certified Hölder exponent among the sample points of an alpha curve: the text
+    line, its key numbers and the evidence table (the maximum is *sampled*, and says so).
+    Shared by the binary (:mod:`.profile`) and the m-ary (:mod:`.mary`) smoothness profiles."""
+    best = max((x for x in curve if x["lower"] is not None), key=lambda x: x["lower"], default=None)
+    alpha_line, nums = "no certified alpha", []
+    if best is not None:
+        alo, ahi = sp.Rational(best["lower"]), sp.Rational(best["upper"])
+        alpha_line = (f"largest alpha at the {len(curve)} sample points"
+                      f"{note}: {p.name} = {sp.sstr(best['p'])}, "
+                      f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
+                      "the maximum over the interval is sampled, not certified)")
+        nums = [Number("alpha max (sampled) at", best["p"]),
+                Number("alpha max (sampled)", alo, lower=alo, upper=ahi) if alo == ahi else
+                Number("alpha max (sampled)", float((alo + ahi) / 2), tol=max(1e-6, 2 * float(ahi - alo)),
+                       lower=alo, upper=ahi)]
+    ev = evidence("Hölder exponent over the parameter", text=alpha_line,
+                  table=(("p", "alpha lower", "alpha upper", "status"),
+                         *((sp.sstr(x["p"]), f"{float(x['lower']):.8f}" if x["lower"] is not None else "-",
+                            f"{float(x['upper']):.8f}" if x["upper"] is not None else "-", x["status"])
+                           for x in curve)))
+    return alpha_line, nums, ev

@@ -50,7 +50,7 @@ import sympy as sp
 from ...algebra.mary import smoothing_factor_mary
 from ...regularity.mary import alpha_curve_mary, ck_range_mary
 from ..model import Number, Verdict
-from .base import Kind, evidence, interval_text, parse_interval
+from .base import Kind, evidence, interval_text, parse_interval, sampled_alpha_maximum
 
 __all__ = ["ck_range_verdict", "profile_verdict", "set_text", "point_in"]
 
@@ -150,22 +150,9 @@ def profile_verdict(kind) -> Verdict:
     ev = [evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)} ({m}-ary)", table=(("j", "set", "status"), *rows),
                    text=f"{N} generic factors (1+...+z^{m - 1})/{m}; largest j with a non-empty C^j set: {largest}")]
     curve = alpha_curve_mary(a, m, p, within=(lo, hi), samples=kind.get("samples", 8), budget_seconds=ALPHA_BUDGET).value
-    best = max((x for x in curve if x["lower"] is not None), key=lambda x: x["lower"], default=None)
-    alpha_line = "no certified alpha"
-    if best is not None:
-        alo, ahi = sp.Rational(best["lower"]), sp.Rational(best["upper"])
-        alpha_line = (f"largest alpha at the {len(curve)} sample points: {p.name} = {sp.sstr(best['p'])}, "
-                      f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
-                      "the maximum over the interval is sampled, not certified)")
-        nums += [Number("alpha max (sampled) at", best["p"]),
-                 Number("alpha max (sampled)", alo, lower=alo, upper=ahi) if alo == ahi else
-                 Number("alpha max (sampled)", float((alo + ahi) / 2), tol=max(1e-6, 2 * float(ahi - alo)),
-                        lower=alo, upper=ahi)]
-    ev.append(evidence("Hölder exponent over the parameter", text=alpha_line,
-                       table=(("p", "alpha lower", "alpha upper", "status"),
-                              *((sp.sstr(x["p"]), f"{float(x['lower']):.8f}" if x["lower"] is not None else "-",
-                                 f"{float(x['upper']):.8f}" if x["upper"] is not None else "-", x["status"])
-                                for x in curve))))
+    alpha_line, alpha_nums, alpha_ev = sampled_alpha_maximum(p, curve)
+    nums += alpha_nums
+    ev.append(alpha_ev)
     nums.insert(0, Number("largest j", largest))
     profile = "; ".join(f"{r[0]}: {r[1]}" + ("" if r[2] == "certified" else f" ({r[2]})") for r in rows) + f"; {alpha_line}"
     claim = kind.get("claimed")

@@ -53,7 +53,7 @@ from ...regularity.holder import holder_exponent, smoothness
 from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
 from ...result import CERTIFIED, REFUTED, AnalysisError
 from ..model import Number, Verdict
-from .base import Kind, evidence, interval_text, parse_interval
+from .base import Kind, evidence, interval_text, parse_interval, sampled_alpha_maximum
 
 __all__ = ["SmoothnessProfile", "boundary_text", "run_matches", "which_set"]
 
@@ -135,6 +135,7 @@ def _exceptional(a, p, lo, hi) -> dict:
         if q is not None and sp.sympify(q).is_Rational and lo < q < hi:
             out[sp.Rational(q)] = e["k"]
     return out
+
 
 
 def _short(b: dict) -> str:
@@ -232,23 +233,10 @@ class SmoothnessProfile(Kind):
             for q in sorted({q for v in points.values() for q in v} - {x["p"] for x in curve.value}):
                 h = holder_exponent(a.subs({p: q}))
                 curve.value.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
-        best = max((x for x in curve.value if x["lower"] is not None), key=lambda x: x["lower"], default=None)
-        alpha_line = "no certified alpha"
-        if best is not None:
-            alo, ahi = sp.Rational(best["lower"]), sp.Rational(best["upper"])
-            alpha_line = (f"largest alpha at the {len(curve.value)} sample points"
-                          f"{' (with the isolated C^j points)' if any(points.values()) else ''}: {p.name} = {sp.sstr(best['p'])}, "
-                          f"alpha in [{float(alo):.10f}, {float(ahi):.10f}] ({best['status']} enclosure at that point; "
-                          "the maximum over the interval is sampled, not certified)")
-            nums += [Number("alpha max (sampled) at", best["p"]),
-                     Number("alpha max (sampled)", alo, lower=alo, upper=ahi) if alo == ahi else
-                     Number("alpha max (sampled)", float((alo + ahi) / 2), tol=max(1e-6, 2 * float(ahi - alo)),
-                            lower=alo, upper=ahi)]
-        ev.append(evidence("Hölder exponent over the parameter", text=alpha_line,
-                           table=(("p", "alpha lower", "alpha upper", "status"),
-                                  *((sp.sstr(x["p"]), f"{float(x['lower']):.8f}" if x["lower"] is not None else "-",
-                                     f"{float(x['upper']):.8f}" if x["upper"] is not None else "-", x["status"])
-                                    for x in curve.value))))
+        alpha_line, alpha_nums, alpha_ev = sampled_alpha_maximum(
+            p, curve.value, " (with the isolated C^j points)" if any(points.values()) else "")
+        nums += alpha_nums
+        ev.append(alpha_ev)
         nums.insert(0, Number("largest j", largest))
         profile = "; ".join(f"{r[0]}: {r[1]}" for r in rows) + f"; {alpha_line}"
         claim = self.get("claimed")
