@@ -64,7 +64,9 @@ def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -
     hi = r.value if r.value is not None else r.upper
     if lo is None or hi is None or r.status not in (CERTIFIED, REFUTED):
         return None, "no certified enclosure"
-    lo, hi = sp.nsimplify(lo), sp.nsimplify(hi)
+    if isinstance(lo, float) or isinstance(hi, float) or isinstance(lo, sp.Float) or isinstance(hi, sp.Float):
+        return None, "the enclosure is given in floats (not exact end points): not decided"
+    lo, hi = sp.sympify(lo), sp.sympify(hi)              # exact: Fractions, Rationals, algebraic numbers
     want_lo, want_hi = lower, upper
     if value is not None:
         t = tol or 0
