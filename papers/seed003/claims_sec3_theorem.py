@@ -88,8 +88,8 @@ def _theorem31_c2(form, name):
     ev = _hypothesis_evidence(r)
     if r.status == "certified" and r.value is True:
         return C.certified(
-            f"True: {name} is C^2 at every (alpha, omega) with 0 <= alpha <= pi/3 and 0 < omega < (sqrt6-1)/80 (the "
-            "claimed open region and more). Proof (not the printed one, see the '(proof)' claim): Dyn-Levin 1995 "
+            f"True: {name} is C^2 at every (alpha, omega) with 0 < alpha <= pi/3 and 0 < omega < (sqrt6-1)/80 (the "
+            "claimed open region and its edge alpha = pi/3). Proof (not the printed one, see the '(proof)' claim): Dyn-Levin 1995 "
             "applied pointwise to the divided-difference schemes e^n = 2a^n/(1+z); same support and "
             "sum 2^n ||S_(e^n) - S_e|| < oo certified on the closed box [0, pi/3] x [0, (sqrt6-1)/80] (ball "
             "arithmetic, Taylor tail, alpha = 0 removable); S_e C^1 for every omega in the open (0, (sqrt6-1)/80) by "

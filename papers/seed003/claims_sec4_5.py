@@ -65,7 +65,7 @@ def _normalized_convergence():
             (s.slug, r.witness["region"], r.witness["failed"]))
     if not open_:
         return C.certified("True: the normalized forms (4) and (5) converge to rule (1) and are C^2 at every (alpha, "
-                           "omega) with 0 <= alpha <= pi/3, 0 < omega < (sqrt6-1)/80, by the same (corrected) analysis "
+                           "omega) with 0 < alpha <= pi/3, 0 < omega < (sqrt6-1)/80, by the same (corrected) analysis "
                            "as (2) and (3): Dyn-Levin 1995 on e^n = 2a^n/(1+z), same support (the omega coefficients "
                            "are those of (2), (3) times cos(alpha h/2)/cos(alpha h/4) resp. cosh(.)/cosh(.), certified "
                            "nonzero for all levels) and the weighted series on the closed box, S_e C^1 on the open "
