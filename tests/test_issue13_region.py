@@ -180,3 +180,26 @@ def test_reproduce_box_with_curve_is_an_error(capsys):
                "--curve", "circle"])
     assert rc == 2
     assert "subdiv: error: --box works with --lambdas" in capsys.readouterr().err
+
+
+# ------------------------------------------------------------------ CLI: series --C K --open NAME
+def test_series_region_cli_json(capsys):
+    rc = main(["series", "--scheme", "seed003-hyperbolic", "--difference", "1", "--box", "alpha=0,pi/3",
+               "--box", "omega=0,(sqrt(6)-1)/80", "--C", "2", "--open", "omega", "--json"])
+    assert rc == 0
+    d = json.loads(capsys.readouterr().out)
+    assert d["region"]["status"] == "certified"
+    assert d["region"]["witness"]["region"] == "alpha in [0, pi/3], omega in (0, -1/80 + sqrt(6)/80)"
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--open", "omega"], "--open needs --C K"),
+    (["--C", "2", "--open", "alpha"], "the limit depends on omega"),
+    (["--C", "x"], "--C must be an integer"),
+], ids=["open-without-C", "wrong-open", "bad-C"])
+def test_series_region_cli_errors(capsys, argv, message):
+    rc = main(["series", "--scheme", "seed003-trigonometric", "--difference", "1", "--box", "alpha=0,1",
+               "--box", "omega=0,1/100", *argv])
+    assert rc == 2
+    err = capsys.readouterr().err
+    assert err.startswith("subdiv: error: ") and message in err and len(err.strip().splitlines()) == 1

@@ -99,6 +99,10 @@ def cmd_series(args) -> None:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if not 0 <= args.depth <= 8:
         raise AnalysisError(f"--depth must be between 0 and 8, not {args.depth}")
+    if args.C is not None:
+        return _series_region(args, s)
+    if args.open:
+        raise AnalysisError("--open needs --C K (C^K on the region)")
     if args.difference:
         s = s.difference(args.difference)
     vals = _values(args)
@@ -118,6 +122,37 @@ def cmd_series(args) -> None:
         else:
             lines.append(f"m = {m}: {r.status}")
     _emit(args, {"scheme": s.slug, "leading": lead.to_json(), "series": rows}, "\n".join(lines))
+
+
+def _series_region(args, s) -> None:
+    """``subdiv series --C K``: C^K by Dyn-Levin at every point of the region (issue 13)."""
+    from ..levels.region import smoothness_on_region
+
+    try:
+        k = int(args.C)
+    except ValueError:
+        raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
+    if k < args.difference:
+        raise AnalysisError(f"--C {k} is smaller than --difference {args.difference}")
+    vals = _values(args)
+    if args.open and not isinstance(vals.get(args.open), tuple):
+        raise AnalysisError(f"--open {args.open} needs a --box for {args.open}")
+    r = smoothness_on_region(s, vals, k, difference=args.difference, open_param=args.open, N=args.N,
+                             depth=max(args.depth, 2))
+    lines = [f"scheme {s.slug}: C^{k} at every point of {r.witness['region']}: "
+             f"{'yes' if r.value else 'undecided'} [{r.status}] — {r.witness['route']}"]
+    for name, h in r.witness["hypotheses"].items():
+        w = h.witness
+        if name.startswith("series"):
+            detail = (f"{w.get('verdict')}, sum in [{fmt_lower(h.lower, 8, 'g')}, {fmt_upper(h.upper, 8, 'g')}]"
+                      if h.is_certified else w.get("verdict", ""))
+        elif name == "same_support":
+            detail = f"support {w.get('support')}" if h.is_certified else f"failed {w.get('failed')}"
+        else:
+            detail = (f"norm test L = {w.get('L')} on {w.get('set')}" if w.get("set") else
+                      w.get("test") or w.get("reason") or "")
+        lines.append(f"  {name}: {h.status} — {detail}")
+    _emit(args, {"scheme": s.slug, "region": r.to_json()}, "\n".join(lines))
 
 
 def cmd_bound(args) -> None:
@@ -280,6 +315,10 @@ def register(sub) -> None:
     s.add_argument("--pieces", type=int, default=1, help="sub-boxes of each parameter box")
     s.add_argument("--depth", type=int, default=0,
                    help="adaptive subdivision: bisect an undecided sub-box up to DEPTH times (default 0)")
+    s.add_argument("--C", metavar="K", help="decide C^K at every point of the boxes (Dyn-Levin, hypotheses "
+                                            "pointwise; with --difference: on the divided-difference scheme)")
+    s.add_argument("--open", metavar="NAME", help="with --C: the limit's parameter; its box is read as an open "
+                                                  "interval (exact norm set for the limit)")
     _add_inline(s)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)

@@ -157,7 +157,7 @@ def smoothness_on_region(s: LevelDependentScheme, values: Mapping[str, Any], m: 
     failed = [name for name, r in hyps.items()
               if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
     route = ("direct" if not difference else
-             f"{difference}-th divided difference scheme e^n = (2/(1+z))^{difference} a^n")
+             f"divided differences of order {difference}: e^n = (2/(1+z))^{difference} a^n")
     return Result(value=True if ok else None, status=CERTIFIED if ok else INCONCLUSIVE,
                   witness={"claim": f"C^{m}", "route": route, "region": _describe(env, open_param if free else None),
                            "hypotheses": hyps, "failed": failed,
