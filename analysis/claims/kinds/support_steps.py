@@ -101,7 +101,7 @@ class SupportAfterSteps(Kind):
                    else str(exc))
         r = exact_result({"mask": mask_iv, "scaled": scaled, "limit function": phi},
                          "exact: support of a(z)a(z^m)...a(z^(m^(L-1)))", explicit_product=explicit)
-        ev = [evidence(f"support after {L} step(s), arity {m}", r,
+        ev = [evidence(f"support after {L} step{'s' if L > 1 else ''}, arity {m}", r,
                        text=f"mask [{s}, {e}]; {prod_txt}: {_iv(*mask_iv)} ("
                             + ("the explicit product agrees" if explicit else "formula; the product has more than "
                                f"{MAX_EXPLICIT} coefficients") + f"); scaled by {m}^-{L}: {_iv(*scaled)}; "
@@ -109,7 +109,7 @@ class SupportAfterSteps(Kind):
               evidence("basic limit function (convex hull of its support)", lim, text=f"{_iv(*lim.value)} (arity {m})")]
         nums = [Number(f"support after {L} steps start", true[0]), Number(f"support after {L} steps end", true[1]),
                 Number("limit function start", phi[0]), Number("limit function end", phi[1])]
-        fact = (f"after {L} step(s) the {'scaled support (level-0 units)' if of == 'scaled' else 'mask support'} of "
+        fact = (f"after {L} step{'s' if L > 1 else ''} the {'scaled support (level-0 units)' if of == 'scaled' else 'mask support'} of "
                 f"{self.where_text()} is {_iv(*true)}; the basic limit function has support {_iv(*phi)}")
         sharp = f"generic parameters; the limit function's support is smaller where an end coefficient vanishes ({exc_txt})" if exc else None
         if ok:
