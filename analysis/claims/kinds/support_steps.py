@@ -19,8 +19,8 @@ After L steps of ``(S_a f)_i = sum_j a_(i-mj) f_j`` applied to delta, the data a
 of ``a_L(z) = a(z) a(z^m) ... a(z^(m^(L-1)))`` (:meth:`LaurentSymbol.upsample`); for a mask with
 support ``[s, e]`` its support is ``[s (m^L-1)/(m-1), e (m^L-1)/(m-1)]`` (end coefficients
 ``a_s^L, a_e^L`` are non-zero: no cancellation in a product of Laurent polynomials over a field).
-The product is also formed explicitly (up to 20,000 coefficients) and its support read off, a
-second, independent computation. Scaled to level-0 units (divide by ``m^L``) it is
+The product is also formed explicitly (up to 20,000 coefficients, 1,000 with free parameters) and its
+support read off, a second, independent computation. Scaled to level-0 units (divide by ``m^L``) it is
 ``(1 - m^-L) [s, e]/(m-1)``, increasing to the support ``[s, e]/(m-1)`` of the basic limit function
 (:func:`analysis.stationary.transition.basic_limit_support`). With parameters the support is the
 generic one; parameter values where ``a_s`` or ``a_e`` vanish are listed.
@@ -43,8 +43,8 @@ from .base import Kind, evidence, parse_number
 
 __all__ = ["SupportAfterSteps"]
 
-#: the explicit product a(z) a(z^m) ... is formed only up to this many coefficients
-MAX_EXPLICIT = 20000
+#: the explicit product a(z) a(z^m) ... is formed only up to this many coefficients (fewer with parameters)
+MAX_EXPLICIT, MAX_EXPLICIT_PARAMS = 20000, 1000
 
 
 def _iv(lo, hi) -> str:
@@ -80,7 +80,8 @@ class SupportAfterSteps(Kind):
         geo = (m ** L - 1) // (m - 1)
         mask_iv = (s * geo, e * geo)
         explicit = None
-        if (e - s) * geo + 1 <= MAX_EXPLICIT:
+        limit = MAX_EXPLICIT_PARAMS if a.params else MAX_EXPLICIT
+        if (e - s) * geo + 1 <= limit:
             prod = a
             for k in range(1, L):
                 prod = prod * a.upsample(m ** k)
@@ -104,7 +105,7 @@ class SupportAfterSteps(Kind):
         ev = [evidence(f"support after {L} step{'s' if L > 1 else ''}, arity {m}", r,
                        text=f"mask [{s}, {e}]; {prod_txt}: {_iv(*mask_iv)} ("
                             + ("the explicit product agrees" if explicit else "formula; the product has more than "
-                               f"{MAX_EXPLICIT} coefficients") + f"); scaled by {m}^-{L}: {_iv(*scaled)}; "
+                               f"{limit} coefficients") + f"); scaled by {m}^-{L}: {_iv(*scaled)}; "
                             f"basic limit function: {_iv(*phi)}"),
               evidence("basic limit function (convex hull of its support)", lim, text=f"{_iv(*lim.value)} (arity {m})")]
         nums = [Number(f"support after {L} steps start", true[0]), Number(f"support after {L} steps end", true[1]),
