@@ -45,6 +45,8 @@ __all__ = ["SupportAfterSteps"]
 
 #: the explicit product a(z) a(z^m) ... is formed only up to this many coefficients (fewer with parameters)
 MAX_EXPLICIT, MAX_EXPLICIT_PARAMS = 20000, 1000
+#: the largest L accepted (the end points have about L log10(m) digits)
+MAX_STEPS = 64
 
 
 def _iv(lo, hi) -> str:
@@ -66,7 +68,8 @@ class SupportAfterSteps(Kind):
 
     def check(self) -> None:
         self.values()
-        self.integer("steps", 1)
+        if self.integer("steps", 1) > MAX_STEPS:
+            raise AnalysisError(f"{self.where}: field 'steps' must be at most {MAX_STEPS}")
         if self.get("of", "mask") not in self.OF:
             raise AnalysisError(f"{self.where}: field 'of' must be one of {', '.join(self.OF)}")
         s = self.get("support")
