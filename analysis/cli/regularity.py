@@ -296,6 +296,9 @@ def _interior_lines(it: dict, j: int) -> list:
 
 
 def cmd_range(args) -> None:
+    from .family import apply_family
+
+    apply_family(args)                                # --family FILE.json (issue 14)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_range(args, arity)
     from ..regularity.ranges import alpha_curve, ck_parameter_set
@@ -378,4 +381,5 @@ def register(sub) -> None:
     s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
     s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
+    s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.set_defaults(func=cmd_range)
