@@ -76,6 +76,12 @@ def test_limit_open_interval_beyond_the_norm_set_is_not_certified():
     assert _float_norm_e2(1 / 50) > 1
     r = limit_smoothness_open(RULE_1, 2, "omega", 0, sp.Rational(1, 40), L_max=2)
     assert r.status == "inconclusive" and r.value is None
+    # the piecewise tests (several L, issue 14) go beyond the single-L set but leave an exact strip below 1/40
+    (u, v), = r.witness["strips"]
+    assert v == sp.Rational(1, 40) and OMEGA_C < u < sp.Rational(1, 40)
+    # independent float64: some L <= 12 is contractive at 0.0205 (inside), none at 0.0215 (in the strip)
+    assert min(_float_norm_e2(0.0205, L) for L in range(1, 13)) < 1 < min(_float_norm_e2(0.0215, L) for L in range(1, 13))
+    assert float(u) > 0.0205
 
 
 # ------------------------------------------------------------------ (C): same support on the closed box

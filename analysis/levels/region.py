@@ -30,7 +30,8 @@ Examples
 Algorithm
 ---------
 (A) for ``L = 1, ..., L_max``: the exact norm set over ``(lo - 1, hi + 1)``; certified when one of
-its intervals contains ``(lo, hi)`` (exact comparison of real algebraic end points).
+its intervals contains ``(lo, hi)`` (exact comparison of real algebraic end points); else the
+piecewise exact parametric norms of :func:`analysis.regularity.interior.ck_interior`.
 (B), (C): as in :func:`analysis.levels.series.smoothness`, over the closed box, bisected at most
 ``depth`` times. With ``difference = k`` the theorem is applied to ``e^n = (2/(1+z))^k a^n`` with
 ``m - k`` (C^m of ``a^n`` from C^{m-k} of ``e^n``, the difference-scheme argument).
@@ -64,19 +65,23 @@ def _covers(part, lo, hi) -> bool:
     return left and right
 
 
-def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max: int = 4) -> Result:
+def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max: int = 4,
+                          budget_seconds: float = 30.0) -> Result:
     """Certify that ``S_a`` is C^m for every value of its one parameter ``name`` in the open ``(lo, hi)``.
 
     Exact: the Dyn–Levin norm test ``||(1/2 S_{a_{m+1}})^L||_inf < 1`` holds on an exact sublevel
-    set containing ``(lo, hi)`` for some ``L <= L_max``.
+    set containing ``(lo, hi)`` for some ``L <= L_max``; failing that, on pieces with their own L
+    (:func:`analysis.regularity.interior.ck_interior`, L <= 12); otherwise inconclusive with the
+    exact strips that remain.
 
     >>> w = sp.Symbol("omega")
     >>> a = LaurentSymbol.from_mask([-5*w, -7*w, sp.Rational(1,4)+3*w, sp.Rational(3,4)+9*w,
     ...                              sp.Rational(3,4)+9*w, sp.Rational(1,4)+3*w, -7*w, -5*w], start=-4)
     >>> limit_smoothness_open(a, 2, "omega", 0, (sp.sqrt(6) - 1) / 80).status
     'certified'
-    >>> limit_smoothness_open(a, 2, "omega", 0, sp.Rational(1, 40), L_max=2).status
-    'inconclusive'
+    >>> r = limit_smoothness_open(a, 2, "omega", 0, sp.Rational(1, 40), L_max=2, budget_seconds=5)
+    >>> r.status, r.witness["strips"][0][1]
+    ('inconclusive', 1/40)
     """
     from ..algebra.factorization import smoothing_factor
     from ..stationary.normset import norm_solution_set
@@ -100,10 +105,25 @@ def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max:
                                    "interval": f"({sp.sstr(lo)}, {sp.sstr(hi)})"},
                           provenance={"method": "exact norm set (analysis.stationary.normset), real algebraic "
                                                 "end points compared exactly"})
+    # several L on several pieces: exact parametric norms on boxes and open end pieces (issue 14)
+    from ..regularity.interior import ck_interior
+
+    r = ck_interior(a, m, lo, hi, name, L_max=max(L_max, 12), budget_seconds=budget_seconds)
+    if r.is_certified:
+        return Result(value=True, status=CERTIFIED,
+                      witness={"smooth": True, "test": "Dyn-Levin norm tests on pieces (exact parametric norms)",
+                               "set": str(r.value["certified"]), "pieces": len(r.witness.get("pieces", ())),
+                               "m": m + 1, "interval": f"({sp.sstr(lo)}, {sp.sstr(hi)})"},
+                      provenance={"method": "analysis.regularity.interior.ck_interior (exact Bernstein bounds on "
+                                            "rational boxes, exact end pieces)"})
+    strips = ", ".join(f"({sp.sstr(u)}, {sp.sstr(v)})" for u, v in r.value["strips"])
     return Result(value=None, status=INCONCLUSIVE,
-                  witness={"smooth": None, "sets": tried,
-                           "reason": f"no exact norm set with L <= {L_max} contains ({sp.sstr(lo)}, {sp.sstr(hi)})"},
-                  provenance={"method": "exact norm set (analysis.stationary.normset)"})
+                  witness={"smooth": None, "sets": tried, "certified_part": str(r.value["certified"]),
+                           "strips": r.value["strips"],
+                           "reason": f"no exact norm set with L <= {L_max} contains ({sp.sstr(lo)}, {sp.sstr(hi)}); "
+                                     f"norm tests on pieces (L <= {max(L_max, 12)}) certify {r.value['certified']} "
+                                     f"and leave {strips}"},
+                  provenance={"method": "exact norm sets + analysis.regularity.interior.ck_interior"})
 
 
 def _describe(env: Mapping[str, Any], open_param: str | None) -> str:
