@@ -23,27 +23,25 @@ def evaluated():
     return {c.id: evaluate_claim(c) for c in PAPER.claims}
 
 
-#: claims whose evidence covers only some parameter sets/points of a general statement
-PARTIAL = {"003:Theorem3.1", "003:Corollary3.2", "003:Sec4(convergence)"}
+#: claims decided on the whole claimed (alpha, omega) region (issue 13: they were inconclusive while the
+#: evidence covered only slices and points)
+REGION = {"003:Theorem3.1", "003:Corollary3.2", "003:Sec4(convergence)"}
 
 
 def test_every_claim_evaluates_without_error(evaluated):
     errors = {cid: ev.error for cid, ev in evaluated.items() if ev.error}
     assert not errors
-    assert {cid for cid, ev in evaluated.items() if ev.verdict.status == "inconclusive"} == PARTIAL
+    assert {cid for cid, ev in evaluated.items() if ev.verdict.status == "inconclusive"} == set()
 
 
-@pytest.mark.parametrize("cid", sorted(PARTIAL))
-def test_partial_covers_are_inconclusive_with_certified_pieces(evaluated, cid):
-    """The covered sets are certified, but they do not cover the claimed 2-D parameter range."""
+@pytest.mark.parametrize("cid", sorted(REGION))
+def test_region_claims_rest_on_certified_hypotheses(evaluated, cid):
+    """Certified only when every Dyn-Levin hypothesis (same support, series, limit C^1) is certified."""
     v = evaluated[cid].verdict
-    assert v.status == "inconclusive" and "2-D box cover of (alpha, omega)" in v.settle
-    runs = [e for e in v.evidence if e.result is not None and "C^2" in str(e.result.witness.get("claim", ""))]
-    assert runs and all(e.result.status == "certified" and e.result.value is True for e in runs)
-    # each certified set is listed in the summary (the verdict says what was covered, no more)
-    for e in runs:
-        label = e.title.split(": ", 1)[-1]
-        assert label in v.summary
+    assert v.status == "certified" and "0 < omega < (sqrt6-1)/80" in v.summary
+    hyps = [e for e in v.evidence if e.result is not None]
+    assert len(hyps) >= 3 and all(e.result.status == "certified" for e in hyps)
+    assert any("(0, -1/80 + sqrt(6)/80)" in e.text for e in hyps)     # the exact open omega interval
 
 
 def test_matches_golden_file(evaluated):

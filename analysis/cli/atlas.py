@@ -71,6 +71,9 @@ def cmd_atlas(args) -> None:
     from .common import _emit, check_writable, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 
+    from .family import apply_family
+
+    apply_family(args)                           # --family FILE.json (issue 14)
     if args.figure:
         check_writable(args.figure, "the figure")
     m = scheme_arity(args)                       # m-ary families (issue 12)
@@ -152,4 +155,5 @@ def register(subparsers) -> None:
     s.add_argument("--budget", default="2", metavar="SECONDS", help="JSR time budget per point (default 2)")
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")
     s.add_argument("--no-progress", action="store_true", help="no progress bar")
+    s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.set_defaults(func=cmd_atlas)

@@ -42,6 +42,9 @@ def register(subparsers) -> None:
     s.add_argument("--within", metavar="LO,HI", help="box of the parameter for --maximize")
     s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap in alpha (default 1/1000)")
     s.add_argument("--budget", default="60", metavar="SECONDS", help="time budget of --maximize (default 60)")
+    s.add_argument("--output", metavar="FAMILY.json",
+                   help="also write the family (read back by subdiv range|atlas --family FAMILY.json)")
+    s.add_argument("--C", metavar="J", help="also the certified C^J set of a one-parameter family on --within")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_derive)
 
@@ -83,6 +86,10 @@ def cmd_derive(args) -> None:
         kw["names"] = _split_list(args.names, "--names")
     arity = _int(args.arity, "--arity", 2)
     support = _int(args.support, "--support", 1)
+    if args.output:
+        from .common import check_writable
+
+        check_writable(args.output, "the family file")
     start = None if args.start is None else _int(args.start, "--start", -10 ** 6)
     if args.max_sum_rules:
         if "sum_rules" in kw:
@@ -107,6 +114,14 @@ def cmd_derive(args) -> None:
         lines.append("free parameters: " + ", ".join(f"{x} = {c}" for x, c in w["free_coefficients"].items()))
         if arity == 2 and r.value is not None:
             lines.append(f"analyse: subdiv range --mask \"{w['mask']}\" --start {w['start']} --C 1 --within=LO,HI")
+    if args.output:
+        from .family import write_family
+
+        write_family(args.output, data)
+        lines.append(f"family written to {args.output} (subdiv range|atlas --family {args.output})")
+        data["output"] = args.output
+    if args.C is not None:
+        _ck_part(args, r, arity, lines, data)
     if args.maximize:
         from ..regularity.maximize import maximize_holder
 
@@ -146,3 +161,35 @@ def cmd_derive(args) -> None:
 
 
 
+
+
+def _ck_part(args, r, arity: int, lines: list, data: dict) -> None:
+    """``--C J``: the C^J set of a one-parameter family on ``--within`` with its certified interior."""
+    from .common import _parse_within
+
+    j = _int(args.C, "--C", 0)
+    if args.within is None:
+        raise AnalysisError("--C needs --within LO,HI (an interval of the free parameter)")
+    if r.value is None or len(r.value.params) != 1:
+        raise AnalysisError("--C needs a family with exactly one free parameter and an algebraic mask")
+    lo, hi = _parse_within(args.within)
+    if not (lo.is_finite and hi.is_finite):
+        raise AnalysisError("--within needs finite bounds for --C")
+    if arity != 2:
+        from ..regularity.mary import ck_range_mary
+
+        c = ck_range_mary(r.value, arity, j, within=(lo, hi))
+        lines.append(f"C^{j} set on [{lo}, {hi}]: {c.value} ({c.status}); undecided: {c.witness['undecided']}")
+        data["C"] = {"j": j, "status": c.status, "set": str(c.value), "undecided": str(c.witness["undecided"])}
+        return
+    from ..regularity.ranges import ck_parameter_set
+    from .regularity import _interior_lines
+
+    c = ck_parameter_set(r.value, j, within=(lo, hi))
+    lines.append(f"C^{j} set on [{lo}, {hi}] ({c.status}):")
+    for run in c.value:
+        if run.get("interior"):
+            lines.extend(_interior_lines(run["interior"], j))
+    if not c.value:
+        lines.append("  empty on the grid")
+    data["C"] = {"j": j, "status": c.status, "result": c.to_json()}

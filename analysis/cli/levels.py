@@ -2,7 +2,8 @@
 
 Level-dependent schemes are named from :mod:`schemes.level_dependent` (``--scheme
 seed003-trigonometric``); parameters are exact values (``--param alpha=pi/5``) or, for one
-parameter, a closed box (``--box alpha=1/10,pi/3``).
+parameter, a closed box (``--box alpha=1/10,pi/3``); ``--box`` is repeatable (two-parameter boxes,
+issue 13) in ``series``, ``bound`` and ``reproduce --lambdas``, with ``--depth`` for adaptive bisection.
 
 Examples
 --------
@@ -15,6 +16,8 @@ Examples
     subdiv reproduce --scheme exp-chaikin-trig --lambdas "I*t,-I*t" --curve circle --param t=pi/4 --points 8
     subdiv series --symbol "(1+z)**2*(1+2*v*z+z**2)/(4*(1+v)*z**2)" --where "v=cosh(t/2**(n+1))" --param t=1
     subdiv reproduce --scheme exp-cubic-trig --frequencies
+    subdiv bound --claim "003:Lemma3.1(ii)-lower" --box alpha=1/100,pi/3 --box "omega=0,(sqrt(6)-1)/80"
+    subdiv reproduce --scheme exp-chaikin-trig --lambdas "I*t,-I*t" --box t=1/10,3
 """
 
 from __future__ import annotations
@@ -96,6 +99,10 @@ def cmd_series(args) -> None:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if not 0 <= args.depth <= 8:
         raise AnalysisError(f"--depth must be between 0 and 8, not {args.depth}")
+    if args.C is not None:
+        return _series_region(args, s)
+    if args.open:
+        raise AnalysisError("--open needs --C K (C^K on the region)")
     if args.difference:
         s = s.difference(args.difference)
     vals = _values(args)
@@ -115,6 +122,37 @@ def cmd_series(args) -> None:
         else:
             lines.append(f"m = {m}: {r.status}")
     _emit(args, {"scheme": s.slug, "leading": lead.to_json(), "series": rows}, "\n".join(lines))
+
+
+def _series_region(args, s) -> None:
+    """``subdiv series --C K``: C^K by Dyn-Levin at every point of the region (issue 13)."""
+    from ..levels.region import smoothness_on_region
+
+    try:
+        k = int(args.C)
+    except ValueError:
+        raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
+    if k < args.difference:
+        raise AnalysisError(f"--C {k} is smaller than --difference {args.difference}")
+    vals = _values(args)
+    if args.open and not isinstance(vals.get(args.open), tuple):
+        raise AnalysisError(f"--open {args.open} needs a --box for {args.open}")
+    r = smoothness_on_region(s, vals, k, difference=args.difference, open_param=args.open, N=args.N,
+                             depth=max(args.depth, 2))
+    lines = [f"scheme {s.slug}: C^{k} at every point of {r.witness['region']}: "
+             f"{'yes' if r.value else 'undecided'} [{r.status}] — {r.witness['route']}"]
+    for name, h in r.witness["hypotheses"].items():
+        w = h.witness
+        if name.startswith("series"):
+            detail = (f"{w.get('verdict')}, sum in [{fmt_lower(h.lower, 8, 'g')}, {fmt_upper(h.upper, 8, 'g')}]"
+                      if h.is_certified else w.get("verdict", ""))
+        elif name == "same_support":
+            detail = f"support {w.get('support')}" if h.is_certified else f"failed {w.get('failed')}"
+        else:
+            detail = (f"norm test L = {w.get('L')} on {w.get('set')}" if w.get("set") else
+                      w.get("test") or w.get("reason") or "")
+        lines.append(f"  {name}: {h.status} — {detail}")
+    _emit(args, {"scheme": s.slug, "region": r.to_json()}, "\n".join(lines))
 
 
 def cmd_bound(args) -> None:
@@ -139,10 +177,24 @@ def cmd_bound(args) -> None:
         strict, n0 = args.strict, args.n0
     if n0 < 0:
         raise AnalysisError(f"--n0 must be a non-negative level, not {n0}")
-    r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "")
+    if not 0 <= args.depth <= 30:
+        raise AnalysisError(f"--depth must be between 0 and 30, not {args.depth}")
+    if not 1 <= args.pieces <= 64:
+        raise AnalysisError(f"--pieces must be between 1 and 64, not {args.pieces}")
+    r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "", max_depth=args.depth,
+                         pieces=args.pieces)
     text = f"{r.witness['statement']}: {r.status}"
+    if "box" in r.provenance and any(isinstance(v, tuple) for v in r.provenance["box"].values()):
+        text += " on " + ", ".join(f"{k} in [{sp.sstr(v[0])}, {sp.sstr(v[1])}]" if isinstance(v, tuple) else
+                                   f"{k} = {sp.sstr(v)}" for k, v in r.provenance["box"].items())
     if "counterexample" in r.witness:
-        text += f"\ncounterexample: {r.witness['counterexample']}"
+        w = r.witness["counterexample"]
+        pt = w.get("point")
+        pt = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in pt.items()) if isinstance(pt, dict) else str(pt)
+        gf = w.get("g_minus_f")
+        gf = (f"rhs - lhs in [{fmt_lower(gf[0], 6, 'g')}, {fmt_upper(gf[1], 6, 'g')}]"
+              if isinstance(gf, (tuple, list)) and len(gf) == 2 else f"rhs - lhs = {gf}")
+        text += f"\ncounterexample: n = {w.get('n')}, {pt}: {gf} (certified < 0)"
     _emit(args, r.to_json(), text)
 
 
@@ -155,15 +207,35 @@ def cmd_reproduce(args) -> None:
     if args.curve:
         check_curve_options(args.points, args.steps, args.plot)
     vals = _parse_params(args.param)
+    box = _box(args.box)
+    if box:
+        if args.curve or args.frequencies:
+            raise AnalysisError("--box works with --lambdas (generation/reproduction on the whole box); "
+                                "--curve and --frequencies need exact --param values")
+        both = sorted(set(vals) & set(box))
+        if both:
+            raise AnalysisError(f"{both[0]} is given both by --param and by --box: give one of them")
+        vals.update(box)
+    if not 0 <= args.depth <= 8:
+        raise AnalysisError(f"--depth must be between 0 and 8, not {args.depth}")
     lams = [parse_coefficient(x, locals_={p.name: p for p in s.params})
             for x in args.lambdas.split(",")] if args.lambdas else []
     out, lines = {"scheme": s.slug}, []
     if lams:
-        g = generation(s, lams, vals or None)
-        rr = reproduction(s, lams, vals or None)
+        g = generation(s, lams, vals or None, depth=args.depth)
+        rr = reproduction(s, lams, vals or None, depth=args.depth)
         out["generation"], out["reproduction"] = g.to_json(), rr.to_json()
-        lines.append(f"generation of exp(lambda x), lambda in {args.lambdas}: {g.status}")
-        lines.append(f"reproduction: {rr.status}")
+        where = (" on " + ", ".join(f"{k} in [{sp.sstr(lo)}, {sp.sstr(hi)}]" for k, (lo, hi) in box.items())
+                 if box else "")
+        lines.append(f"generation of exp(lambda x), lambda in {args.lambdas}{where}: {g.status}")
+        lines.append(f"reproduction{where}: {rr.status}")
+        for res in (g, rr):
+            if res.status == "refuted" and res.witness.get("counterexample"):
+                w = res.witness["counterexample"]
+                pt = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in w["point"].items())
+                lines.append(f"  counterexample ({'generation' if res is g else 'reproduction'}): level n = {w['n']}, "
+                             f"{pt}: {res.witness['statement']} (value {w['value']})")
+                break
     if args.curve:
         c = curve_deviation(s, args.curve, vals, points=args.points, steps=args.steps, plot=args.plot)
         out["curve"] = c.to_json()
@@ -243,6 +315,10 @@ def register(sub) -> None:
     s.add_argument("--pieces", type=int, default=1, help="sub-boxes of each parameter box")
     s.add_argument("--depth", type=int, default=0,
                    help="adaptive subdivision: bisect an undecided sub-box up to DEPTH times (default 0)")
+    s.add_argument("--C", metavar="K", help="decide C^K at every point of the boxes (Dyn-Levin, hypotheses "
+                                            "pointwise; with --difference: on the divided-difference scheme)")
+    s.add_argument("--open", metavar="NAME", help="with --C: the limit's parameter; its box is read as an open "
+                                                  "interval (exact norm set for the limit)")
     _add_inline(s)
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)
@@ -254,13 +330,20 @@ def register(sub) -> None:
     s.add_argument("--n0", type=int, default=0, help="first level n (>= 0)")
     s.add_argument("--strict", action="store_true")
     s.add_argument("--param", action="append", metavar="NAME=VALUE")
-    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH", help="a closed box; repeatable (several parameters)")
+    s.add_argument("--depth", type=int, default=10,
+                   help="adaptive subdivision: bisect an undecided box up to DEPTH times per level (default 10)")
+    s.add_argument("--pieces", type=int, default=8, help="sub-boxes of each parameter box for the tail n >= N (default 8)")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_bound)
 
     s = sub.add_parser("reproduce", help="exponential generation/reproduction; distance to curves")
     s.add_argument("--scheme", metavar="NAME")
     s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
+                   help="with --lambdas: decide on the whole closed box (repeatable)")
+    s.add_argument("--depth", type=int, default=2,
+                   help="with --box: bisect the box up to DEPTH times looking for a counterexample (default 2)")
     s.add_argument("--lambdas", metavar="LIST", help='e.g. "I*t,-I*t" or "0,t,-t"')
     s.add_argument("--curve", choices=("circle", "ellipse", "cardioid", "astroid", "lemniscate"))
     s.add_argument("--points", type=int, default=10, help="control points on the curve (>= 3)")

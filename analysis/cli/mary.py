@@ -228,7 +228,8 @@ def cmd_range(args, m: int) -> None:
     Ls = [1, 2]
     r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within)
     p = r.witness["parameter"]
-    lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}): {p} in {_fmt_set(r.value)}",
+    extra = " and parametric norm tests, L <= 8" if r.witness.get("interior_tests") else ""
+    lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}{extra}): {p} in {_fmt_set(r.value)}",
              f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
              f"{_fmt_set(r.witness['not_Cj'])}",
              (f"the C^{j} range is exactly {_fmt_set(r.value)}, certified on both sides" if r.witness["exact"] else

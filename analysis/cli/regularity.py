@@ -276,7 +276,29 @@ def cmd_holder(args) -> None:
     _emit(args, data, "\n".join(lines))
 
 
+def _interior_lines(it: dict, j: int) -> list:
+    """The interior of one run: the certified pieces (exact ends) and the strips left."""
+    def b(x):
+        x = sp.sympify(x)
+        return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.10g}"
+
+    left = "(" if it.get("from_open", False) else "["
+    right = ")" if it.get("to_open", False) else "]"
+    head = f"  interior {left}{b(it['from'])}, {b(it['to'])}{right}: "
+    if it["proven"]:
+        return [head + "proven C^%d on the whole of it (%s)" % (j, it["route"])]
+    if "certified" not in it:
+        return [head + "certified at the grid points only (%s)" % it["route"]]
+    out = [head + "C^%d proven on %s (%s)" % (j, it["certified"], it["route"])]
+    for x, y in it["strips"]:
+        out.append(f"    inconclusive strip ({b(x)}, {b(y)}) (width {float(sp.sympify(y) - sp.sympify(x)):.3g})")
+    return out
+
+
 def cmd_range(args) -> None:
+    from .family import apply_family
+
+    apply_family(args)                                # --family FILE.json (issue 14)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_range(args, arity)
     from ..regularity.ranges import alpha_curve, ck_parameter_set
@@ -322,10 +344,7 @@ def cmd_range(args) -> None:
     for run in r.value:
         it = run.get("interior")
         if it:
-            # rounded inward: the printed interval lies inside the one the statement is about
-            lines.append(f"  interior [{fmt_bound(it['from'], 'upper', 10, 'g')}, {fmt_bound(it['to'], 'lower', 10, 'g')}]: "
-                         + ("proven C^%d on the whole interval (%s)" % (j, it["route"]) if it["proven"] else
-                            "certified at the grid points only (the norm tests do not cover it)"))
+            lines.extend(_interior_lines(it, j))
     if "message" in r.provenance:
         lines.append(f"  {r.provenance['message']}")
     data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
@@ -362,4 +381,5 @@ def register(sub) -> None:
     s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
     s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
+    s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.set_defaults(func=cmd_range)

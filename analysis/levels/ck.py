@@ -20,7 +20,10 @@ in order
 Each hypothesis is checked with exact (sympy) or ball (Arb) arithmetic; a k for which every route
 fails is *inconclusive* and names, per route, the hypothesis that failed. Past the limit's
 smoothness (``S_a`` certified not C^k) the verdict stays inconclusive: no theorem implemented
-here transfers "not C^k" from ``S_a`` to ``{S_{a^n}}``.
+here transfers "not C^k" from ``S_a`` to ``{S_{a^n}}``. The theorem that would (an upper bound of
+the Hölder exponent of an asymptotically similar non-stationary scheme by that of its limit: the
+Hölder-exponent formula of Charina–Conti–Guglielmi–Protasov 2017 for dilation ``mI``) was not
+implemented because its exact hypotheses could not be quoted from the sources at hand (issue 13).
 
 Examples
 --------
@@ -256,7 +259,10 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         verdicts.append({"k": not_k, "verdict": "undecided", "status": INCONCLUSIVE, "route": None,
                          "reason": (f"the limit S_a is certified not C^{not_k} "
                                     f"({a_smooth[not_k].witness.get('reason')}), but no implemented theorem "
-                                    f"transfers 'not C^{not_k}' to the level-dependent scheme")})
+                                    f"transfers 'not C^{not_k}' to the level-dependent scheme (missing: an "
+                                    "upper bound for the Hoelder exponent of {S_(a^n)} from that of S_a, e.g. "
+                                    "the Hoelder-exponent formula of Charina-Conti-Guglielmi-Protasov 2017, "
+                                    "Numer. Math. 135; its exact hypotheses are not implemented)")})
     status = CERTIFIED if best >= 0 else INCONCLUSIVE
     return Result(value=best, status=status,
                   witness={"verdicts": verdicts, "max_certified_k": best,

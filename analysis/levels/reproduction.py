@@ -49,6 +49,50 @@ def _symbol(s: LevelDependentScheme, z) -> sp.Expr:
     return sum(c * z ** (s.start + k) for k, c in enumerate(s.mask))
 
 
+def _exact_and_boxes(values) -> tuple[dict, dict]:
+    """Split parameter values into exact ones and closed boxes ``(lo, hi)`` (issue 13)."""
+    exact, boxes = {}, {}
+    for k, v in dict(values or {}).items():
+        if isinstance(v, (tuple, list)):
+            if len(v) != 2:
+                raise AnalysisError(f"a box for {k} needs exactly two ends (LOW, HIGH)")
+            lo, hi = (sp.sympify(x, rational=True) if isinstance(x, str) else sp.sympify(x) for x in v)
+            if lo.free_symbols or hi.free_symbols or not bool(lo < hi):
+                raise AnalysisError(f"the box for {k} must be [LOW, HIGH] with numbers LOW < HIGH")
+            boxes[str(k)] = (lo, hi)
+        else:
+            exact[str(k)] = v
+    return exact, boxes
+
+
+def _box_points(boxes: dict, depth: int) -> list[dict]:
+    """Midpoints of the box and of its sub-boxes after 1..depth bisections of every side (adaptive
+    search for a counterexample inside the box)."""
+    pts, cells = [], [dict(boxes)]
+    for _ in range(depth + 1):
+        pts.extend({k: (lo + hi) / 2 for k, (lo, hi) in c.items()} for c in cells)
+        nxt = []
+        for c in cells:
+            parts = [{}]
+            for k, (lo, hi) in c.items():
+                mid = (lo + hi) / 2
+                parts = [{**q, k: half} for q in parts for half in ((lo, mid), (mid, hi))]
+            nxt.extend(parts)
+        cells = nxt
+    return pts
+
+
+def _certify_nonzero_in(expr: sp.Expr, s: LevelDependentScheme, boxes: dict, depth: int = 2) -> dict | None:
+    """A level and a point of the box (``boxes``; none: the default point) where ``expr != 0`` is proven."""
+    if not boxes:
+        return _certify_nonzero(expr, s, None)
+    for pt in _box_points(boxes, depth):
+        w = _certify_nonzero(expr, s, pt)
+        if w:
+            return w
+    return None
+
+
 def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values) -> dict | None:
     """A level and parameter point where ball arithmetic proves ``expr != 0``."""
     pts = dict(values or {})
@@ -69,17 +113,31 @@ def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values) -> dict | N
     return None
 
 
-def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, Any] | None = None) -> Result:
+def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, Any] | None = None, *,
+               depth: int = 2) -> Result:
     """Certify that every level ``S_{a^n}`` generates ``e^{lambda x}`` for each lambda.
 
     ``lambdas`` are sympy expressions (``t``, ``-t``, ``I*t``, ``0``...). Certified when
     ``a^n(-e^{-lambda h/2})`` simplifies to 0 identically in ``h`` and the parameters; refuted
-    with a certified nonzero value.
+    with a certified nonzero value. ``values`` may give closed boxes ``(lo, hi)`` (several
+    parameters): certified then holds on the whole box (the identity is exact in the boxed
+    parameters), and a counterexample is searched at the midpoints of the box and of its
+    sub-boxes, bisected up to ``depth`` times, so it lies in the box.
+
+    >>> import sympy as sp
+    >>> from schemes.seed003 import TRIGONOMETRIC
+    >>> a, w = sp.Symbol("alpha", positive=True), sp.Symbol("omega")
+    >>> r = generation(TRIGONOMETRIC, [sp.I * a, -sp.I * a], {"alpha": (0, 1), "omega": (0, sp.Rational(1, 50))})
+    >>> r.status, r.witness["counterexample"]["point"]
+    ('refuted', {'alpha': 1/2, 'omega': 1/100})
     """
+    values, boxes = _exact_and_boxes(values)
     rep = {}
     if values:
         rep = {s._param(str(k)): sp.sympify(v) for k, v in dict(values).items()}
         s = s.subs(values)
+    for k in boxes:
+        s._param(k)
     out = {}
     for lam in lambdas:
         lam = sp.sympify(lam).subs(rep)
@@ -87,7 +145,7 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
         if _exact_zero(e):
             out[sp.sstr(lam)] = "identically 0"
             continue
-        w = _certify_nonzero(e, s, None)
+        w = _certify_nonzero_in(e, s, boxes, depth)
         stmt = f"a^n(-exp(-({lam}) h/2)) != 0"
         if w:
             return Result(value=False, status=REFUTED,
@@ -95,19 +153,24 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
                           provenance={"method": "acb ball evaluation"})
         return Result(value=None, status=INCONCLUSIVE, witness={"lambda": lam, "statement": stmt},
                       provenance={"method": "no exact zero proof, no certified nonzero value"})
-    return Result(value=True, status=CERTIFIED,
-                  witness={"generated": [sp.sstr(sp.sympify(x)) for x in lambdas], "conditions": out},
-                  provenance={"method": "exact: a^n(-exp(-lambda h/2)) == 0 for all h (sympy)"})
+    wit = {"generated": [sp.sstr(sp.sympify(x)) for x in lambdas], "conditions": out}
+    if boxes:
+        wit["box"] = {k: tuple(v) for k, v in boxes.items()}
+    return Result(value=True, status=CERTIFIED, witness=wit,
+                  provenance={"method": "exact: a^n(-exp(-lambda h/2)) == 0 for all h and all parameters (sympy)"})
 
 
-def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, Any] | None = None) -> Result:
+def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, Any] | None = None, *,
+                 depth: int = 2) -> Result:
     """Certify reproduction: generation and ``a^n(e^{-lambda h/2}) = 2 e^{-lambda tau h/2}``.
 
     ``tau = a'(1)/2`` of the limit symbol (the parametrisation of polynomial reproduction).
+    Boxes in ``values`` as in :func:`generation`.
     """
-    g = generation(s, lambdas, values)
+    g = generation(s, lambdas, values, depth=depth)
     if g.status != CERTIFIED:
         return g
+    values, boxes = _exact_and_boxes(values)
     rep = {}
     if values:
         rep = {s._param(str(k)): sp.sympify(v) for k, v in dict(values).items()}
@@ -118,15 +181,18 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
         lam = sp.sympify(lam).subs(rep)
         e = _symbol(s, sp.exp(-lam * H / 2)) - 2 * sp.exp(-lam * tau * H / 2)
         if not _exact_zero(e):
-            w = _certify_nonzero(e, s, None)
+            w = _certify_nonzero_in(e, s, boxes, depth)
             st = REFUTED if w else INCONCLUSIVE
             return Result(value=False if w else None, status=st,
                           witness={"generation": True, "lambda": lam, "tau": tau,
                                    "statement": f"a^n(exp(-({lam}) h/2)) != 2 exp(-({lam}) tau h/2)",
                                    "counterexample": w},
                           provenance={"method": "exact identity test + acb ball evaluation"})
-    return Result(value=True, status=CERTIFIED, witness={"tau": tau, "lambdas": list(lambdas)},
-                  provenance={"method": "exact generalized sum rules at every level (sympy)"})
+    wit = {"tau": tau, "lambdas": list(lambdas)}
+    if boxes:
+        wit["box"] = {k: tuple(v) for k, v in boxes.items()}
+    return Result(value=True, status=CERTIFIED, witness=wit,
+                  provenance={"method": "exact generalized sum rules at every level and every parameter (sympy)"})
 
 
 def exponential_frequencies(s: LevelDependentScheme, values: Mapping[str, Any] | None = None) -> Result:

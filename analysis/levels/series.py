@@ -60,7 +60,7 @@ import flint
 import sympy as sp
 
 from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _residue_groups, ball_to_interval,
-                     coefficient_differences, leading_asymptotics, taylor_models, workprec)
+                     coefficient_differences, entire_form, leading_asymptotics, taylor_models, workprec)
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 
@@ -426,9 +426,12 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0
         return r
     parts = [same_support(s, c, N=N, depth=depth - 1) for c in _bisect(env)]
     if all(p.is_certified for p in parts):
-        return Result(value=True, status=CERTIFIED,
-                      witness={"same_support": True, "support": (s.start, s.end),
-                               "sub_boxes": sum(p.witness.get("sub_boxes", 1) for p in parts)},
+        wit = {"same_support": True, "support": (s.start, s.end),
+               "sub_boxes": sum(p.witness.get("sub_boxes", 1) for p in parts)}
+        vanishing = list(dict.fromkeys(x for p in parts for x in p.witness.get("vanishing_limit_coefficients", ())))
+        if vanishing:
+            wit["vanishing_limit_coefficients"] = vanishing
+        return Result(value=True, status=CERTIFIED, witness=wit,
                       provenance={"method": "arb enclosures (n < N) + Taylor tail (n >= N), bisected boxes",
                                   "N": N})
     return next(p for p in parts if not p.is_certified)
@@ -439,7 +442,7 @@ def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result
     lim = s._limits
     models = taylor_models(s, env)
     q = s.order()
-    bad = []
+    bad, exact, level_cache = [], [], {}
     with workprec(128):
         from .level_dependent import _ball, _to_ball
 
@@ -448,6 +451,10 @@ def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result
         for k, (c, c0) in enumerate(zip(s.mask, lim)):
             b0 = _ball(c0, envb, False)
             if b0.contains(0):
+                how = _same_index_support(c, c0, env, envb)
+                if how:
+                    exact.append((s.start + k, how))
+                    continue
                 if any(isinstance(v, tuple) for v in env.values()) or sp.simplify(
                         c.subs({p: env[p.name] for p in s.params})) != 0:
                     bad.append((s.start + k, "limit coefficient not certified nonzero, level coefficient not identically 0"))
@@ -457,17 +464,52 @@ def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result
                 if not abs(b0) > A:
                     bad.append((s.start + k, "tail"))
                     continue
+                direct = entire_form(c)
                 for n in range(N):
-                    g = coefficient_differences(s, n, env)[k]
-                    if (b0 + g).contains(0):
+                    if n not in level_cache:
+                        level_cache[n] = coefficient_differences(s, n, env)
+                    g = level_cache[n][k]
+                    # a^n_k = a_k + (a^n_k - a_k), or enclosed directly (less dependency on wide boxes)
+                    if (b0 + g).contains(0) and _ball(direct, {**envb, "h": flint.arb(2) ** (-n)}, False).contains(0):
                         bad.append((s.start + k, f"level {n}"))
                         break
     if bad:
         return Result(value=None, status=INCONCLUSIVE, witness={"same_support": None, "failed": bad},
                       provenance={"method": "arb enclosures + Taylor tail"})
-    return Result(value=True, status=CERTIFIED,
-                  witness={"same_support": True, "support": (s.start, s.end)},
+    wit = {"same_support": True, "support": (s.start, s.end)}
+    if exact:
+        wit["vanishing_limit_coefficients"] = [f"a_{i}: {how}" for i, how in exact]
+    return Result(value=True, status=CERTIFIED, witness=wit,
                   provenance={"method": "arb enclosures (n < N) + Taylor tail (n >= N)", "N": N})
+
+
+def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str | None:
+    """Why ``a^n_k != 0 <=> a_k != 0`` holds at one index for every level and every parameter of
+    the box although ``a_k`` may vanish there, or ``None``.
+
+    * ``a^n_k - a_k`` is identically 0 (a level-independent coefficient, exact): both vanish together;
+    * ``a^n_k = r(h) a_k`` exactly, with ``r`` enclosed away from 0 (and finite) for every
+      ``h in [0, 1]`` (all levels ``h = 2^-n``, ``n >= 0``, at once) over the box.
+    """
+    if sp.simplify(c - c0) == 0:
+        return "a^n_k = a_k for every n (exact)"
+    if c0 == 0:
+        return None
+    r = sp.simplify(c / c0)
+    if r.has(sp.zoo, sp.nan, sp.oo) or sp.simplify(c - r * c0) != 0:
+        return None
+    names = set(env)
+    if not {x.name for x in r.free_symbols} <= names | {"h"}:
+        return None
+    from .level_dependent import _ball
+
+    try:
+        b = _ball(entire_form(r), {**envb, "h": flint.arb("0.5", "0.5")}, False)
+    except (AnalysisError, ValueError, ZeroDivisionError):
+        return None
+    if b.is_finite() and not b.contains(0):
+        return f"a^n_k = r(h) a_k exactly, r = {sp.sstr(r)} enclosed away from 0 for all h in [0, 1] (arb)"
+    return None
 
 
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,

@@ -264,8 +264,51 @@ def _violation_set(a: LaurentSymbol, m: int, j: int, p: sp.Symbol, k: int) -> tu
     return V, unused
 
 
+def _norm_below_at(a, m, j, p, x, L_max):
+    """The smallest L <= L_max with ``||(1/m S_{a_{j+1}})^L|| < 1`` exactly at the algebraic point x."""
+    from ..algebra.algebraic import RealAlgebraic
+    from ..stationary.normset import _norm_below_at_point, _residue_polys
+
+    X = RealAlgebraic.from_expr(x)
+    for L in range(1, min(L_max, 6) + 1):
+        _, by_res = _residue_polys(a, j + 1, L, "paper", p, m)
+        if _norm_below_at_point(by_res, X, 1):
+            return L
+    return None
+
+
+def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False):
+    """Shrink the undecided part with the exact parametric norm tests on each of its intervals."""
+    from .interior import ck_interior
+
+    parts = undecided.args if isinstance(undecided, sp.Union) else (undecided,)
+    covered = []
+    for part in parts:
+        if isinstance(part, sp.FiniteSet):
+            for x in part:
+                L = _norm_below_at(a, m, j, p, x, L_max)
+                if L is not None:
+                    S = S.union(sp.FiniteSet(x))
+                    covered.append({"point": sp.sstr(x), "L": L})
+                    continue
+                v = smoothness_mary(a.subs({p: x}), m, j, budget_seconds=10.0)   # certified verdict there
+                if v.value is True and v.status == CERTIFIED:
+                    S = S.union(sp.FiniteSet(x))
+                    covered.append({"point": sp.sstr(x), "verdict": v.witness.get("reason")})
+            continue
+        if points_only or not isinstance(part, sp.Interval) or not (part.start.is_finite and part.end.is_finite):
+            continue
+        r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max, budget_seconds=30.0)
+        C = r.value["certified"].to_sympy()
+        if C != sp.EmptySet:
+            S = S.union(C)
+            covered.append({"interval": str(part), "certified": str(r.value["certified"]),
+                            "pieces": len(r.witness["pieces"])})
+    return S, covered
+
+
 def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence = (1, 2, 3),
-                  within=(-sp.oo, sp.oo)) -> Result:
+                  within=(-sp.oo, sp.oo), interior_L_max: int = 8) -> Result:
     """Where is the one-parameter m-ary family ``C^j``?  Both sides certified where possible.
 
     * **C^j** (sufficient): the union over ``L in Ls`` of the exact sets where the m-ary Dyn–Levin test
@@ -276,6 +319,9 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     ``value`` is the C^j set (a sympy set); ``witness["not_Cj"]`` the proven complement part,
     ``witness["undecided"]`` what neither covers inside ``within`` (empty: the range is exact, certified
     on both sides; otherwise points there can be decided one by one with :func:`smoothness_mary`).
+    What the norm sets leave undecided is first covered, where possible, by the exact parametric
+    norm tests with L <= ``interior_L_max`` (:func:`analysis.regularity.interior.ck_interior`;
+    ``witness["interior_tests"]``; 0 turns this off).
     Uses the generic ``k`` (``N - 1`` identically in the parameter).
     """
     from ..stationary.normset import _parameter, norm_solution_set
@@ -296,11 +342,19 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     V, unused = _violation_set(a, m, j, p, k)
     V = V.intersect(box)
     undecided = box - S.union(V)
+    covered = []
+    if interior_L_max and undecided != sp.EmptySet:
+        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max)
+        undecided = box - S.union(V)
+        if undecided != sp.EmptySet:     # isolated points left (e.g. closed ends of the intervals)
+            S, more = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, points_only=True)
+            covered += more
+            undecided = box - S.union(V)
     exact = undecided.is_empty is True or undecided == sp.EmptySet
     return Result(value=S, status=CERTIFIED if exact else INCONCLUSIVE,
                   witness={"parameter": p.name, "j": j, "k": k, "arity": m, "not_Cj": V, "undecided": undecided,
                            "norm_sets": per_L, "nonlinear_factors": unused,
-                           "exact": exact},
+                           "exact": exact, "interior_tests": covered},
                   provenance={"method": "m-ary Dyn-Levin norm sets (C^j) and exact real eigenvalues of the "
                                         "transition matrices (not C^j)", "arity": m})
 

@@ -12,9 +12,10 @@ refuted by :func:`analysis.regularity.ranges.verify_smoothness_interval`) and wh
 printed interval actually is.
 
 What is certified: each C^j verdict at the grid points and on both sides of each boundary, the
-boundaries themselves (exact or to ``tol``), the enclosure of alpha at each sample point, the
-verdict on the claimed range. What is *sampled*: the C^j set between grid points when the norm
-tests do not cover it (then the ``C^j`` line says so), and the maximum of alpha (the largest
+boundaries themselves (exact or to ``tol``), the interior of each run up to explicit strips next
+to ends of eigenvalue type (exact parametric norm tests, :mod:`analysis.regularity.interior`),
+the enclosure of alpha at each sample point, the verdict on the claimed range. What is *not
+proven*: those strips (the ``C^j`` line lists them), and the maximum of alpha (the largest
 certified value at the sample points, not a certified maximum over the interval).
 
 Examples
@@ -138,6 +139,23 @@ def _exceptional(a, p, lo, hi) -> dict:
 
 
 
+def _interior_status(r) -> str:
+    """The status cell of a C^j set that is not certified as a whole: what the norm tests left."""
+    if not r.witness.get("boundaries_certified"):
+        return r.status
+    its = [x.get("interior") or {} for x in r.value]
+    if its and all("certified" in it for it in its):
+        strips = [s for it in its for s in it["strips"]]
+        return ("boundaries certified; interior certified (exact parametric norm tests) except "
+                + ", ".join(f"({_num(x)}, {_num(y)})" for x, y in strips))
+    return "boundaries certified, interior sampled"
+
+
+def _num(x) -> str:
+    x = sp.sympify(x)
+    return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ≈ {float(sp.N(x, 20)):.10g}"
+
+
 def _short(b: dict) -> str:
     v = _value(b)
     return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
@@ -209,8 +227,7 @@ class SmoothnessProfile(Kind):
                                  "certified)" for q in iso]) or "empty"
             proven = r.status == CERTIFIED
             all_cert &= proven
-            rows.append((f"C^{j}", runs, "certified" if proven else "boundaries certified, interior sampled"
-                         if r.witness.get("boundaries_certified") else r.status))
+            rows.append((f"C^{j}", runs, "certified" if proven else _interior_status(r)))
             for i, x in enumerate(r.value):
                 for side in ("left", "right"):
                     b = x[side]
@@ -244,8 +261,10 @@ class SmoothnessProfile(Kind):
             if all_cert:
                 return self.certified(f"smoothness profile of {self.where_text()}", evidence=ev, numbers=nums,
                                       sharpness=profile)
-            return self.inconclusive(f"smoothness profile of {self.where_text()} (boundaries certified, some interiors sampled)",
-                                     settle="norm tests covering each run's interior (a larger L or finer boxes)",
+            return self.inconclusive(f"smoothness profile of {self.where_text()} (boundaries certified, some interiors "
+                                     "not covered by the norm tests)",
+                                     settle="the strips next to ends of eigenvalue type: an extremal (invariant "
+                                            "polytope) norm on parameter boxes, or the norm tests with a larger L",
                                      evidence=ev, numbers=nums, sharpness=profile)
         cj = claim["j"]
         clo, chi, _, _ = parse_interval(claim["interval"])
