@@ -1,5 +1,5 @@
-"""Seed 003, Sections 4-5: the stencil sums of (2), (3) and the normalized schemes (4), (5);
-equation (7) and Theorem 5.1 (symmetry of the basic limit function)."""
+"""Seed 003, Sections 4-5: the normalized schemes (4), (5); equation (7) and Theorem 5.1 (symmetry
+of the basic limit function). The stencil sums of (2), (3) are data (kind identity, paper.toml)."""
 
 from __future__ import annotations
 
@@ -9,27 +9,10 @@ from analysis import claims as C
 from analysis.result import CERTIFIED, INCONCLUSIVE, Result
 from schemes.seed003 import ALPHA, HYPERBOLIC_NORMALIZED, TRIGONOMETRIC, TRIGONOMETRIC_NORMALIZED
 
-from .derivations import _VALS, _f, _s, _stationary, to_h_expr
+from .derivations import _VALS, _f, _s, _stationary
 
 
 # -------------------------------------------------------------------------- Section 4
-def _sum_identity(form, total, name):
-    from analysis.levels.bounds import check_identity
-
-    r = check_identity(form.stencil_sum(), total)
-    odd = sum(c for i, c in enumerate(form.mask) if (form.start + i) % 2)
-    r2 = check_identity(odd, total)
-    ev = [C.Evidence(f"even stencil sum of {name} = printed closed form", result=r,
-                     latex=sp.latex(to_h_expr(total))),
-          C.Evidence("odd stencil sum = the same", result=r2)]
-    if r.status == "certified" and r2.status == "certified":
-        return C.certified(f"True: both stencil sums of {name} equal the printed closed form exactly (so a^n(-1) = 0 "
-                           "and a^n(1) = 2 x the printed sum).", evidence=ev)
-    if "refuted" in (r.status, r2.status):
-        return C.refuted("the printed sum is wrong", _s(form.stencil_sum()), evidence=ev)
-    return C.inconclusive("not settled", settle="exact simplification", evidence=ev)
-
-
 def _normalized_constants():
     from analysis.levels.bounds import check_identity
     from analysis.levels.reproduction import reproduction

@@ -17,12 +17,7 @@ import sympy as sp
 
 from schemes.seed003 import HYPERBOLIC_NORMALIZED, JENA_11, TRIGONOMETRIC, TRIGONOMETRIC_NORMALIZED
 
-from .transcription import _Zs
-
-_Z = _Zs
 _OM_HI = (sp.sqrt(6) - 1) / 80          # the paper's right end (sqrt(6) - 1)/80
-_BOX_A = ("1/100", "pi/3")               # the alpha box of the direct (unscaled) checks
-_SCALE_A = ("pi/6", "pi/3")              # alpha box that covers every x = alpha/2^n in (0, pi/6] (n >= 1)
 _VALS = {"alpha": sp.pi / 5, "omega": sp.Rational(1, 100)}
 _C2_PROVEN_HI = sp.Rational(1, 50)        # C^2 of rule (1) is proven on all of (0, 1/50)
 
@@ -84,12 +79,6 @@ def _norm_sets():
 
     a = _stationary()
     return {L: norm_solution_set(a, m=3, L=L, within=(0, sp.oo)) for L in (1, 2, 3)}
-
-
-def to_h_expr(e):
-    from analysis.levels.level_dependent import to_h
-
-    return to_h(e)
 
 
 # -------------------------------------------------------------------------- Sections 6-7
