@@ -32,7 +32,7 @@ W = sp.Symbol("w")
 FAMILY = LaurentSymbol.from_mask([W, sp.Rational(1, 2) - W, sp.Rational(1, 2) - W, W], start=-2) * 2
 
 
-@pytest.mark.parametrize("pid, n_python, n_profile", [("003", 14, 1), ("004", 47, 2)])
+@pytest.mark.parametrize("pid, n_python, n_profile", [("003", 9, 1), ("004", 47, 2)])
 def test_bundled_papers_are_paper_files(pid, n_python, n_profile):
     """Every claim of the golden file is in paper.toml; old claims are python, new ones profiles."""
     import importlib

@@ -10,15 +10,15 @@ extraction, lightly de-marked-up), our reading, the kind and its fields. Its sch
 Data, no Python (issue 11): the inequalities (1)-(6) of Sect. 3.3 and Lemmas 3.1-3.2 (kind
 ``inequality``: parts, dilation cover, exact cancellation, corrections), the definition items and
 stencil sums (kind ``identity``), the factorizations of Lemma 3.3 and Corollary 3.1 (kind
-``factorization``), the printed d(z) of Lemma 3.4 and the smoothness profile of rule (1). The
+``factorization``), the printed d(z) of Lemma 3.4, the curve comparisons of Sects. 6-7 (kind
+``curve comparison``) and the smoothness profile of rule (1). The
 bespoke evaluators that the remaining ``python`` claims name are here:
 
-* :mod:`.derivations` — computations shared by several claims (C^2 set of rule (1), norm sets,
-  curve deviations);
-* :mod:`.figures` — the alpha(omega) plot and the curve comparisons;
+* :mod:`.derivations` — computations shared by several claims (C^2 set of rule (1), norm sets);
+* :mod:`.figures` — the alpha(omega) plot;
 * the evaluators by section: :mod:`.claims_sec2`, :mod:`.claims_sec3_lemmas` (Lemma 3.4),
   :mod:`.claims_sec3_theorem` (Theorem 3.1, Corollary 3.2), :mod:`.claims_sec4_5` (normalized
-  schemes, (7), Theorem 5.1), :mod:`.claims_sec6_7` (curve comparisons); :mod:`.by_name` calls
+  schemes, (7), Theorem 5.1); :mod:`.by_name` calls
   those whose arguments are scheme objects by the form's name.
 
 Every verdict is computed by the engine, never typed in.

@@ -33,6 +33,9 @@ Examples
 ('CERTIFIED TRUE', [('at 0', 1)])
 >>> Identity({"lhs": "(1+z)**2", "rhs": "1 + z**2"}, {}, "x").evaluate().label
 'REFUTED'
+>>> v = Identity({"lhs": "ceiling(d/2)", "rhs": "floor(d/2) + 1", "integers": {"d": "[1, 6]"}}, {}, "x").evaluate()
+>>> v.label, [(n.name, n.value) for n in v.numbers]
+('REFUTED', [('first counterexample d', 2)])
 
 Algorithm
 ---------
@@ -50,13 +53,14 @@ F. Johansson, *Arb*, IEEE Trans. Comput. 66 (2017). W. Tucker, *Validated Numeri
 
 from __future__ import annotations
 
+import itertools
 from typing import Any
 
 import sympy as sp
 
 from ...levels.bounds import _exact_zero, check_identity, check_inequality
 from ...levels.level_dependent import H, N, to_h
-from ...result import CERTIFIED, REFUTED, AnalysisError
+from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ..model import Number, Verdict
 from .base import Kind, evidence, parse_interval, parse_number
 
@@ -112,8 +116,12 @@ class _Expressions(Kind):
         for k, v in (self.get("where") or {}).items():
             if k in ("n", "h", "z", "a", "symbol", "limit"):
                 raise AnalysisError(f"{self.where}: 'where' cannot redefine {k!r}")
-            loc[k] = self.expr(v, f"where {k}")
+            loc[k] = self.expr(v, f"where {k}", free=self.free_names())
         return loc
+
+    def free_names(self) -> bool:
+        """May expressions use names that are neither defined nor parameters (free variables)?"""
+        return False
 
     def expr(self, text, what: str, free: bool = False) -> sp.Expr:
         loc = self.locals()
@@ -187,6 +195,8 @@ class Inequality(_Expressions):
                 raise AnalysisError(f"{self.where}: 'corrected' is a table {{ statement, lhs, relation, rhs }}")
             self._relation(p)
             self._box(p.get("box", self.get("box")))
+            if self.get("parts") is not None or p is self.get("corrected"):
+                self.expr(p["lhs"], "lhs"), self.expr(p["rhs"], "rhs")     # unknown names fail at load time
 
     def _relation(self, p) -> tuple[bool, bool]:
         if "relation" in p and "strict" in p:
@@ -331,42 +341,86 @@ class Identity(_Expressions):
     summary = "an exact identity lhs == rhs (or parts) in z, n and the parameters (sympy; acb counterexample)"
     optional = {"lhs": "expression", "rhs": "expression", "parts": "[{ label, lhs, rhs }]: every one must hold",
                 "numbers": "{ name = \"expr\" } exact values reported with the verdict",
-                "corrected": "{ statement, lhs, rhs }: checked when the claim is refuted", **_Expressions.common}
+                "corrected": "{ statement, lhs, rhs }: checked when the claim is refuted (a statement alone is "
+                             "reported as not checked)",
+                "argument": "how the identities settle the claim, one line",
+                "integers": "{ d = \"[3, 10]\" }: integer variables, checked exactly at every value of the range",
+                **_Expressions.common}
     part_keys = {"label", "lhs", "rhs"}
     example = 'lhs = "sin(2*t)"\nrhs = "2*sin(t)*cos(t)"\nnumbers = { "value at t = 0" = "cos(0)" }'
 
     def check(self) -> None:
         super().check()
-        self.parts()
+        self.statements()                    # unknown names fail at load time
         if not isinstance(self.get("numbers", {}), dict):
             raise AnalysisError(f"{self.where}: field 'numbers' is a table {{ name = \"expr\" }}")
+        self.ranges = {}
+        for k, v in (self.get("integers") or {}).items():
+            lo, hi, _, _ = parse_interval(v, f"{self.where}: integers {k}")
+            if not (lo.is_Integer and hi.is_Integer and hi - lo <= 1000):
+                raise AnalysisError(f"{self.where}: integers {k} = \"[lo, hi]\" with integer ends (at most 1000 values)")
+            self.ranges[k] = range(int(lo), int(hi) + 1)
+
+    def _check(self, lhs, rhs, label) -> Result:
+        """check_identity, or exact evaluation at every integer of ``integers``."""
+        if not self.ranges:
+            return check_identity(lhs, rhs, claim=label)
+        names = list(self.ranges)
+        syms = {x.name: x for x in (sp.sympify(lhs).free_symbols | sp.sympify(rhs).free_symbols)}
+        rows, bad = [], None
+        for vals in itertools.product(*self.ranges.values()):
+            sub = {syms[k]: v for k, v in zip(names, vals) if k in syms}
+            a, b = sp.simplify(sp.sympify(lhs).subs(sub)), sp.simplify(sp.sympify(rhs).subs(sub))
+            ok = sp.simplify(a - b) == 0
+            rows.append(tuple(map(str, vals)) + (_s(a), _s(b), "yes" if ok else "NO"))
+            if not ok and bad is None:
+                bad = dict(zip(names, vals))
+        stmt = f"{_s(lhs)} == {_s(rhs)} for " + ", ".join(f"{k} = {r.start}..{r.stop - 1}" for k, r in self.ranges.items())
+        return Result(value=bad is None, status=CERTIFIED if bad is None else REFUTED,
+                      witness={"claim": label, "statement": stmt, "point": bad, "table": (tuple(names) + ("lhs", "rhs",
+                               "equal"),) + tuple(rows)},
+                      provenance={"method": "exact evaluation at every integer of the range"})
+
+    def free_names(self) -> bool:
+        return self._scheme is None          # free variables (t, lambda, d) unless the claim names a scheme
 
     def statements(self) -> list[tuple[str, sp.Expr, sp.Expr]]:
-        return [(p.get("label", ""), self.expr(p["lhs"], "lhs", True), self.expr(p["rhs"], "rhs", True))
+        free = self.free_names()
+        return [(p.get("label", ""), self.expr(p["lhs"], "lhs", free), self.expr(p["rhs"], "rhs", free))
                 for p in self.parts()]
 
     def evaluate(self) -> Verdict:
-        ev, bad, open_ = [], [], []
+        ev, bad, open_, nums = [], [], [], []
         for p, (label, lhs, rhs) in zip(self.parts(), self.statements()):
-            r = check_identity(lhs, rhs, claim=label)
+            r = self._check(lhs, rhs, label)
             label = label or f"{p['lhs']} = {p['rhs']}"
             text = f"{r.witness['statement']}: {r.status}"
-            if r.status == REFUTED:
+            if r.status == REFUTED and "difference" in r.witness:
                 text += (f" (certified nonzero difference {r.witness['difference']} at {r.witness['point']}; "
                          f"difference {_s(r.witness['simplified_difference'])})")
-                bad.append(label)
-            elif r.status != CERTIFIED:
-                open_.append(label)
-            ev.append(evidence(label, r, text=text))
-        nums = [Number(k, sp.simplify(self.expr(v, f"number {k}", True))) for k, v in (self.get("numbers") or {}).items()]
-        if nums:
-            ev.append(evidence("exact values", text="; ".join(f"{n.name} = {_s(n.value)}" for n in nums)))
+            elif r.status == REFUTED:
+                text += f" (first counterexample {r.witness['point']})"
+                nums.extend(Number(f"first counterexample {k}", v) for k, v in r.witness["point"].items())
+            (bad if r.status == REFUTED else open_ if r.status != CERTIFIED else []).append(label)
+            ev.append(evidence(label, r, text=text, table=r.witness.get("table")))
+        vals = [Number(k, sp.simplify(self.expr(v, f"number {k}", self.free_names())))
+                for k, v in (self.get("numbers") or {}).items()]
+        if vals:
+            ev.append(evidence("exact values", text="; ".join(f"{n.name} = {_s(n.value)} ≈ {float(n.value):.12g}"
+                                                               for n in vals)))
+        nums += vals
+        if self.get("argument"):
+            ev.append(evidence("argument", text=self.get("argument")))
         if bad:
-            summary = f"false: {', '.join(bad)} (certified nonzero difference at a rational point)"
+            summary = f"false: {', '.join(bad)} " + ("(exact counterexample)" if self.ranges else
+                                                      "(certified nonzero difference at a rational point)")
             corr = self.get("corrected")
-            if corr is None:
-                return self.refuted(summary, corrected="see the certified difference", evidence=ev, numbers=nums)
-            rc = check_identity(self.expr(corr["lhs"], "corrected", True), self.expr(corr["rhs"], "corrected", True))
+            if corr is None or "lhs" not in corr:
+                return self.refuted(summary, corrected=(corr or {}).get("statement", "see the certified difference")
+                                    + (" (a reading, not checked here)" if corr else ""), evidence=ev, numbers=nums)
+            free = self.free_names()
+            rc = self._check(self.expr(corr["lhs"], "corrected", free), self.expr(corr["rhs"], "corrected", free),
+                             "corrected")
             ev.append(evidence("corrected statement", rc, text=f"{rc.witness['statement']}: {rc.status}"))
             if rc.status != CERTIFIED:
                 return self.inconclusive(summary + "; the correction could not be certified",
@@ -377,7 +431,9 @@ class Identity(_Expressions):
                                      settle="an exact simplification or a certified nonzero value", evidence=ev,
                                      numbers=nums)
         stated = "; ".join(p.get("label") or f"{p['lhs']} = {p['rhs']}" for p in self.parts())
-        return self.certified(f"True (exact, for every level and parameter): {stated}", evidence=ev, numbers=nums)
+        where = (", ".join(f"every integer {k} in [{r.start}, {r.stop - 1}]" for k, r in self.ranges.items())
+                 if self.ranges else "every level and parameter")
+        return self.certified(f"True (exact, for {where}): {stated}", evidence=ev, numbers=nums)
 
 
 class Factorization(Identity):

@@ -60,7 +60,7 @@ class Python(Kind):
     required = {"evaluator": "\"package.module:function\""}
     optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")",
                 "args": "positional arguments of the evaluator (a list of TOML values; default none)"}
-    example = 'evaluator = "papers.seed000.claims:_v_eta"'
+    example = 'evaluator = "papers.seed000.claims:_v_s_d"'
 
     def check(self) -> None:
         ev = self.get("evaluator")
