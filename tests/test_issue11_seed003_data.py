@@ -100,6 +100,18 @@ def test_identity_with_scheme_coefficients():
     assert v.status == "refuted" and v.evidence[0].result.provenance["method"] == "acb ball evaluation at a rational point"
 
 
+def test_identity_at_parameter_values_in_their_domain():
+    from analysis.claims.kinds import Domain
+
+    dom = {"4pt": SchemeSpec("4pt", FOUR, {"w": Domain.parse("(-1/4, pi/12)")})}
+    run_ = lambda **f: KIND_CLASSES["identity"]({"scheme": "4pt", **f}, dom, "t").evaluate()  # noqa: E731
+    assert run_(lhs="a(3)", rhs="-1/16", at={"w": "1/16"}).status == "certified"
+    v = run_(lhs="a(3)", rhs="-1/16", at={"w": "pi/16"})          # pi/16 < pi/12: inside; -pi/16 != -1/16
+    assert v.status == "refuted" and "w = pi/16" in v.summary
+    with pytest.raises(AnalysisError, match="outside its domain"):
+        run_(lhs="a(3)", rhs="-1/16", at={"w": "pi/12"})
+
+
 def test_factorization_against_polynomial_division():
     z = sp.Symbol("z")
     q, r = sp.div(sp.expand(FOUR.expr() * z ** 3), ((1 + z) / 2) ** 2, z)

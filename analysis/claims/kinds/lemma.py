@@ -243,7 +243,7 @@ class Inequality(_Expressions):
             lo, hi = box[dil] if isinstance(box[dil], tuple) else (None, None)
             if lo != 0:
                 raise AnalysisError(f"{self.where}: dilation {dil!r} needs box {dil} = \"(0, X)\"")
-            sym = next(x for x in (L.free_symbols | R.free_symbols) if x.name == dil)
+            sym = next((x for x in (L.free_symbols | R.free_symbols) if x.name == dil), sp.Symbol(dil))
             inv = all(_exact_zero(e.subs({sym: 2 * sym, H: H / 2}, simultaneous=True) - e) for e in diffs)
             if not inv:
                 raise AnalysisError(f"{self.where}: the sides do not depend on (n, {dil}) through {dil}/2^n only")
@@ -345,6 +345,7 @@ class Identity(_Expressions):
                              "reported as not checked)",
                 "argument": "how the identities settle the claim, one line",
                 "integers": "{ d = \"[3, 10]\" }: integer variables, checked exactly at every value of the range",
+                "at": "{ name = value }: parameter values substituted first (checked against the scheme's domains)",
                 **_Expressions.common}
     part_keys = {"label", "lhs", "rhs"}
     example = 'lhs = "sin(2*t)"\nrhs = "2*sin(t)*cos(t)"\nnumbers = { "value at t = 0" = "cos(0)" }'
@@ -384,9 +385,25 @@ class Identity(_Expressions):
     def free_names(self) -> bool:
         return self._scheme is None          # free variables (t, lambda, d) unless the claim names a scheme
 
+    def _at(self) -> dict:
+        """The substitution of ``at`` (exact values; in the scheme's domains when it has them)."""
+        at = self.get("at") or {}
+        vals = {k: parse_number(v, f"{self.where}: at {k}") for k, v in at.items()}
+        if self._scheme is not None:
+            names = {p.name for p in self._scheme.params}
+            for k, v in vals.items():
+                if k not in names:
+                    raise AnalysisError(f"{self.where}: unknown parameter {k!r} of scheme {self._scheme.name!r}")
+                d = self._scheme.domains.get(k)      # sympy decides pi/5 < pi/3 (RealAlgebraic cannot)
+                if d is not None and not ((d.lo == -sp.oo or bool(v >= d.lo if d.lo_closed else v > d.lo)) and
+                                          (d.hi == sp.oo or bool(v <= d.hi if d.hi_closed else v < d.hi))):
+                    raise AnalysisError(f"{self.where}: {k} = {_s(v)} is outside its domain {d}")
+        loc = self.locals()
+        return {loc.get(k, sp.Symbol(k)): v for k, v in vals.items()}
+
     def statements(self) -> list[tuple[str, sp.Expr, sp.Expr]]:
-        free = self.free_names()
-        return [(p.get("label", ""), self.expr(p["lhs"], "lhs", free), self.expr(p["rhs"], "rhs", free))
+        free, at = self.free_names(), self._at()
+        return [(p.get("label", ""), self.expr(p["lhs"], "lhs", free).subs(at), self.expr(p["rhs"], "rhs", free).subs(at))
                 for p in self.parts()]
 
     def evaluate(self) -> Verdict:
@@ -412,8 +429,9 @@ class Identity(_Expressions):
         if self.get("argument"):
             ev.append(evidence("argument", text=self.get("argument")))
         if bad:
+            at = ", ".join(f"{k} = {v}" for k, v in (self.get("at") or {}).items())
             summary = f"false: {', '.join(bad)} " + ("(exact counterexample)" if self.ranges else
-                                                      "(certified nonzero difference at a rational point)")
+                                                      f"(certified nonzero difference at {at or 'a rational point'})")
             corr = self.get("corrected")
             if corr is None or "lhs" not in corr:
                 return self.refuted(summary, corrected=(corr or {}).get("statement", "see the certified difference")
@@ -444,7 +462,8 @@ class Factorization(Identity):
     required = {"scheme": "the scheme whose symbol is factored", "factor": "e.g. \"(1+z)/2\"",
                 "cofactor": "the printed cofactor e(z)"}
     optional = {"numbers": Identity.optional["numbers"], "where": _Expressions.common["where"]}
-    example = 'scheme = "exp-chaikin"\nfactor = "(1+z)/2"\ncofactor = "2*symbol/(1+z)"'
+    example = ('scheme = "exp-chaikin"\nfactor = "(1 + z)/2"\n'
+               'cofactor = "(1 + 2*cosh(t*h/2)*z + z**2)/((1 + cosh(t*h/2))*z**2)"')
 
     def parts(self, keys=("lhs", "rhs")) -> list[dict]:
         return [{"label": f"a(z) = ({self.get('factor')}) e(z)", "lhs": "symbol",

@@ -1,5 +1,6 @@
-"""Claim kinds that need no scheme: a lemma inequality over (n, parameter box), a claim that is
-cited and not checkable here, and a bespoke Python evaluator referenced by dotted name.
+"""Claim kinds that need no scheme: a claim that is cited and not checkable here, and a bespoke
+Python evaluator referenced by dotted name. The lemma inequality over (n, parameter box) lives in
+:mod:`.lemma` with the other lemma kinds and is re-exported here (its first-edition form below).
 
 Examples
 --------
@@ -16,7 +17,7 @@ analysis.result.AnalysisError: x: cannot import the evaluator module 'no.such.mo
 Algorithm
 ---------
 The inequality is proven by Arb branch and bound for the first levels and a Taylor model in
-``h = 2^-n`` for the tail (:func:`analysis.levels.bounds.check_inequality`).
+``h = 2^-n`` for the tail (:func:`analysis.levels.bounds.check_inequality`; see :mod:`.lemma`).
 
 References
 ----------
