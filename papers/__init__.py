@@ -14,7 +14,24 @@ def load_bundled(init_file: str):
     """The ``PAPER`` of a bundled paper folder: its ``paper.toml`` (beside ``init_file``), with
     schemes given by catalogue name resolved in :mod:`schemes` (the engine may not import the
     catalogue, so the paper supplies the lookup)."""
-    import schemes
     from analysis.claims.paperfile import load_paper
 
-    return load_paper(Path(init_file).with_name("paper.toml"), catalogue=schemes.get)
+    paper = load_paper(Path(init_file).with_name("paper.toml"), catalogue=catalogue)
+    # the folder's package (so that golden_path finds verdicts.json without papers() having run)
+    object.__setattr__(paper, "origin", f"{__name__}.{Path(init_file).parent.name}")
+    return paper
+
+
+def catalogue(name: str):
+    """A catalogue entry by slug: a stationary scheme (:func:`schemes.get`) or, failing that, a
+    level-dependent one (:func:`schemes.level_dependent.get`)."""
+    import schemes
+    import schemes.level_dependent as ld
+    from analysis.result import AnalysisError
+
+    try:
+        return schemes.get(name)
+    except AnalysisError:
+        if name in ld.names():
+            return ld.get(name)
+        raise

@@ -152,9 +152,9 @@ LEVEL_ENTRIES: dict[str, LevelDependentScheme] = {
 # --------------------------------------------------------------------------------------------
 # transitional: the paper's lemma inequalities, as printed (checked in tests/test_bounds.py)
 # --------------------------------------------------------------------------------------------
-# They belong to papers.seed003.transcription (which re-exports them), but `subdiv bound --claim ID`
-# (analysis/cli/levels.py) reads them from this module, and the catalogue may not import the
-# papers: move them when the command reads papers.seed003 (layout issue 10).
+# papers/seed003/paper.toml states the same items as data (kind inequality); `subdiv bound --claim ID`
+# (analysis/cli/levels.py) reads these tables, and the catalogue may not import the papers: drop them
+# when the command reads the paper file (layout issue 10).
 
 _X = ALPHA / 2 ** N  # the paper's alpha/2^n
 _C, _CH = sp.cos(_X), sp.cosh(_X)

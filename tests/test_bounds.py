@@ -7,9 +7,25 @@ import sympy as sp
 
 from analysis.levels.bounds import check_identity, check_inequality
 from analysis.levels.level_dependent import N
-from papers.seed003 import transcription as T
-from papers.seed003.claims_sec3_lemmas import _identity_item
+from analysis.claims.kinds import KIND_CLASSES, SchemeSpec
 from schemes import seed003 as S
+from schemes.seed003 import OMEGA as W
+
+T = S      # the lemma tables of Sect. 3.3 (schemes.seed003, read by `subdiv bound --claim`)
+_z = sp.Symbol("z")
+
+
+def lemma_3_3_e(coeffs):
+    """Lemma 3.3's e^n(z) as printed (transcribed here independently of paper.toml)."""
+    b0, b1, b2, b3 = coeffs
+    z = _z
+    return 2 * (b3 * z ** -4 + (b0 - b3) * z ** -3 - (b0 - b2 - b3) * z ** -2
+                + (b0 - b2 + b1 - b3) * z ** -1 + (-b0 + b3 + b2) + (b0 - b3) * z + b3 * z ** 2)
+
+
+#: Lemma 3.4's d(z) as printed
+LEMMA_3_4_D = 2 * (5 * W * _z ** -4 + 2 * W * _z ** -3 - (1 + 20 * W) / 4 * _z ** -2
+                   + (-1 - 8 * W) / 2 * _z ** -1 + (-1 - 20 * W) / 4 + 2 * W * _z + 5 * W * _z ** 2)
 
 BOX = {"alpha": ("1/100", "pi/3"), "omega": "1/100"}
 
@@ -60,16 +76,16 @@ def test_normalization_sums_are_proven(form, total):
                          ids=["lemma-3.3", "corollary-3.1"])
 def test_lemma_3_3_factorization_proven(coeffs, form):
     z = sp.Symbol("z")
-    e = T.lemma_3_3_e(coeffs)
+    e = lemma_3_3_e(coeffs)
     assert check_identity(form.symbol_expr(), (1 + z) / 2 * e).status == "certified"
 
 
 def test_lemma_3_4_d_is_refuted_and_minus_d_is_the_limit():
     z = sp.Symbol("z")
     e = S.TRIGONOMETRIC.difference(1).limit().expr()
-    assert check_identity(T.LEMMA_3_4_D, e).status == "refuted"
-    assert check_identity(T.LEMMA_3_4_D, -e).status == "certified"
-    assert T.LEMMA_3_4_D.subs(z, 1) == -2
+    assert check_identity(LEMMA_3_4_D, e).status == "refuted"
+    assert check_identity(LEMMA_3_4_D, -e).status == "certified"
+    assert LEMMA_3_4_D.subs(z, 1) == -2
 
 
 def test_negative_first_level_rejected():
@@ -80,10 +96,13 @@ def test_negative_first_level_rejected():
 
 
 def test_identity_items_refute_only_with_a_certified_value():
-    """Lemma 3.1/3.2 definition items: a wrong identity is refuted with a ball-certified nonzero value."""
-    ok = _identity_item(S.BETA[0], -7 * S.OMEGA, "beta_0^n = -7 omega")
-    assert ok.status == "certified"
-    bad = _identity_item(S.BETA[0], -5 * S.OMEGA, "beta_0^n = -5 omega")
+    """Lemma 3.1/3.2 definition items (kind identity): a wrong identity is refuted with a ball-certified
+    nonzero value."""
+    form2 = {"form2": SchemeSpec("form2", None, level=S.TRIGONOMETRIC)}
+    run = lambda rhs: KIND_CLASSES["identity"]({"scheme": "form2", "where": {"beta_0": "a(2)"},  # noqa: E731
+                                                "lhs": "beta_0", "rhs": rhs}, form2, "t").evaluate()
+    assert run("-7*omega").status == "certified"
+    bad = run("-5*omega")
     assert bad.status == "refuted"
     r = bad.evidence[0].result
     assert r.status == "refuted" and r.provenance["method"] == "acb ball evaluation at a rational point"

@@ -11,7 +11,6 @@ import sympy as sp
 from analysis.claims.model import compare_verdicts, evaluate_claim, verdicts_json
 from papers.seed003 import PAPER
 from papers.seed003.derivations import _stationary
-from papers.seed003.transcription import LEMMA_3_4_D
 from schemes import seed003 as S
 
 Z, W = sp.Symbol("z"), S.OMEGA
@@ -78,6 +77,8 @@ def test_true_c2_end_is_root_of_quartic(evaluated):
 
 def test_lemma_3_4_d_of_one_is_minus_two(evaluated):
     """Independent: the printed d(1) = -2, while e = 2a/(1+z) has e(1) = a(1) = 2; d = -e exactly."""
+    LEMMA_3_4_D = 2 * (5 * W * Z ** -4 + 2 * W * Z ** -3 - (1 + 20 * W) / 4 * Z ** -2   # as printed
+                       + (-1 - 8 * W) / 2 * Z ** -1 + (-1 - 20 * W) / 4 + 2 * W * Z + 5 * W * Z ** 2)
     assert LEMMA_3_4_D.subs(Z, 1) == -2
     a = _stationary().expr()
     e = sp.cancel(2 * a / (1 + Z))

@@ -32,7 +32,7 @@ W = sp.Symbol("w")
 FAMILY = LaurentSymbol.from_mask([W, sp.Rational(1, 2) - W, sp.Rational(1, 2) - W, W], start=-2) * 2
 
 
-@pytest.mark.parametrize("pid, n_python, n_profile", [("003", 41, 1), ("004", 47, 2)])
+@pytest.mark.parametrize("pid, n_python, n_profile", [("003", 9, 1), ("004", 47, 2)])
 def test_bundled_papers_are_paper_files(pid, n_python, n_profile):
     """Every claim of the golden file is in paper.toml; old claims are python, new ones profiles."""
     import importlib
@@ -48,10 +48,10 @@ def test_bundled_papers_are_paper_files(pid, n_python, n_profile):
 def test_python_claim_args():
     """`args` are passed to the evaluator; a non-list is a one-line error."""
     base = ('[paper]\nid = "t"\ntitle = "t"\n[[claims]]\nid = "A"\nstatement = "s"\nkind = "python"\n'
-            'evaluator = "papers.seed003.by_name:definition"\n')
-    p = parse_paper(base + 'args = ["3.1", "i"]\n', "t.toml")
+            'evaluator = "analysis.claims.model:inconclusive"\n')
+    p = parse_paper(base + 'args = ["the arguments reach the evaluator", "both of them"]\n', "t.toml")
     v = p.claims[0].evaluate()
-    assert v.status == "certified" and "beta_0^n = -7 omega" in v.evidence[0].title
+    assert v.status == "inconclusive" and (v.summary, v.settle) == ("the arguments reach the evaluator", "both of them")
     with pytest.raises(AnalysisError, match="args must be a list"):
         parse_paper(base + 'args = "3.1"\n', "t.toml")
 

@@ -89,9 +89,8 @@ def test_inequality_cited_python():
     assert run("inequality", lhs="2**(-n)", rhs="sin(2**(-n))", n0=1, strict=True).status == "refuted"
     v = run("cited", source="[3]", settle="the proof in [3]")
     assert v.status == "inconclusive" and v.settle == "the proof in [3]"
-    from papers.seed000.claims import _v_eta
-
-    assert run("python", evaluator="papers.seed000.claims:_v_eta").status == _v_eta().status
+    v = run("python", evaluator="analysis.claims.model:inconclusive", args=["a bespoke evaluator", "its own test"])
+    assert (v.status, v.summary, v.settle) == ("inconclusive", "a bespoke evaluator", "its own test")
 
 
 def test_level_dependent_kinds():

@@ -63,7 +63,7 @@ Examples
 >>> parse_paper(text.replace('"sum rules"', '"sum rule"'), "chaikin.toml")
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: chaikin.toml: claim 900:Prop1: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
+analysis.result.AnalysisError: chaikin.toml: claim 900:Prop1: unknown kind 'sum rule'; the kinds are: all of, asymptotic equivalence, cited, ck range, curve comparison, eigenvalues, exponential reproduction, factorization, holder, identity, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
 >>> parse_paper("[paper\\nid = 1", "bad.toml")
 Traceback (most recent call last):
 ...
@@ -184,7 +184,10 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
             if catalogue is None:
                 raise AnalysisError("catalogue names need the catalogue (run the file with `subdiv`)")
             entry = catalogue(str(t["catalogue"]))
-            symbol = getattr(entry, "symbol", entry)
+            if isinstance(entry, LevelDependentScheme):       # a level-dependent catalogue entry
+                level, symbol = entry, None
+            else:
+                symbol = getattr(entry, "symbol", entry)
             own = getattr(entry, "arity", 2)
             if arity is not None and arity != own:
                 raise AnalysisError(f"catalogue entry {t['catalogue']!r} has arity {own}, not {arity} "

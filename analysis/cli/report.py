@@ -91,9 +91,9 @@ def is_paper_file(arg: str) -> bool:
 
 
 def _catalogue(name: str):
-    import schemes
+    from papers import catalogue
 
-    return schemes.get(name)
+    return catalogue(name)
 
 
 def load_file(path):

@@ -84,50 +84,6 @@ def check(claim_id: str) -> Result:
 
 
 
-def _v_eta():
-    r = claim_eta()
-    lam = sp.Symbol("lambda")
-    u = sp.Symbol("u")
-    eta = 1 / (2 * (1 + lam))
-    rule3 = {"P_i in P_2i": (1 + 2 * u) / (2 * (1 + u)), "P_i+1 in P_2i": 1 / (2 * (1 + u)),
-             "P_i in P_2i+1": 1 / (2 * (1 + u)), "P_i+1 in P_2i+1": (1 + 2 * u) / (2 * (1 + u))}
-    ours = {"P_i in P_2i": 1 - eta, "P_i+1 in P_2i": eta, "P_i in P_2i+1": eta, "P_i+1 in P_2i+1": 1 - eta}
-    ok = all(sp.simplify(ours[k] - v.subs(u, lam)) == 0 for k, v in rule3.items())
-    res = C.exact_result(ok, "sympy, generic lambda")
-    ev = [C.Evidence("S_2 vs seed 001's rule (3) (u = lambda)", result=res,
-                     table=(("coefficient", "seed 000", "seed 001 (3)"),) + tuple(
-                         (k, sp.sstr(sp.simplify(ours[k])), sp.sstr(v.subs(u, lam))) for k, v in rule3.items())),
-          C.Evidence("engine", result=r)]
-    fixed = sp.simplify(eta.subs(lam, 1)) == sp.Rational(1, 4)
-    if ok and r.status == CERTIFIED and fixed:
-        return C.certified("S_2 is seed 001's degree-2 rule (3) with u = lambda (exact); lambda = 1 gives "
-                           "eta = 1/4, Chaikin's algorithm; every step is a convex combination for lambda >= 0 "
-                           "(0 < eta <= 1/2).", evidence=ev, numbers=[C.Number("eta(1)", sp.Rational(1, 4))])
-    return C.refuted("S_2 differs from seed 001's rule", "see evidence", evidence=ev)
-
-
-def _v_tau():
-    rows, bad = [], []
-    for d in range(3, 11):
-        x = sp.Rational(d - 2, 2)
-        ceil = sp.ceiling(x)
-        gloss = sp.floor(x) + 1           # 'the smallest integer larger than x'
-        rows.append((str(d), sp.sstr(x), str(ceil), str(gloss), "yes" if ceil == gloss else "NO"))
-        if ceil != gloss:
-            bad.append(d)
-    res = C.exact_result(bad, "exact integers")
-    ev = [C.Evidence("ceil((d-2)/2) vs 'the smallest integer larger than (d-2)/2'", result=res,
-                     table=(("d", "(d-2)/2", "ceil", "smallest integer > x", "agree"),) + tuple(rows))]
-    if bad:
-        return C.refuted(f"The gloss is wrong whenever x is an integer, i.e. for every even d (d = {bad[0]}, "
-                         f"{bad[1]}, ...): the smallest integer larger than x = (d-2)/2 is x + 1, not ceil(x) = x. "
-                         "Either reading only shifts the indices of S_d (no effect on the limit curve).",
-                         corrected="tau_d = ceil((d-2)/2) = floor((d-1)/2), where ceil(x) is the smallest integer "
-                                   "not less than x",
-                         evidence=ev, numbers=[C.Number("first_even_d", bad[0])])
-    return C.certified("gloss agrees", evidence=ev)
-
-
 def _v_s_d():
     r = claim_s_d()
     ok_b, ev_b = bspline_special_case()
@@ -211,7 +167,7 @@ def _v_regularity():
         evidence=ev, numbers=[C.Number("omega_d4_junction", js[4].witness["omega_junction"][-1], tol=0.05)])
 
 
-#: the claims and metadata are data (issue 11): papers/seed000/paper.toml, each claim a `python` claim
-#: naming its evaluator above; the file is read once the evaluators exist (they are imported by name)
+#: the claims and metadata are data (issue 11): papers/seed000/paper.toml; S_2 and tau_d are identities
+#: (kind identity), the other claims `python` claims naming their evaluators above (imported by name)
 PAPER = load_paper(Path(__file__).with_name("paper.toml"))
 PAPER_CLAIMS = list(PAPER.claims)

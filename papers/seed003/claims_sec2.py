@@ -1,39 +1,14 @@
-"""Seed 003, Section 2: rule (1) at omega = 0 is Chaikin's scheme (C^1, not C^2), and C^2 for
-0 < omega < (sqrt6-1)/80."""
+"""Seed 003, Section 2: rule (1) is C^2 for 0 < omega < (sqrt6-1)/80 (the omega = 0 claim and the
+smoothness profile are data in paper.toml)."""
 
 from __future__ import annotations
 
 import sympy as sp
 
 from analysis import claims as C
-from schemes.seed003 import OMEGA
-
 from .derivations import (_C2_PROVEN_HI, _OM_HI, _c2_interval, _c2_range, _f, _interval_statement, _norm_sets,
-                          _range_statement, _s, _stationary)
+                          _range_statement, _s)
 from .figures import _alpha_figure
-
-
-def _sec2_omega0():
-    from analysis.regularity.holder import holder_exponent, smoothness
-    from schemes import get
-
-    a0 = _stationary().subs({OMEGA: 0})
-    chaikin = get("chaikin").symbol
-    same = a0 == chaikin
-    c1, c2 = smoothness(a0, 1), smoothness(a0, 2)
-    h = holder_exponent(a0)
-    ev = [C.Evidence("rule (1) at omega = 0 vs the catalogue's Chaikin scheme", latex="a(z) = " + a0.latex(),
-                     result=C.exact_result(same, "exact comparison of masks")),
-          C.Evidence("C^1 (analysis.regularity.holder.smoothness)", result=c1, text=str(c1.witness.get("reason", ""))),
-          C.Evidence("C^2 (analysis.regularity.holder.smoothness)", result=c2, text=str(c2.witness.get("reason", ""))),
-          C.Evidence("Hölder exponent", result=h, text=f"alpha in [{_s(h.lower)}, {_s(h.upper)}]: C^1 with "
-                     "Lipschitz derivative (the quadratic B-spline), not C^2")]
-    nums = [C.Number("holder_lower", h.lower), C.Number("holder_upper", h.upper)]
-    if same and c1.value is True and c2.value is False:
-        return C.certified("omega = 0 is Chaikin's scheme; it is C^1 and (certified) not C^2 (Hölder exponent "
-                           f"exactly {_s(h.lower) if h.lower == h.upper else '~2'}).", evidence=ev, numbers=nums)
-    return C.refuted("the omega = 0 statement fails", f"omega = 0: Chaikin {same}, C^1 {c1.value}, C^2 {c2.value}",
-                     evidence=ev, numbers=nums)
 
 
 def _sec2_c2():

@@ -1,5 +1,6 @@
-"""Seed 003, Sections 4-5: the stencil sums of (2), (3) and the normalized schemes (4), (5);
-equation (7) and Theorem 5.1 (symmetry of the basic limit function)."""
+"""Seed 003, Sections 4-5: the convergence of the normalized schemes (4), (5) and Theorem 5.1
+(symmetry of the basic limit function). The stencil sums of (2), (3), the reproduction of
+constants and equation (7) are data (paper.toml)."""
 
 from __future__ import annotations
 
@@ -9,49 +10,10 @@ from analysis import claims as C
 from analysis.result import CERTIFIED, INCONCLUSIVE, Result
 from schemes.seed003 import ALPHA, HYPERBOLIC_NORMALIZED, TRIGONOMETRIC, TRIGONOMETRIC_NORMALIZED
 
-from .derivations import _VALS, _f, _s, _stationary, to_h_expr
+from .derivations import _VALS, _s, _stationary
 
 
 # -------------------------------------------------------------------------- Section 4
-def _sum_identity(form, total, name):
-    from analysis.levels.bounds import check_identity
-
-    r = check_identity(form.stencil_sum(), total)
-    odd = sum(c for i, c in enumerate(form.mask) if (form.start + i) % 2)
-    r2 = check_identity(odd, total)
-    ev = [C.Evidence(f"even stencil sum of {name} = printed closed form", result=r,
-                     latex=sp.latex(to_h_expr(total))),
-          C.Evidence("odd stencil sum = the same", result=r2)]
-    if r.status == "certified" and r2.status == "certified":
-        return C.certified(f"True: both stencil sums of {name} equal the printed closed form exactly (so a^n(-1) = 0 "
-                           "and a^n(1) = 2 x the printed sum).", evidence=ev)
-    if "refuted" in (r.status, r2.status):
-        return C.refuted("the printed sum is wrong", _s(form.stencil_sum()), evidence=ev)
-    return C.inconclusive("not settled", settle="exact simplification", evidence=ev)
-
-
-def _normalized_constants():
-    from analysis.levels.bounds import check_identity
-    from analysis.levels.reproduction import reproduction
-
-    ev, ok = [], True
-    for s in (TRIGONOMETRIC_NORMALIZED, HYPERBOLIC_NORMALIZED):
-        r = check_identity(s.stencil_sum(), 1)
-        odd = sum(c for i, c in enumerate(s.mask) if (s.start + i) % 2)
-        r2 = check_identity(odd, 1)
-        rep = reproduction(s, [0], _VALS)
-        ok &= r.status == r2.status == "certified" and rep.status == "certified"
-        ev.append(C.Evidence(f"{s.slug}: even and odd stencil sums = 1", result=r, text=f"odd: {r2.status}"))
-        ev.append(C.Evidence(f"{s.slug}: reproduction of constants (every level)", result=rep,
-                             text=f"{rep.status} at alpha = pi/5, omega = 1/100"))
-    un = check_identity(TRIGONOMETRIC.stencil_sum(), 1)
-    ev.append(C.Evidence("the unnormalized (2) does not", result=un, text=f"sum = 1? {un.status}"))
-    if ok and un.status == "refuted":
-        return C.certified("True: (4) and (5) have even and odd stencil sums exactly 1 at every level, so they "
-                           "reproduce constants; (2) and (3) do not (their sums are beta^n, gamma^n != 1).", evidence=ev)
-    return C.inconclusive("not settled", settle="see evidence", evidence=ev)
-
-
 def _normalized_convergence():
     from .claims_sec3_theorem import _hypothesis_evidence, region_c2
 
@@ -97,30 +59,6 @@ def _blf(form, vals, levels=7):
     k = levels
     x = [(lo + i) / 2 ** k for i in range(len(f))]
     return x, f, lo
-
-
-def _eq7():
-    from analysis.levels.level_dependent import ball
-
-    f10 = TRIGONOMETRIC.mask_at(0, _VALS)[list(range(TRIGONOMETRIC.start, TRIGONOMETRIC.end + 1)).index(0)]
-    b = ball(f10 - 1)
-    ne = b.is_finite() and not b.contains(0)
-    enc = Result(value=True if ne else None, status=CERTIFIED if ne else INCONCLUSIVE,
-                 witness={"statement": "f_0^1 - 1 != 0", "enclosure": str(b)},
-                 provenance={"method": "arb enclosure of f_0^1 - 1 (0 not in the ball)",
-                             "arithmetic": "Arb ball enclosure"})
-    ev = [C.Evidence("k = 0 and k = 1 of (7) at j = 0", result=enc,
-                     text=f"(7) gives L(0) = f_0^0 = 1 and L(0) = f_0^1 = beta_1^0 = {_s(f10)} ≈ {_f(sp.N(f10, 20), 12)} "
-                          "at alpha = pi/5, omega = 1/100: contradictory (f_0^1 != 1 certified)"),
-          C.Evidence("why", text="L(j/2^k) = f_j^k for all k needs f_(2j)^(k+1) = f_j^k: an interpolatory scheme. (2) is "
-                     "approximating (f_(2i)^(n+1) = beta_0 f_(i-1) + beta_1 f_i + ...).")]
-    if ne:
-        return C.refuted("(7) cannot hold for the approximating scheme (2): it forces f_0^1 = f_0^0 = 1, but "
-                         "f_0^1 = beta_1^0 != 1 (certified at alpha = pi/5, omega = 1/100).",
-                         corrected="f_j^k - L(j/2^k) -> 0 uniformly as k -> oo (Definition 1.2), not equality; "
-                                   "L is only the limit of the level-k values", evidence=ev,
-                         numbers=[C.Number("f_0^1", float(sp.N(f10, 20)), tol=1e-12)])
-    return C.inconclusive("not settled", settle="higher precision", evidence=ev)
 
 
 def _theorem51():

@@ -9,12 +9,12 @@ evaluator by name at evaluation time).
 
 Examples
 --------
->>> sorted(KIND_CLASSES)[:4]
-['asymptotic equivalence', 'cited', 'ck range', 'eigenvalues']
+>>> sorted(KIND_CLASSES)[:3]
+['all of', 'asymptotic equivalence', 'cited']
 >>> kind_class("sum rule")
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: all of, asymptotic equivalence, cited, ck range, curve comparison, eigenvalues, exponential reproduction, factorization, holder, identity, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
 
 Not (yet) kinds — they stay ``python`` claims: end rules of open polygons, Gibbs conditions,
 eigenvalue inequalities as sets in a parameter.
@@ -29,6 +29,9 @@ from __future__ import annotations
 from ...result import AnalysisError
 from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
+from .compound import AllOf
+from .curves import CurveComparison
+from .lemma import Factorization, Identity
 from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
 from .limit_symmetry import LimitSymmetry
 from .other import Cited, Inequality, Python
@@ -39,8 +42,8 @@ from .support_steps import SupportAfterSteps
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
     MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
-    SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Cited, Python)}
-KIND_CLASSES.update({k.name: k for k in (SupportAfterSteps, LimitSymmetry)})   # issue 11: seed 001 (wt-3)
+    SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Identity, Factorization, CurveComparison, AllOf, Cited, Python)}
+KIND_CLASSES.update({k.name: k for k in (SupportAfterSteps, LimitSymmetry)})   # issue 11: seed 001
 
 
 def kind_class(name: str) -> type[Kind]:

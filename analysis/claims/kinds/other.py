@@ -1,5 +1,6 @@
-"""Claim kinds that need no scheme: a lemma inequality over (n, parameter box), a claim that is
-cited and not checkable here, and a bespoke Python evaluator referenced by dotted name.
+"""Claim kinds that need no scheme: a claim that is cited and not checkable here, and a bespoke
+Python evaluator referenced by dotted name. The lemma inequality over (n, parameter box) lives in
+:mod:`.lemma` with the other lemma kinds and is re-exported here (its first-edition form below).
 
 Examples
 --------
@@ -16,7 +17,7 @@ analysis.result.AnalysisError: x: cannot import the evaluator module 'no.such.mo
 Algorithm
 ---------
 The inequality is proven by Arb branch and bound for the first levels and a Taylor model in
-``h = 2^-n`` for the tail (:func:`analysis.levels.bounds.check_inequality`).
+``h = 2^-n`` for the tail (:func:`analysis.levels.bounds.check_inequality`; see :mod:`.lemma`).
 
 References
 ----------
@@ -27,56 +28,12 @@ from __future__ import annotations
 
 import importlib
 
-import sympy as sp
-
-from ...levels.bounds import check_inequality
-from ...levels.level_dependent import H, N
-from ...result import CERTIFIED, REFUTED, AnalysisError
-from ..model import Number, Verdict
-from .base import Kind, evidence, parse_interval, parse_number
+from ...result import AnalysisError
+from ..model import Verdict
+from .base import Kind
+from .lemma import Inequality  # the lemma inequality kind lives with the other lemma kinds (issue 11)
 
 __all__ = ["Inequality", "Cited", "Python"]
-
-
-class Inequality(Kind):
-    """``lhs <= rhs`` (``<`` with ``strict``) for every level ``n >= n0`` and every parameter in ``box``."""
-
-    name = "inequality"
-    summary = "a lemma inequality lhs <= rhs for all levels n >= n0 and a parameter box (Arb, Taylor tail)"
-    uses_scheme = False
-    required = {"lhs": "expression in n (or h = 2^-n) and parameters", "rhs": "expression"}
-    optional = {"n0": "first level (default 0)", "box": "{ name = value or \"[lo, hi]\" }", "strict": "true for <"}
-    example = 'lhs = "Abs(w*2**(-n))"\nrhs = "2**(-n)/4"\nn0 = 1\nbox = { w = "[-1/8, 1/8]" }'
-
-    def check(self) -> None:
-        self.integer("n0")
-        if not isinstance(self.get("box", {}), dict):
-            raise AnalysisError(f"{self.where}: field 'box' is a table {{ name = value or \"[lo, hi]\" }}")
-        self.box = {}
-        for k, v in self.get("box", {}).items():
-            if isinstance(v, str) and v.strip()[:1] in "([":
-                lo, hi, _, _ = parse_interval(v, f"{self.where}: box {k}")
-                self.box[k] = (lo, hi)
-            else:
-                self.box[k] = parse_number(v, f"{self.where}: box {k}")
-
-    def evaluate(self) -> Verdict:
-        try:
-            loc = {"n": N, "h": H, **{k: sp.Symbol(k, real=True) for k in self.box}}
-            lhs, rhs = (sp.sympify(str(self.get(x)), rational=True, locals=loc) for x in ("lhs", "rhs"))
-        except (sp.SympifyError, SyntaxError, TypeError):
-            raise AnalysisError(f"{self.where}: cannot read lhs/rhs") from None
-        r = check_inequality(lhs, rhs, self.get("n0", 0), self.box, strict=bool(self.get("strict", False)))
-        stmt = r.witness["statement"]
-        if r.status == CERTIFIED:
-            return self.certified(f"proven: {stmt}", evidence=[evidence("Arb branch and bound + Taylor tail", r)],
-                                  numbers=[Number("proven", True)])
-        if r.status == REFUTED:
-            ce = r.witness["counterexample"]
-            return self.refuted(f"false: {stmt} fails at {ce}", corrected=f"the inequality fails at {ce}",
-                                evidence=[evidence("certified counterexample (Arb)", r)], numbers=[Number("proven", False)])
-        return self.inconclusive(f"not decided: {stmt}", settle=r.witness.get("advice", "a finer box"),
-                                 evidence=[evidence("worst case found", text=str(r.witness.get("worst")))])
 
 
 class Cited(Kind):
@@ -104,7 +61,7 @@ class Python(Kind):
     required = {"evaluator": "\"package.module:function\""}
     optional = {"reports_as": "the kind shown in reports (e.g. \"mask identity\"; default \"python\")",
                 "args": "positional arguments of the evaluator (a list of TOML values; default none)"}
-    example = 'evaluator = "papers.seed000.claims:_v_eta"'
+    example = 'evaluator = "papers.seed000.claims:_v_s_d"'
 
     def check(self) -> None:
         ev = self.get("evaluator")
