@@ -181,6 +181,12 @@ def cmd_holder(args, m: int) -> None:
     from ..jsonable import fmt_bound
     from ..regularity.mary import NotConvergentMary, holder_exponent_mary, smoothness_mary
 
+    from .level_input import uses_level
+
+    if uses_level(args):                        # a level-dependent m-ary scheme (analysis.levels.mary)
+        from .levels_mary import cmd_holder as holder_levels
+
+        return holder_levels(args, m)
     if getattr(args, "approx", False):
         raise AnalysisError("--approx is not available for m-ary schemes yet (issue 12)")
     a, label, head = _input(args, m)
