@@ -63,7 +63,7 @@ Examples
 >>> parse_paper(text.replace('"sum rules"', '"sum rule"'), "chaikin.toml")
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: chaikin.toml: claim 900:Prop1: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, symmetry, weighted series
+analysis.result.AnalysisError: chaikin.toml: claim 900:Prop1: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
 >>> parse_paper("[paper\\nid = 1", "bad.toml")
 Traceback (most recent call last):
 ...

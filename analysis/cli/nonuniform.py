@@ -227,6 +227,10 @@ def cmd_claims(args) -> None:
         if args.id and c["id"] != args.id:
             continue
         r = c["check"]()
+        if hasattr(r, "summary"):          # seed 001: a proof-check Verdict of its paper file
+            rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.summary,
+                         "result": {"label": r.label, "numbers": {n.name: n.to_json() for n in r.numbers}}})
+            continue
         rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.value,
                      "result": r.to_json()})
     if args.id and not rows:

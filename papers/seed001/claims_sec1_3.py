@@ -1,34 +1,34 @@
-"""Seed 001, the proof-check evaluators of Sects. 1-3 (definition, convergence, smoothness): each
-``_v_*`` returns an :class:`analysis.claims.Verdict` built from the engine results
-(:mod:`papers.seed001.results`) and exact identities (:mod:`papers.seed001.identities`), never
-typed in. The claims themselves (printed text, readings) are in :mod:`papers.seed001.transcription`.
+"""Seed 001, the `python` evaluators of Sects. 1-3 (definition, convergence, smoothness), named by
+``papers/seed001/paper.toml``: each ``_v_*`` returns a :class:`analysis.claims.Verdict` built from
+the NVPS engine (:mod:`analysis.nonuniform`) and exact identities, never typed in.
 """
 
 from __future__ import annotations
 
+import mpmath
 import numpy as np
 import sympy as sp
 
 from analysis import claims as C
 from analysis import nonuniform as nu
-from analysis.result import CERTIFIED, REFUTED
 
-from .identities import _U, _s, _zero, bspline_special_case, exponential_evidence
-from .results import (claim_12, claim_16, claim_17, claim_b_of_z, claim_corollary_3_4, claim_lemma_2_1,
-                      claim_lemma_3_3, claim_rules, claim_theorem_3_6)
+from .identities import _s, bspline_special_case, exponential_evidence
 
-
-def _verdict_from(res, summary_true, summary_false, corrected=None, **kw):
-    """A certified Result -> certified verdict; a refuted Result -> refuted (needs ``corrected``)."""
-    ev = [C.Evidence("engine result", result=res, text=_s(res.value)[:300])] + list(kw.pop("evidence", []))
-    if res.status == "certified":
-        return C.certified(summary_true, evidence=ev, **kw)
-    if res.status == "refuted":
-        return C.refuted(summary_false, corrected=corrected or summary_false, evidence=ev, **kw)
-    return C.inconclusive(summary_false, settle="see the engine result", evidence=ev, **kw)
+_LOW, _HIGH = sp.Rational(1, 100), sp.Integer(100)     # the u0 range of the certified constants
 
 
-# -------------------------------------------------------------------------- Sect. 1/2 claims
+def _sym():
+    r = nu.symbol_identities()
+    return r, r.witness
+
+
+def _series(factor):
+    """The rate constant C' on u0 in [1/100, 100] and ``factor * C' / (4 (1 + 1/100))`` (exact)."""
+    b = nu.u_convergence_bound(_LOW, _HIGH)
+    return b, factor * sp.Rational(str(b.upper)) / (4 * (1 + _LOW))
+
+
+# -------------------------------------------------------------------------- Sects. 1-2
 def _v_special_cases():
     ok, ev = bspline_special_case()
     ids, ev2 = exponential_evidence()
@@ -40,16 +40,14 @@ def _v_special_cases():
             "symbol ((1+z)/2)^(d-2) h z^-2 (1+z)(z^2 + 2u^k z + 1), which generates 1, ..., t^(d-2) and "
             "e^(+-i w t) / e^(+-w t) exactly: the generalized B-spline spaces of Fang-Ma-Wang (2010).",
             sharpness="The identification with the exact rule text of Fang-Ma-Wang (2010) is not replayed here "
-                      "(see 001:Remark1); the B-spline case is exact.",
-            evidence=[ev, ev2], numbers=nums)
+                      "(see 001:Remark1); the B-spline case is exact.", evidence=[ev, ev2], numbers=nums)
     return C.refuted("u = 1 does not give the B-spline", "see the table", evidence=[ev, ev2], numbers=nums)
 
 
 def _v_chaikin():
     ok, ev = bspline_special_case(degrees=[2])
     fixed = sp.sqrt((1 + sp.Integer(1)) / 2) == 1
-    res = C.exact_result(fixed, "sqrt((1+1)/2) = 1 exactly")
-    ev2 = C.Evidence("u = 1 is a fixed point of the update (2)", result=res)
+    ev2 = C.Evidence("u = 1 is a fixed point of the update (2)", result=C.exact_result(fixed, "sqrt((1+1)/2) = 1 exactly"))
     if ok and fixed:
         return C.certified("True: u = 1 is a fixed point of (2) (so the scheme is stationary) and (3) becomes "
                            "P_2i = 3/4 P_i + 1/4 P_i+1, P_2i+1 = 1/4 P_i + 3/4 P_i+1, Chaikin's mask [1,3,3,1]/4.",
@@ -57,37 +55,13 @@ def _v_chaikin():
     return C.refuted("not Chaikin", "see evidence", evidence=[ev, ev2])
 
 
-def _v_mask_4():
-    u = _U
-    h = 1 / (2 * (1 + u))
-    # rule (3): P_2i = (1+2u)/(2(1+u)) P_i + 1/(2(1+u)) P_i+1 ; with (1): P_n = sum_i a_{n-2i} P_i
-    even = {0: (1 + 2 * u) / (2 * (1 + u)), -1: 1 / (2 * (1 + u))}    # a_{2i-2i}, a_{2i-2(i+1)}
-    odd = {1: 1 / (2 * (1 + u)), -1: (1 + 2 * u) / (2 * (1 + u))}
-    printed = [h, 1 - h, 1 - h, h]         # reading of (4): {1/(2(1+u)), (1+2u)/(2(1+u)), ..., 1/(2(1+u))}
-    # P_2i uses a_0 (P_i) and a_-2 (P_i+1); P_2i+1 uses a_1 (P_i) and a_-1 (P_i+1)
-    even2 = {0: even[0], -2: even[-1]}
-    full = {-2: even2[-2], -1: odd[-1], 0: even2[0], 1: odd[1]}
-    derived = [full[k] for k in (-2, -1, 0, 1)]
-    ok = all(_zero(a - b) for a, b in zip(derived, printed))
-    sums = [sp.simplify(full[-2] + full[0]), sp.simplify(full[-1] + full[1])]
-    res = C.exact_result(ok, "sympy, generic u", mask=[_s(sp.simplify(x)) for x in derived])
-    ev = [C.Evidence("mask of rule (3) in the convention (1) P_n = sum_i a_{n-2i} P_i", result=res,
-                     table=(("exponent", "from rule (3)", "reading of (4)/(9)"),) + tuple(
-                         (str(k), _s(sp.simplify(full[k])), _s(sp.simplify(p))) for k, p in zip((-2, -1, 0, 1), printed))),
-          C.Evidence("sub-mask sums", text=f"even: {_s(sums[0])}, odd: {_s(sums[1])} (both 1 for every u)")]
-    if ok and all(x == 1 for x in sums):
-        return C.certified("True (with 'u^k_k' read as u^k_j): the mask of rule (3) is {h, 1-h, 1-h, h}, "
-                           "h = 1/(2(1+u^k_j)), at exponents -2..1; each sub-mask sums to 1.", evidence=ev)
-    return C.refuted("(4) differs from rule (3)", "the mask in the table", evidence=ev)
-
-
 def _v_positivity():
     u = sp.Symbol("u", positive=True)
     phi = sp.sqrt((1 + u) / 2)
-    lower = sp.simplify(phi - sp.sqrt(2) / 2)     # > 0 for u > 0
     ok = bool(sp.simplify(phi ** 2 - (1 + u) / 2) == 0) and sp.ask(sp.Q.positive(phi ** 2 - sp.Rational(1, 2)),
                                                                      sp.Q.positive(u)) is True
-    res = C.exact_result(ok, "sympy: phi(u)^2 - 1/2 = u/2 > 0 for u > 0", phi=phi, phi_minus_1_over_sqrt2=lower)
+    res = C.exact_result(ok, "sympy: phi(u)^2 - 1/2 = u/2 > 0 for u > 0", phi=phi,
+                         phi_minus_1_over_sqrt2=sp.simplify(phi - sp.sqrt(2) / 2))
     if ok:
         return C.certified("True: phi(u) = sqrt((1+u)/2) > 1/sqrt(2) > 0 for u > 0, so by induction u^k_n > 0 "
                            "(in fact > 1/sqrt(2) for k >= 1).", evidence=[C.Evidence("phi(u) > 0", result=res)])
@@ -95,8 +69,7 @@ def _v_positivity():
 
 
 def _v_lemma_2_1():
-    r = claim_lemma_2_1()
-    b = nu.u_convergence_bound(sp.Rational(1, 100), 100)
+    r, b = nu.lemma_2_1(_LOW, 100), nu.u_convergence_bound(_LOW, _HIGH)
     ev = [C.Evidence("Lemma 2.1 on u0 in [1/100, 100] (C = 1)", result=r, text=str(dict(r.witness))[:400]),
           C.Evidence("rate: sup_n |1 - u^k_n| <= C' 4^-k", result=b, text=f"C' enclosure {b.witness['C_enclosure']}; "
                      f"4^k(1 - u^k) -> acos(u0)^2/2 or -acosh(u0)^2/2")]
@@ -106,23 +79,25 @@ def _v_lemma_2_1():
                            "the rate 4^-k (certified on u0 in [1/100, 100]; the monotonicity argument of "
                            "phi(u) = sqrt((1+u)/2) holds for every u0 > -1).",
                            sharpness="The rate is 4^-k (1 - u^k = 2 sin^2(theta/2^(k+1)) for u0 = cos theta), not "
-                                     "the 2^-k used later in the proof of Theorem 3.6.",
-                           evidence=ev, numbers=nums)
+                                     "the 2^-k used later in the proof of Theorem 3.6.", evidence=ev, numbers=nums)
     return C.inconclusive("the interval check did not close", settle="more precision / levels", evidence=ev, numbers=nums)
 
 
 def _v_rules():
-    r = claim_rules()
+    rows = {d: nu.compare_definitions(d, levels=3) for d in range(2, 7)}
+    ok = all(x.witness["one_step_equal_up_to_shift"] for x in rows.values())
+    sym_ok = all(x.witness["symbolic_recursion_equals_binomial"] for x in rows.values())
+    r = C.exact_result({d: x.value for d, x in rows.items()}, "exact rational refinement (compare_definitions)",
+                       per_degree={d: x.to_json()["witness"] for d, x in rows.items()})
+    ok_b, ev_b = bspline_special_case()
     ev = [C.Evidence("(6) unrolled vs the binomial form, and seed 000's definition (exact)", result=r,
-                     table=(("d", "seed 000 vs 001"),) + tuple((str(d), v) for d, v in r.value.items()))]
-    sym_ok = all(w["symbolic_recursion_equals_binomial"] for w in r.witness["per_degree"].values())
-    ok, ev_b = bspline_special_case()
-    if r.status == "certified" and sym_ok and ok:
+                     table=(("d", "seed 000 vs 001"),) + tuple((str(d), x.value) for d, x in rows.items())), ev_b]
+    if ok and sym_ok and ok_b:
         return C.certified("True: (6) unrolled is (S_d P)_i = 2^(2-d) sum_l binom(d-2, l) (S_2 P)_(i+l), with "
                            "2(n-1) - (d-2) new points; with u = 1 it is the uniform B-spline of degree d (the "
                            "Lane-Riesenfeld algorithm) -- the classical B-spline subdivision is the special case u = 1.",
-                           evidence=ev + [ev_b])
-    return C.refuted("(6) is not the binomial average", "see evidence", evidence=ev + [ev_b])
+                           evidence=ev)
+    return C.refuted("(6) is not the binomial average", "see evidence", evidence=ev)
 
 
 def _algorithm1_sources(n: int, d: int) -> list[int]:
@@ -149,9 +124,9 @@ def _v_algorithm_1():
             ok &= good
             if n == max(3, d) or not good:
                 rows.append((str(d), str(n), " ".join(map(str, a1)), " ".join(map(str, eng)), "yes" if good else "NO"))
-    res = C.exact_result(ok, "integer index computation, d = 2..9, n = d..15")
     ev = [C.Evidence("new edge j <- old edge (Algorithm 1 step (3) vs engine ceil((j + floor((d-2)/2))/2))",
-                     result=res, table=(("d", "n", "Algorithm 1", "engine", "agree"),) + tuple(rows))]
+                     result=C.exact_result(ok, "integer index computation, d = 2..9, n = d..15"),
+                     table=(("d", "n", "Algorithm 1", "engine", "agree"),) + tuple(rows))]
     if ok:
         return C.certified("True under the reading: both cases of step (3) give 2n - d + 1 parameters, new edge j "
                            "inheriting (then updated by (2)) the parameter of old edge ceil((j + floor((d-2)/2))/2); "
@@ -159,18 +134,19 @@ def _v_algorithm_1():
     return C.refuted("Algorithm 1 disagrees with the engine", "see table", evidence=ev)
 
 
+# -------------------------------------------------------------------------- Sect. 3.1
 def _v_12():
-    r = claim_12()
-    return _verdict_from(r, "True (exact identity for every u > 0, reading the lost bars as |1 - u^k_j|).",
-                         "(12) fails", corrected="see evidence")
+    r, w = _sym()
+    ev = [C.Evidence("engine result", result=r, text="(12) as an identity in u: exact, generic u")]
+    if w["(12)_identities_hold"]:
+        return C.certified("True (exact identity for every u > 0, reading the lost bars as |1 - u^k_j|).", evidence=ev)
+    return C.refuted("(12) fails", corrected="see evidence", evidence=ev)
 
 
 def _v_equivalence():
     """Sect. 3.1: {a^{k,j}} ~ B-spline of degree d (Definition 3.1), certified bound on the series."""
-    b = nu.u_convergence_bound(sp.Rational(1, 100), 100)
-    C_up = sp.Rational(str(b.upper)) if b.upper is not None else None
     # sup_j ||S^k - S_a|| <= 2 max_e |delta^k_e|,  |delta| = |v|/(4(1+u)) <= C' 4^-k / (4 (1 + 1/100))
-    total = 2 * C_up * sp.Rational(4, 3) / (4 * (1 + sp.Rational(1, 100)))
+    b, total = _series(2 * sp.Rational(4, 3))
     dec = nu.mask_decay([sp.Rational(1, 2)] * 4 + [3] * 4, degree=4, levels=10)
     ev = [C.Evidence("rate of u^k -> 1 on u0 in [1/100, 100]", result=b),
           C.Evidence("sum_k sup_j ||S^k - S_a||_inf <= sum_k 2 C' 4^-k / (4 (1 + 1/100))",
@@ -189,28 +165,16 @@ def _v_equivalence():
     return C.inconclusive("bound not certified", settle="interval arithmetic at higher precision", evidence=ev)
 
 
-def _v_lemma_3_2():
-    ev = _v_equivalence().evidence
-    return C.inconclusive(
-        "A cited result (Dyn-Levin-Yoon 2007, Lemma 2.5), not proved in the paper; its hypotheses hold for the "
-        "NVPS: asymptotic equivalence to the B-spline of degree d is certified (001:Sect3.1), and the B-spline "
-        "scheme is stable and C^0.",
-        settle="the cited proof: DLY 2007 (SIAM J. Math. Anal. 39) treats non-stationary schemes; the non-uniform "
-               "version is in Dyn-Levin-Yoon 2014 (Constr. Approx. 40), which should be cited instead.",
-        evidence=ev)
-
-
 def _v_lemma_3_3():
-    r = claim_lemma_3_3()
-    b = nu.u_convergence_bound(sp.Rational(1, 100), 100)
-    C_up = sp.Rational(str(b.upper))
-    total = C_up * 2 / (4 * (1 + sp.Rational(1, 100)))     # sum_k 2^k C' 4^-k / (4(1 + min u))
+    b, total = _series(2)                   # sum_k 2^k C' 4^-k / (4(1 + min u))
+    _, w = _sym()
+    ratio = w["Lemma3.3_ratio_2(u/(1+u))^2_holds"]
     ev = [C.Evidence("rate constant", result=b),
           C.Evidence("sum_k 2^k max_j ||a_2^{k,j} - a_2|| <= sum_k 2^k C' 4^-k / (4 (1 + 1/100))",
                      result=C.exact_result(total, "exact geometric series"), text=f"<= {_s(total)}"),
           C.Evidence("ratio identity of the proof: E^k/E^(k-1) = 2 (u/(1+u))^2 -> 1/2",
-                     result=C.exact_result(r.witness["ratio_identity"], "sympy, generic u"))]
-    if r.status == "certified" and r.witness["ratio_identity"]:
+                     result=C.exact_result(ratio, "sympy, generic u"))]
+    if b.status == "certified" and ratio:
         return C.certified(f"True (the printed sum over k in Z means k >= 0): the series is <= {_s(total)} for "
                            "u0 in [1/100, 100]; the proof's ratio identity 2(u/(1+u))^2 holds exactly.",
                            sharpness="The terms are Theta(2^-k) (masks converge like 4^-k), so even "
@@ -221,20 +185,37 @@ def _v_lemma_3_3():
 
 
 def _v_corollary_3_4():
-    r = claim_corollary_3_4()
-    w = r.witness
+    u0 = [sp.Rational(1, 10), sp.Rational(1, 2), sp.Integer(2), sp.Integer(10)]
+    r = nu.mask_decay(u0, degree=2, levels=14)
+    # for every k >= 0 (analytic, Lemma 2.1's half-angle argument, constants enclosed rigorously):
+    # upper: sup_j ||S^k - S_a|| <= 2 max_e |delta^k_e| = 2 max |1-u^k|/(4(1+u^k)) <= C' 4^-k / (2 (1 + 1/10))
+    #        (u^k lies between u0 and 1, so 1 + u^k >= 11/10; C' from u_convergence_bound);
+    # lower: u0 = 1/10 = cos(theta): 1 - u^k = 2 sin^2(theta/2^(k+1)) >= 2 theta^2/(pi^2 4^k) (sin x >= 2x/pi),
+    #        |delta^k| >= (1 - u^k)/8, and a pure window attains c_2 |delta^k| (every window is pure for d = 2).
+    b = nu.u_convergence_bound(min(u0), max(u0))
+    upper = b.upper / (2 * (1 + min(u0))) if b.upper is not None else None
+    c2 = nu._pure_constant(2)
+    with mpmath.workprec(128):
+        iv = mpmath.iv
+        low_iv = iv.mpf(c2.numerator) / c2.denominator * nu._iv_acos(iv.mpf(1) / 10) ** 2 / (4 * iv.pi ** 2)
+    lower = nu._endpoint_rational(low_iv, "lower")
+    consistent = upper is not None and all(
+        sp.Rational(row["lower"]) * 4 ** row["k"] >= lower and sp.Rational(row["upper"]) * 4 ** row["k"] <= upper
+        for row in r.witness["levels"])
+    ok = r.status == "certified" and b.status == "certified" and lower > 0 and consistent
+    ratios = r.witness["ratios"]
     ev = [C.Evidence("sup_j ||S^k - S_a||, u0 = 1/10, 1/2, 2, 10 (d = 2): analytic bounds for every k and certified "
                      "enclosures for k = 0..14", result=r,
-                     text=f"{_s(w['lower_constant'])} 4^-k <= sup_j ||S^k - S_a|| <= {_s(w['upper_constant'])} 4^-k "
+                     text=f"{_s(lower)} 4^-k <= sup_j ||S^k - S_a|| <= {_s(upper)} 4^-k "
                           f"(every k >= 0); the enclosures of k = 0..14 lie within these bounds: "
-                          f"{w['enclosures_consistent_with_bounds']}; float ratios of consecutive upper enclosures "
-                          "(observation): " + ", ".join(f"{x:.6f}" for x in w["ratios"][-3:]))]
-    nums = [C.Number("lower_constant", w["lower_constant"]), C.Number("upper_constant", w["upper_constant"]),
-            C.Number("ratio_last", w["ratios"][-1], tol=1e-6),
-            C.Number("scaled_4k_last", w["scaled_4k_upper"][-1], tol=1e-6)]
-    if r.status == CERTIFIED:
+                          f"{consistent}; float ratios of consecutive upper enclosures "
+                          "(observation): " + ", ".join(f"{x:.6f}" for x in ratios[-3:]))]
+    nums = [C.Number("lower_constant", lower), C.Number("upper_constant", upper),
+            C.Number("ratio_last", ratios[-1], tol=1e-6),
+            C.Number("scaled_4k_last", r.witness["scaled_4k_upper"][-1], tol=1e-6)]
+    if ok:
         return C.certified("True, but not sharp: c1 4^-k <= max_j ||a_2^{k,j} - a_2|| <= c2 4^-k for every k >= 0 "
-                           f"(c1 = {float(w['lower_constant']):.4g}, c2 = {float(w['upper_constant']):.4g}, certified "
+                           f"(c1 = {float(lower):.4g}, c2 = {float(upper):.4g}, certified "
                            "for u0 in {1/10, 1/2, 2, 10}; the upper bound holds for all u0 in [1/10, 10]), i.e. "
                            "Theta(4^-k); the float ratios of consecutive levels are close to 1/4.",
                            sharpness="c 4^-k holds (Lemma 2.1's half-angle rate); the stated c 2^-k is weaker.",
@@ -243,13 +224,24 @@ def _v_corollary_3_4():
                           evidence=ev, numbers=nums)
 
 
+# -------------------------------------------------------------------------- Sects. 3.2-3.3
 def _v_16():
-    r = claim_16()
-    cx = r.witness["counterexample_degree_4_junction"]
-    ev = [C.Evidence("degree 4, u = 1/2 | 3: a junction mask", result=r,
+    z = sp.Symbol("z")
+    M, start = nu.location_masks([sp.Rational(1, 2)] * 3 + [sp.Integer(3)] * 3, degree=4, arithmetic="exact")
+    cx = None
+    for row in M:                            # the first location with fewer than 3 factors (1+z)
+        poly, k = sp.Poly(sum(c * z ** t for t, c in enumerate(row)), z), 0
+        while poly.eval(-1) == 0 and k < 10:
+            poly, k = sp.Poly(sp.cancel(poly.as_expr() / (1 + z)), z), k + 1
+        if k < 3:
+            cx = {"mask": [str(c) for c in row], "start": start, "(1+z)_factors": k}
+            break
+    res = C.exact_result("holds for locally constant parameters only", "exact sympy masks, u = 1/2 | 3",
+                         counterexample_degree_4_junction=cx)
+    ev = [C.Evidence("degree 4, u = 1/2 | 3: a junction mask", result=res,
                      text=f"mask {cx['mask'] if cx else None}, (1+z)-factors {cx['(1+z)_factors'] if cx else None} "
                           "(the B-spline-like (16) would have >= 3)")]
-    if r.status == "refuted":
+    if cx:
         return C.refuted("False at junctions: where the d-1 degree-2 points averaged by (6) carry different "
                          "parameters, the mask of (6) is a mixture of a_2 masks and has fewer than d-1 factors (1+z).",
                          corrected="a_d^{k,j}(z) = 2^(2-d) sum_l binom(d-2, l) z^(-l) a_2^{k, e(j+l)}(z); it equals "
@@ -260,33 +252,33 @@ def _v_16():
 
 
 def _v_17():
-    r = claim_17()
-    w = r.witness
+    r, w = _sym()
     ev = [C.Evidence("(11) at z = 1", result=r, latex=r"a_2(z)=\frac{1+(1+2u)z+(1+2u)z^2+z^3}{2(1+u)z}",
                      table=(("quantity", "printed", "exact"),) + tuple(
                          (k, str(w["printed_(17)"][k]), w["exact"][k]) for k in ("a(1)", "a'(1)", "a''(1)")))]
     nums = [C.Number("a(1)", sp.sympify(w["exact"]["a(1)"])), C.Number("a'(1)", sp.sympify(w["exact"]["a'(1)"])),
             C.Number("a''(1)", w["exact"]["a''(1)"])]
     exact = "; ".join(f"{k} = {w['exact'][k]}" for k in ("a(1)", "a'(1)", "a''(1)"))
-    if r.status == REFUTED:
+    if r.status == "refuted":
         wrong = [k for k, bad in w["differs_from_printed"].items() if bad]
         return C.refuted(f"False (exact, generic u): {exact}; printed values differ for {', '.join(wrong)} "
                          "(a(1) and a'(1) for every u; a''(1) = 2/(1+u) equals the printed 1 only at u = 1).",
                          corrected="a_2^{k,j}(1) = " + w["exact"]["a(1)"] + ", (d/dz) a_2^{k,j}(1) = "
                                    + w["exact"]["a'(1)"] + ", (d^2/dz^2) a_2^{k,j}(1) = "
-                                   + w["exact"]["a''(1)"].replace("u", "u^k_j"),
-                         evidence=ev, numbers=nums)
-    if r.status == CERTIFIED:
-        return C.certified(f"True (exact, generic u): {exact}.", evidence=ev, numbers=nums)
-    return C.inconclusive("the values were not settled", settle="see evidence", evidence=ev, numbers=nums)
+                                   + w["exact"]["a''(1)"].replace("u", "u^k_j"), evidence=ev, numbers=nums)
+    return C.certified(f"True (exact, generic u): {exact}.", evidence=ev, numbers=nums)
 
 
 def _v_b_of_z():
-    r = claim_b_of_z()
-    return _verdict_from(r, "True: b(z) = 2 a_2(z)/(1+z) = (1 + 2uz + z^2)/(z(1+u)) and |b(-1)| = 2|1-u|/(1+u) "
-                            "= 8 x the coefficient distance (12) (the printed form drops the absolute value).",
-                         "b(z) differs", corrected="see evidence",
-                         numbers=[C.Number("b(-1)", sp.sympify(r.witness["b(-1)"]))])
+    r, w = _sym()
+    ev = [C.Evidence("engine result", result=r, text=f"b(-1) = {w['b(-1)']}; |b(-1)| = 2|1-u|/(1+u) (the printed "
+                     "form drops the absolute value for u > 1) = 8 x the coefficient distance of (12)")]
+    nums = [C.Number("b(-1)", sp.sympify(w["b(-1)"]))]
+    if w["b(z)_equals_printed"]:
+        return C.certified("True: b(z) = 2 a_2(z)/(1+z) = (1 + 2uz + z^2)/(z(1+u)) and |b(-1)| = 2|1-u|/(1+u) "
+                           "= 8 x the coefficient distance (12) (the printed form drops the absolute value).",
+                           evidence=ev, numbers=nums)
+    return C.refuted("b(z) differs", corrected="see evidence", evidence=ev, numbers=nums)
 
 
 def _v_support():
@@ -294,61 +286,32 @@ def _v_support():
     for d in range(2, 8):
         M, start = nu.location_masks([sp.Rational(1, 2)] * 3 + [sp.Integer(3)] * 3, degree=d, arithmetic="exact")
         width = M.shape[1]
-        nz = all(any(c != 0 for c in M[:, t]) for t in range(width))
-        L = nu.limit_mask(d)
-        ok &= width == len(L.mask) and nz
-        rows.append((str(d), str(width), str(len(L.mask)), str(d + 1)))
-    res = C.exact_result(ok, "exact masks (u = 1/2 | 3) and the B-spline limit")
-    ev = [C.Evidence("mask lengths", result=res, table=(("d", "NVPS mask length", "B-spline degree d", "#(Z ∩ [0, d])"),)
-                     + tuple(rows))]
+        ok &= width == len(nu.limit_mask(d).mask) and all(any(c != 0 for c in M[:, t]) for t in range(width))
+        rows.append((str(d), str(width), str(len(nu.limit_mask(d).mask)), str(d + 1)))
+    ev = [C.Evidence("mask lengths", result=C.exact_result(ok, "exact masks (u = 1/2 | 3) and the B-spline limit"),
+                     table=(("d", "NVPS mask length", "B-spline degree d", "#(Z ∩ [0, d])"),) + tuple(rows))]
+    if not ok:
+        return C.inconclusive("the NVPS masks do not all have the B-spline's length", settle="see the table", evidence=ev)
     return C.refuted("Half true: the NVPS mask of degree d has the support of the B-spline of degree d (d + 2 "
                      "coefficients at every level and location), but Z ∩ [0, n] - ceil(n/2) with n = d has only d + 1 "
                      "points.",
                      corrected="supp(a^{k,j}) = Z ∩ [0, d+1] - shift (d + 2 coefficients; [-d, 1] in the convention "
                                "P^{k+1}_n = sum_i a_{n-2i} P^k_i), the support of the B-spline of degree d",
-                     evidence=ev, numbers=[C.Number("mask_length_d4", 6)])
+                     evidence=ev, numbers=[C.Number("mask_length_d4", int(rows[2][1]))])
 
 
-def _v_property_a_def():
-    rows = []
-    for d in (2, 3, 4):
-        for m in range(1, d):
-            for r_ in range(m):
-                for z0 in (1, -1):
-                    res = nu.property_a_structure(d, m, r_, z0)
-                    rows.append((str(d), str(m), str(r_), f"{z0:+d}", res.value))
-    const_ok = all(x[4] in ("identically zero", "nonzero at junctions") for x in rows)
-    ev = [C.Evidence("d^(r)_m(+-1) of (14) for the NVPS (exact linear forms in delta_e = h_e - 1/4)",
-                     result=C.exact_result(const_ok, "analysis.nonuniform.property_a_structure"),
-                     table=(("d", "m", "r", "z0", "structure"),) + tuple(rows))]
-    return C.inconclusive(
-        "A definition quoted from Dyn-Levin-Yoon (2014); as extracted, (14) reads d_m(z) = sum_i (-1)^i binom(m,i) "
-        "z^i a^{j-i,k}(z) ('pj-i,k' is the garbled mask). Nothing to prove; its NVPS quantities vanish identically "
-        "for constant parameters and are non-zero only at parameter junctions (exact).",
-        settle="compare (13)-(14) with Property A in DLY 2014, Constr. Approx. 40 (not in the corpus); (19) in the "
-               "proof of Theorem 3.6 writes O(2^(-k(n-l))) where (13) has o(2^(-k(m-r))).",
-        evidence=ev)
-
-
-def _v_theorem_3_5():
-    ok, ev = bspline_special_case(degrees=range(2, 8))
-    return C.inconclusive(
-        "A cited theorem (Dyn-Levin-Yoon 2014), not proved in the paper ('where m is the mask' is a garble of "
-        "'where a is the mask'). Its stationary hypothesis holds for the NVPS: the limit scheme is the B-spline "
-        "of degree d (exact), C^(d-1) with a stable basic limit function.",
-        settle="the cited source's statement (DLY 2014, Constr. Approx. 40, 173-188).", evidence=[ev])
+def _property_a_fails(degrees):
+    """Per degree, the (m, r, z0) whose Property A quantity violates o(2^(-k(m-r))) at a junction (exact)."""
+    return {d: [(x["m"], x["r"], x["z0"]) for x in nu.property_a_table(d) if x["fails_on_blended"]] for d in degrees}
 
 
 def _v_19():
-    rows, fails = [], {}
-    for d in range(2, 7):
-        t = nu.property_a_table(d)
-        f = [(x["m"], x["r"], x["z0"]) for x in t if x["fails_on_blended"]]
-        fails[d] = f
-        rows.append((str(d), str(len(t)), ", ".join(f"(m={m}, r={r}, z={z:+d})" for m, r, z in f) or "none"))
-    res = C.exact_result(fails, "exact linear forms (property_a_structure) x |delta_B - delta_A| >= c 4^-k")
+    fails = _property_a_fails(range(2, 7))
+    rows = [(str(d), str(len(nu.property_a_table(d))), ", ".join(f"(m={m}, r={r}, z={z:+d})" for m, r, z in f) or "none")
+            for d, f in fails.items()]
     ev = [C.Evidence("Property A quantities that do not vanish identically, and those that violate o(2^(-k(m-r))) "
-                     "at a junction", result=res,
+                     "at a junction", result=C.exact_result(fails, "exact linear forms (property_a_structure) x "
+                                                                   "|delta_B - delta_A| >= c 4^-k"),
                      table=(("d", "# non-vanishing (m, r, z0)", "violating at junctions"),) + tuple(rows),
                      text="At a junction between parameters A and B the quantity equals kappa (delta_B^k - delta_A^k) "
                           "with kappa != 0 exact and |delta_B^k - delta_A^k| >= c 4^-k (4^k v^k is monotone in k: "
@@ -367,18 +330,19 @@ def _v_19():
     return C.certified("(19) holds", evidence=ev)
 
 
-def _v_theorem_3_6():
-    r = claim_theorem_3_6()
-    per = r.witness["per_degree"]
-    js2 = nu.junction_smoothness(4, 0.3, 4.0, levels=16, order=2)
+def _v_theorem_3_6(levels: int = 16):
+    fails = _property_a_fails(range(2, 7))
+    js = {d: nu.junction_smoothness(d, 0.3, 4.0, levels=levels) for d in fails}
+    js2 = nu.junction_smoothness(4, 0.3, 4.0, levels=levels, order=2)
+    omega = {d: j.witness["omega_junction"][-1] for d, j in js.items()}
+    r = C.exact_result({d: j.value for d, j in js.items()}, "exact Property A structure + mpmath divided differences")
     ev = [C.Evidence("per degree: Property A violations (exact) and (d-1)-th divided differences at a junction "
                      "u = 0.3 | 4 (mpmath)", result=r,
                      table=(("d", "Property A fails at (m, r, z0)", "(d-1)-th divided differences", "omega_16"),)
-                     + tuple((str(d), str(v["property_A_fails_at(m,r,z0)"]), v["junction_(d-1)th_divided_differences"],
-                              f"{v['omega_last']:.3e}") for d, v in per.items())),
+                     + tuple((str(d), str(fails[d]), js[d].value, f"{omega[d]:.3e}") for d in fails)),
           C.Evidence("d = 4, second divided differences at the same junction", result=js2,
                      text=f"{js2.value}: last omega_k " + ", ".join(f"{x:.3e}" for x in js2.witness["omega_junction"][-3:]))]
-    nums = [C.Number("omega_d2", per[2]["omega_last"], tol=1e-6), C.Number("omega_d4", per[4]["omega_last"], tol=0.02),
+    nums = [C.Number("omega_d2", omega[2], tol=1e-6), C.Number("omega_d4", omega[4], tol=0.02),
             C.Number("omega_d4_order2", js2.witness["omega_junction"][-1], tol=1e-5)]
     return C.Verdict(
         "numerical",
@@ -389,4 +353,3 @@ def _v_theorem_3_6():
         evidence=ev, numbers=nums,
         sharpness="For constant parameters (generalized subdivision) all Property A quantities vanish and the theorem's "
                   "route is valid.")
-

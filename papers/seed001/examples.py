@@ -1,5 +1,6 @@
-"""Seed 001, the proof-check evaluators of Sect. 4 and the remarks (reproduction of conics and
-helices, Fig. 2, locality of a parameter change, the chamfering algorithm and Fig. 3).
+"""Seed 001, the `python` evaluators of Sect. 4 and the remarks (reproduction of conics and
+helices, Fig. 2(a), locality of a parameter change, the chamfering algorithm and Fig. 3), named by
+``papers/seed001/paper.toml``.
 """
 
 from __future__ import annotations
@@ -15,13 +16,22 @@ from analysis.jsonable import roundoff_text, stable_float
 
 from .figures import blended_figure, chamfer_figure
 from .identities import exponential_evidence
-from .results import claim_chamfer, claim_reproduction
+
+
+def claim_reproduction() -> dict:
+    """Float64 replay: circles, hyperbolas, parabolas, d = 2, 3, 4, 8 levels (an illustration)."""
+    return {f"{kind}-d{d}": nu.reproduce(kind, degree=d, levels=8).witness["form_error"][-1]
+            for kind in ("circle", "hyperbola", "parabola") for d in (2, 3, 4)}
+
+
+def claim_chamfer():
+    """Algorithm 2 / Fig. 3: chamfering the quadrangle ABCD with radii 3.650669, 2, 1, 1.691966."""
+    return nu.chamfer_example(levels=8)
 
 
 def _v_reproduction():
     ids, ev_exact = exponential_evidence()
-    r = claim_reproduction()
-    worst = max(v["form_error_level_8"] for k, v in r.witness.items() if not k.startswith("parabola"))
+    worst = max(v for k, v in claim_reproduction().items() if not k.startswith("parabola"))
     ev_num = C.Evidence("float64 replay: circle / hyperbola polygons, d = 2, 3, 4, 8 levels (illustration)",
                         text=f"max form error of the level-8 polygons {roundoff_text(worst)} (rounding level)")
     if all(ids[k] for k in ("geometric", "update", "parametrization", "factor", "linear_d3")):
@@ -35,35 +45,16 @@ def _v_reproduction():
     return C.refuted("an identity fails", "see evidence", evidence=[ev_exact, ev_num])
 
 
-def _v_remark_1():
-    ids, ev = exponential_evidence()
+def _v_fig2a():
+    _, ev = exponential_evidence()
     return C.inconclusive(
-        "Equal parameters give a uniform level-dependent scheme with symbol ((1+z)/2)^(d-2) a_2(u^k; z), "
-        "u^(k+1) = sqrt((1+u^k)/2), generating the generalized B-spline spaces (exact); whether these are "
-        "literally the rules of Fang-Ma-Wang (2010) cannot be checked from this text.",
-        settle="compare with the rules of M. Fang, W. Ma, G. Wang, CAGD 27 (2010) 720-733 (not in the corpus).",
-        evidence=[ev])
-
-
-def _v_fig2(which: str):
-    ids, ev = exponential_evidence()
-    if which == "a":
-        txt = ("Fig. 2(a): degree 2, trigonometric, hyperbolic and polynomial pieces. The control data are not "
-               "printed. Each piece type is reproduced exactly by the degree-2 rule (u = cos, cosh, 1; exact), "
-               "but note that d = 2 generates span{1, cos, sin} / {1, cosh, sinh} only: a 'polynomial B-spline "
-               "piece' (u = 1) is a quadratic B-spline curve, not a reproduced polynomial.")
-    elif which == "b":
-        txt = ("Fig. 2(b): torque spring, degree 4, a helix and an arc inserted. No data printed; the degree-4 "
-               "NVPS reproduces helices exactly (see 001:Remark1(reproduction)).")
-    else:
-        txt = ("Fig. 2(c): swan sketch, degree 5, curves (22). No control polygons printed. Each curve of (22) lies in "
-               "a space the degree-5 NVPS generates exactly: c1 circle (cos, sin), c2 quadratic polynomial, c3 and c4 "
-               "in span{1, t, sinh 2t, cosh 2t} (polynomials up to degree d - 2 = 3 plus one exponential pair). "
-               "'1.2t + .08t' in c3 is as printed (perhaps .08t^2: still in the space).")
-    return C.inconclusive(txt, settle="the control polygons and parameter sequences of the figure (not printed); "
-                                      "then `subdiv nonuniform refine` replays it", evidence=[ev],
-                          figures=[blended_figure("001-blended-fig2", "seed001", degrees=(2, 4, 5), levels=5)]
-                          if which == "a" else ())
+        "Fig. 2(a): degree 2, trigonometric, hyperbolic and polynomial pieces. The control data are not "
+        "printed. Each piece type is reproduced exactly by the degree-2 rule (u = cos, cosh, 1; exact), "
+        "but note that d = 2 generates span{1, cos, sin} / {1, cosh, sinh} only: a 'polynomial B-spline "
+        "piece' (u = 1) is a quadratic B-spline curve, not a reproduced polynomial.",
+        settle="the control polygons and parameter sequences of the figure (not printed); then `subdiv nonuniform "
+               "refine` replays it", evidence=[ev],
+        figures=[blended_figure("001-blended-fig2", "seed001", degrees=(2, 4, 5), levels=5)])
 
 
 def _v_locality():

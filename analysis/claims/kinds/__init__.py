@@ -14,10 +14,10 @@ Examples
 >>> kind_class("sum rule")
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, symmetry, weighted series
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
 
 Not (yet) kinds — they stay ``python`` claims: end rules of open polygons, Gibbs conditions,
-symmetry of the basic limit function, eigenvalue inequalities as sets in a parameter.
+eigenvalue inequalities as sets in a parameter.
 
 References
 ----------
@@ -30,14 +30,17 @@ from ...result import AnalysisError
 from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
 from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
+from .limit_symmetry import LimitSymmetry
 from .other import Cited, Inequality, Python
 from .profile import SmoothnessProfile
 from .regularity import CkRange, Holder, NormTest, Sobolev
+from .support_steps import SupportAfterSteps
 
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
     MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
     SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Cited, Python)}
+KIND_CLASSES.update({k.name: k for k in (SupportAfterSteps, LimitSymmetry)})   # issue 11: seed 001 (wt-3)
 
 
 def kind_class(name: str) -> type[Kind]:
