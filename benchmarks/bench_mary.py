@@ -4,6 +4,10 @@ mask coefficients (parameters at their default; the ternary 4-point family also 
 Prints one row per scheme (arity, length, alpha or its enclosure, status, seconds) and the median and
 maximum time. Target (issue 12): median under 2 s, none over 30 s.
 
+Then the same for the certified m-ary L2-Sobolev exponent (``sobolev_exponent_mary``), and the weighted
+series ``sum 3^(kn)||S_(a^n) - S_a||`` (k = 0, 1, 2) and the C^k verdicts of the ternary exponential
+B-spline (level-dependent, theta = 1).
+
 Run:  python benchmarks/bench_mary.py
 """
 
@@ -16,6 +20,7 @@ import sympy as sp
 
 import schemes
 from analysis.regularity.mary import holder_exponent_mary
+from analysis.regularity.sobolev_mary import sobolev_exponent_mary
 
 EXTRA = {"ternary-four-point": [{"mu": sp.Rational(1, 10)}, {"mu": sp.Rational(-1, 10)}]}
 
@@ -41,6 +46,44 @@ def main() -> None:
     for label, m, n, alpha, status, dt in rows:
         print(f"{label:<{w}}  {m}  {n:>3}  {alpha:<30} {status:<10} {dt:7.3f}")
     print(f"{len(times)} schemes: median {statistics.median(times):.3f} s, max {max(times):.3f} s")
+    sobolev()
+    levels()
+
+
+def sobolev() -> None:
+    times = []
+    print("\nm-ary L2-Sobolev exponent s_2 (certified)")
+    for e in schemes.entries(mary=True):
+        if e.arity == 2:
+            continue
+        for values in [dict(e.defaults)] + EXTRA.get(e.slug, []):
+            a = e.symbol_at(**values)
+            if len(a) > 12:
+                continue
+            t0 = time.perf_counter()
+            r = sobolev_exponent_mary(a, e.arity)
+            dt = time.perf_counter() - t0
+            times.append(dt)
+            s2 = sp.sstr(r.value) if r.value is not None else (
+                f"[{float(r.lower):.10f}, {float(r.upper):.10f}]" if r.lower is not None else "-")
+            label = e.slug + ("" if not values else " " + ",".join(f"{k}={v}" for k, v in values.items()))
+            print(f"  {label:<32} s_2 = {s2:<30} {r.status:<12} {dt:7.3f} s")
+    print(f"{len(times)} schemes: median {statistics.median(times):.3f} s, max {max(times):.3f} s")
+
+
+def levels() -> None:
+    from analysis.levels.mary import level_smoothness_mary, ternary_exponential_bspline_2, weighted_series_mary
+
+    s = ternary_exponential_bspline_2()
+    print("\nternary exponential B-spline of degree 2, theta = 1 (level-dependent)")
+    for k in (0, 1, 2):
+        t0 = time.perf_counter()
+        r = weighted_series_mary(s, {"theta": 1}, k)
+        print(f"  sum 3^({k}n)||S_(a^n) - S_a||: {r.witness['verdict']:<10} {r.status:<10} "
+              f"{time.perf_counter() - t0:7.3f} s")
+    t0 = time.perf_counter()
+    r = level_smoothness_mary(s, {"theta": 1})
+    print(f"  C^k verdicts (holder): C^{r.value} certified   {time.perf_counter() - t0:7.3f} s")
 
 
 if __name__ == "__main__":

@@ -294,12 +294,13 @@ def test_cli_arity_two_equals_default(argv):
     assert timeless(_run(*argv)) == timeless(_run(*argv, "--arity", "2"))
 
 
-def test_cli_list_mary_and_sobolev_inconclusive():
+def test_cli_list_mary_and_sobolev():
     rc, out, _ = _run("list", "--mary", "--json")
     rows = {r["slug"]: r for r in json.loads(out)["schemes"]}
     assert rows["ternary-four-point"]["arity"] == 3 and "arity" not in rows["chaikin"]
     rc, out, _ = _run("holder", "--scheme", "ternary-bspline-2", "--sobolev", "--json")
-    assert rc == 0 and json.loads(out)["sobolev"]["status"] == "inconclusive"
+    s2 = json.loads(out)["sobolev"]                # B-spline of degree 2: s_2 = 5/2 (tests/test_issue12_sobolev.py)
+    assert rc == 0 and (s2["status"], s2["value"]) == ("certified", "5/2")
 
 
 def test_cli_arity_two_is_byte_identical():

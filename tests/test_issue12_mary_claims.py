@@ -137,8 +137,12 @@ def _paper(kind, fields, arity=3, mask=None):
 
 
 def test_binary_kinds_refuse_mary_schemes_at_load_time():
-    with pytest.raises(AnalysisError, match=r"kind 'sobolev' is not available for arity 3 .*the m-ary kinds are"):
-        _paper("sobolev", 'at = { mu = "1/27" }\nlower = 1')
+    # every stationary kind is m-ary since the m-ary Sobolev exponent (tests/test_issue12_sobolev.py): the
+    # sobolev claim is now evaluated (s_2 = 2.2105... at mu = 1/27, between alpha = 1.817... and alpha + 1/2)
+    v = evaluate_paper(_paper("sobolev", 'at = { mu = "1/27" }\nlower = 2\nupper = 3'))[0].verdict
+    assert v.status == "certified"
+    v = evaluate_paper(_paper("sobolev", 'at = { mu = "1/27" }\nlower = "9/4"'))[0].verdict
+    assert v.status == "refuted"
     with pytest.raises(AnalysisError, match="arity must be an integer >= 2"):
         _paper("sum rules", "factors = 3", arity=1)
     with pytest.raises(AnalysisError, match="'rules' .* is binary"):

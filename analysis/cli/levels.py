@@ -91,7 +91,12 @@ def _ints(text, what):
 def cmd_series(args) -> None:
     from ..levels.level_dependent import leading_asymptotics
     from ..levels.series import weighted_series
+    from .common import scheme_arity
 
+    if (arity := scheme_arity(args)) != 2:          # level-dependent m-ary scheme (issue 12)
+        from .levels_mary import cmd_series as series_mary
+
+        return series_mary(args, arity)
     s = _level_scheme(args)
     if args.difference < 0:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
@@ -320,6 +325,7 @@ def register(sub) -> None:
     s.add_argument("--open", metavar="NAME", help="with --C: the limit's parameter; its box is read as an open "
                                                   "interval (exact norm set for the limit)")
     _add_inline(s)
+    s.add_argument("--arity", metavar="M", help="m-ary level-dependent scheme, level through M^n (issue 12)")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)
 

@@ -181,6 +181,12 @@ def cmd_holder(args, m: int) -> None:
     from ..jsonable import fmt_bound
     from ..regularity.mary import NotConvergentMary, holder_exponent_mary, smoothness_mary
 
+    from .level_input import uses_level
+
+    if uses_level(args):                        # a level-dependent m-ary scheme (analysis.levels.mary)
+        from .levels_mary import cmd_holder as holder_levels
+
+        return holder_levels(args, m)
     if getattr(args, "approx", False):
         raise AnalysisError("--approx is not available for m-ary schemes yet (issue 12)")
     a, label, head = _input(args, m)
@@ -208,11 +214,34 @@ def cmd_holder(args, m: int) -> None:
         lines.append(f"{verdict}: {s.witness['reason']}   [{s.status}]")
         data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness["reason"]}
     if getattr(args, "sobolev", False):
-        why = ("the m-ary transition-operator route (autocorrelation mask, invariant subspace of the m-ary "
-               "transition operator) is not implemented: no Sobolev exponent is claimed")
-        lines.append(f"Sobolev exponent: not computed — {why}   [inconclusive]")
-        data["sobolev"] = {"value": None, "status": "inconclusive", "reason": why}
+        _sobolev_part(a, m, lines, data)
     _emit(args, data, "\n".join(lines))
+
+
+def _sobolev_part(a, m: int, lines: list, data: dict) -> None:
+    """``holder --sobolev`` for an m-ary scheme: ``s_2 = -(1/2) log_m lambda`` (issue 12)."""
+    from ..jsonable import fmt_bound
+    from ..regularity.sobolev_mary import sobolev_exponent_mary
+
+    s2 = sobolev_exponent_mary(a, m)
+    if s2.value is not None:
+        head = f"L2-Sobolev exponent s_2 = {sp.sstr(s2.value)} exactly   [{s2.status}]"
+    elif s2.lower is not None:
+        head = (f"L2-Sobolev exponent s_2 in [{fmt_bound(s2.lower, 'lower', 12)}, {fmt_bound(s2.upper, 'upper', 12)}]"
+                f"   [{s2.status}]")
+    else:
+        head = f"L2-Sobolev exponent s_2: [{s2.status}]"
+    lines.append(head)
+    w = s2.witness
+    if "lambda_lower" in w:
+        lines.append(f"  s_2 = -(1/2) log_{m} lambda, lambda = largest root of {sp.sstr(w['minimal_polynomial'])} "
+                     f"(exact {m}-ary transfer-operator sequence, r = {w['r']})")
+    if "weight" in w:
+        lines.append(f"  weight h = (2-z-1/z)^r w: {w['weight']}")
+    if "reason" in w:
+        lines.append(f"  {w['reason']}")
+    data["sobolev"] = {"value": s2.value, "lower": s2.lower, "upper": s2.upper, "status": s2.status,
+                       "weight": w.get("weight"), "reason": w.get("reason")}
 
 
 def cmd_range(args, m: int) -> None:

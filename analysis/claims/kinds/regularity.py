@@ -148,8 +148,13 @@ class Sobolev(_ValueClaim):
     summary = "L2-Sobolev exponent s_2 at fixed parameters: value or bounds, certified"
     quantity = "s_2"
     example = 'at = { w = "1/16" }\nlower = 2'
+    mary = True
 
     def compute(self, a) -> Result:
+        if self.arity != 2:                       # s_2 = -(1/2) log_m lambda (issue 12)
+            from ...regularity.sobolev_mary import sobolev_exponent_mary
+
+            return sobolev_exponent_mary(a, self.arity)
         return sobolev_exponent(a)
 
 

@@ -1,0 +1,435 @@
+"""Level-dependent m-ary schemes: masks exact in ``h = m^-n``, weighted series, C^k (issue 12; issue 13 item 6).
+
+A level-dependent m-ary scheme ``{S_{a^n}}``, ``(S_{a^n} f)_i = sum_j a^n_{i-mj} f_j``, is a
+:class:`LevelDependentMary`: a :class:`~analysis.levels.level_dependent.LevelDependentScheme` whose variable
+``h`` (:data:`~analysis.levels.level_dependent.H`) means ``m^-n`` (not ``2^-n``), and the arity ``m``. The level
+may enter only through ``m^n`` (``cos(theta/3**(n+1))`` for ``m = 3``). Everything that is arity-free in ``h`` is
+reused (the exact limit, the exact Taylor expansion, the rigorous Taylor models with Cauchy remainders); the
+norms use the ``m`` residue classes and ``h_n = m^-n``.
+
+* :func:`distance_mary` — ``||S_{a^n} - S_a||_inf = max_r sum_j |a^n_{r+mj} - a_{r+mj}|`` at level ``n``,
+  a certified Arb enclosure;
+* :func:`weighted_series_mary` — ``sum_n m^{kn} ||S_{a^n} - S_a||_inf``: partial sum in Arb plus the analytic
+  tail ``K r^N/(1-r)``, ``r = m^{k-q}`` (``a^n - a = O(h^q)``), or certified divergence when ``k >= q``;
+* :func:`smoothness_levels_mary` — C^k by the m-ary form of Dyn–Levin's theorem, every hypothesis checked:
+  same support at every level, the limit ``S_a`` certified C^k (:func:`analysis.regularity.mary.smoothness_mary`),
+  and ``sum_n m^{kn} ||S_{a^n} - S_a|| < oo``. (Dyn–Levin 1995 state it for ``m = 2``; their proof uses the
+  dilation only through ``||S^n||``-type bounds and ``2^{-n}`` mesh sizes, and carries over with ``2 -> m``.)
+  "Not C^k" is never concluded here: the theorem is one-sided.
+
+Example: the ternary exponential B-spline of degree 2 (derived, see :func:`ternary_exponential_bspline_2`).
+
+Examples
+--------
+>>> s = ternary_exponential_bspline_2()
+>>> s.arity, s.limit().expr().factor()
+(3, (z**2 + z + 1)**3/(9*z**3))
+>>> r = weighted_series_mary(s, {"theta": 1}, 1)
+>>> r.status, r.witness["verdict"], r.witness["order"], r.witness["tail"]["ratio"]
+('certified', 'convergent', 2, '1/3')
+>>> weighted_series_mary(s, {"theta": 1}, 2).witness["verdict"]
+'divergent'
+
+Algorithm
+---------
+As :mod:`analysis.levels.series` with ``2`` replaced by ``m``: for weight ``k < q`` and ``n >= N``,
+``|g_j(h_n)| <= A_j h_n^q`` with ``A_j`` certified from the Taylor model on ``(0, m^-N]``, so the terms are
+``<= K m^{(k-q) n}``; levels ``n < N`` are enclosed in Arb at ``64 + q n log2(m) + 32`` bits. For ``k >= q`` a
+certified positive lower bound of the ``h^q`` coefficient proves divergence.
+
+References
+----------
+N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*, J. Math. Anal. Appl.
+193 (1995) 594-621.
+C. Conti, K. Hormann, *Polynomial reproduction for univariate subdivision schemes of any arity*, J. Approx.
+Theory 163 (2011) 413-437 (m-ary conventions).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any, Mapping, Sequence
+
+import flint
+import sympy as sp
+
+from ..algebra.mary import check_arity
+from ..algebra.symbol import LaurentSymbol
+from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from .level_dependent import (H, N as LEVEL, LevelDependentScheme, _ball, _read, _to_ball, arb_abs, ball_to_interval,
+                              entire_form, resolve_where, taylor_models, workprec)
+from .series import _parse_values
+
+__all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
+           "same_support_mary", "smoothness_levels_mary", "level_smoothness_mary", "ternary_exponential_bspline_2"]
+
+_Z = sp.Symbol("z")
+
+
+def to_h_mary(expr: sp.Expr, m: int) -> sp.Expr:
+    """Rewrite an expression in the level ``n`` as one in ``h = m^-n``.
+
+    >>> to_h_mary(sp.cos(sp.Symbol("theta") / 3 ** (LEVEL + 1)), 3)
+    cos(h*theta/3)
+    """
+    e = sp.sympify(expr).subs(sp.Symbol("n"), LEVEL)
+    e = e.subs(sp.Integer(m) ** LEVEL, 1 / H)
+    if LEVEL in e.free_symbols:
+        e = sp.powsimp(sp.expand_power_exp(e)).subs(sp.Integer(m) ** LEVEL, 1 / H)
+    if LEVEL in e.free_symbols:
+        raise AnalysisError(f"cannot write {expr} as a function of h = {m}^-n (the level must enter only "
+                            f"through {m}^n)")
+    return e
+
+
+class LevelDependentMary:
+    """A level-dependent m-ary scheme: ``scheme`` (coefficients exact in ``h = m^-n``) and its ``arity``."""
+
+    def __init__(self, scheme: LevelDependentScheme, arity: int):
+        self.scheme = scheme
+        self.arity = check_arity(arity)
+
+    def __repr__(self) -> str:
+        return f"LevelDependentMary({self.slug!r}, arity={self.arity}, start={self.scheme.start}, params={self.params})"
+
+    @property
+    def slug(self) -> str:
+        return self.scheme.slug
+
+    @property
+    def params(self) -> tuple:
+        return self.scheme.params
+
+    @property
+    def mask(self) -> tuple:
+        return self.scheme.mask
+
+    @property
+    def start(self) -> int:
+        return self.scheme.start
+
+    def limit(self) -> LaurentSymbol:
+        return self.scheme.limit()
+
+    def order(self) -> int:
+        return self.scheme.order()
+
+    def subs(self, values: Mapping[str, Any]) -> "LevelDependentMary":
+        return LevelDependentMary(self.scheme.subs(values), self.arity)
+
+    def symbol_in_n(self) -> sp.Expr:
+        """``a^n(z)`` with ``h`` written as ``m^-n``."""
+        return self.scheme.symbol_expr().subs(H, sp.Integer(self.arity) ** (-LEVEL))
+
+    def mask_at(self, n: int) -> list:
+        """The exact coefficients at level ``n``."""
+        return [c.subs(H, sp.Rational(1, self.arity ** int(n))) for c in self.mask]
+
+    def residue_groups(self) -> list[list[int]]:
+        m = self.arity
+        groups: dict[int, list[int]] = {r: [] for r in range(m)}
+        for k in range(len(self.mask)):
+            groups[(self.start + k) % m].append(k)
+        return list(groups.values())
+
+
+def level_scheme_mary(text=None, m: int = 3, *, mask: Sequence | None = None, start: int = 0, where=None,
+                      slug: str = "symbol", **kw) -> LevelDependentMary:
+    """A level-dependent m-ary scheme from a symbol ``a^n(z)`` (string or sympy; ``text``) or a ``mask``.
+
+    The level ``n`` enters through ``m^n``; ``where``: helper definitions (as
+    :func:`analysis.levels.level_dependent.resolve_where`). Other free names are parameters.
+
+    >>> s = level_scheme_mary("(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)", 3,
+    ...                       where=["c=cos(t/3**(n+1))", "d=cos(2*t/3**(n+1))"])      # ternary exp. B-spline
+    >>> s.params, s.limit()
+    ((t,), LaurentSymbol([1/9, 1/3, 2/3, 7/9, 2/3, 1/3, 1/9], start=-3, domain=QQ))
+    """
+    m = check_arity(m)
+    defs = resolve_where(where)
+    if (text is None) == (mask is None):
+        raise AnalysisError("give a symbol or a mask")
+    if text is not None:
+        e = _read(text, defs, "symbol").subs(defs)
+        e = to_h_mary(e, m)
+        num, den = sp.fraction(sp.together(e))
+        try:
+            dp, np_ = sp.Poly(den, _Z), sp.Poly(num, _Z)
+        except sp.PolynomialError:
+            raise AnalysisError("the symbol must be a Laurent polynomial in z whose powers do not depend on n") from None
+        if len(dp.terms()) != 1:
+            raise AnalysisError("the symbol must be a Laurent polynomial in z (only powers of z may divide)")
+        start, dc = -dp.monoms()[0][0], dp.coeffs()[0]
+        coeffs = [sp.cancel(c / dc) for c in reversed(np_.all_coeffs())]
+    else:
+        coeffs = [to_h_mary(_read(c, defs, "coefficient").subs(defs), m) for c in mask]
+    coeffs = [sp.cancel(c) if c.is_rational_function(H) else c for c in coeffs]
+    while len(coeffs) > 1 and coeffs[-1] == 0:
+        coeffs.pop()
+    while len(coeffs) > 1 and coeffs[0] == 0:
+        coeffs.pop(0)
+        start += 1
+    free = set().union(*(c.free_symbols for c in coeffs)) - {LEVEL, H, sp.Symbol("n"), sp.Symbol("h")}
+    params = tuple(sp.Symbol(x.name, real=True) for x in sorted(free, key=lambda x: x.name))
+    coeffs = [c.subs({sp.Symbol(p.name): p for p in params}) for c in coeffs]
+    return LevelDependentMary(LevelDependentScheme(tuple(coeffs), int(start), params, slug=slug, **kw), m)
+
+
+def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDependentMary:
+    """The ternary exponential B-spline scheme of degree 2 with frequencies ``{0, i theta, -i theta}``.
+
+    Derivation. ``e^{lambda x} chi_[0,1)(x) = sum_{k<3} e^{lambda k/3} (e^{lambda .} chi_[0,1/3))(x - k/3)``: the
+    exponential box with frequency ``lambda`` at spacing ``tau`` has the ternary mask ``1 + e^{lambda tau} z +
+    e^{2 lambda tau} z^2``; the exponential B-spline is the convolution of the boxes, so its level-n symbol is
+    the product of the factors with ``tau = 3^-(n+1)``. For ``lambda = +-i theta`` the product of the two factors is
+    ``1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4``, ``c_j = cos(j theta/3^(n+1))``; with the factor
+    ``1 + z + z^2`` (``lambda = 0``) and the normalisation ``a^n(1) = 3``:
+
+        a^n(z) = (1+z+z^2)(1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4) / ((3 + 4 c_1 + 2 c_2) z^3).
+
+    Check (tests): ``a^n(eps e^{-+ i theta tau}) = 0`` for ``eps = e^{+-2 pi i/3}`` (the scheme generates
+    ``1, cos(theta x), sin(theta x)``), and the limit is the ternary quadratic B-spline ``(1+z+z^2)^3/(9 z^3)``.
+    """
+    t = theta if theta is not None else sp.Symbol("theta", positive=True)
+    c1, c2 = sp.cos(t * H / 3), sp.cos(2 * t * H / 3)
+    num = sp.expand((1 + _Z + _Z ** 2) * (1 + 2 * c1 * _Z + (1 + 2 * c2) * _Z ** 2 + 2 * c1 * _Z ** 3 + _Z ** 4))
+    den = 3 + 4 * c1 + 2 * c2
+    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range(7)]
+    return LevelDependentMary(LevelDependentScheme(tuple(coeffs), -3, (t,), slug="ternary-exp-bspline-2",
+                                                   title="ternary exponential B-spline of degree 2 (trigonometric)",
+                                                   source="derived here (module docstring of analysis.levels.mary)"),
+                              3)
+
+
+# --------------------------------------------------------------------------------------------
+# distances and the weighted series
+# --------------------------------------------------------------------------------------------
+
+def _prec(q: int, n: int, m: int) -> int:
+    return int(64 + q * n * math.log2(m) + 32)
+
+
+def _differences(s: LevelDependentMary, n: int, env: dict, prec: int) -> list:
+    """Arb enclosures of ``a^n_k - a_k`` at ``h = m^-n`` (parameters exact or boxes)."""
+    sc = s.scheme
+    with workprec(prec):
+        envb = {k: _to_ball(v, False) for k, v in env.items()}
+        envb["h"] = flint.arb(1) / flint.arb(s.arity) ** int(n)
+        out = []
+        for c, c0 in zip(sc.mask, sc._limits):
+            out.append(_ball(entire_form(c), envb, False) - _ball(c0, envb, False)
+                       if H in c.free_symbols else _ball(sp.simplify(c - c0), envb, False))
+    return out
+
+
+def distance_mary(s: LevelDependentMary, n: int, values: Mapping[str, Any] | None = None) -> Result:
+    """``||S_{a^n} - S_a||_inf`` at level ``n`` (m residue classes), a certified enclosure.
+
+    >>> d = distance_mary(ternary_exponential_bspline_2(), 20, {"theta": 1})
+    >>> d.status, 0 < float(d.lower) * 9**20 < 1
+    ('certified', True)
+    """
+    if not isinstance(n, int) or n < 0:
+        raise AnalysisError(f"the level must be a non-negative integer, not {n!r}")
+    env = _parse_values(s.scheme, values)
+    try:
+        q = s.order()
+    except AnalysisError:
+        q = 0
+    prec = _prec(q, n, s.arity)
+    diffs = _differences(s, n, env, prec)
+    with workprec(prec):
+        sums = [sum((arb_abs(diffs[k]) for k in ks), flint.arb(0)) for ks in s.residue_groups()]
+        best = sums[0]
+        for x in sums[1:]:
+            best = best.max(x)
+    lo, hi = ball_to_interval(best)
+    return Result(lower=max(lo, sp.Integer(0)), upper=hi, status=CERTIFIED,
+                  witness={"residue_sums": [ball_to_interval(x) for x in sums]},
+                  provenance={"level": n, "arity": s.arity, "precision_bits": prec,
+                              "method": f"arb ball arithmetic, h = {s.arity}^-n exact"})
+
+
+def _leading(s: LevelDependentMary, env: dict):
+    """``(q, C)``: the exact order and the leading constant ``max_r sum |g_{k,q}|`` at the point values."""
+    q = s.order()
+    rows = s.scheme.taylor(q + 1)
+    point = {p: env[p.name] for p in s.params if p.name in env and not isinstance(env[p.name], tuple)}
+    per = [sp.simplify(sum(sp.Abs(rows[k][q]) for k in ks).subs(point)) for ks in s.residue_groups()]
+    C = per[0] if all(sp.simplify(x - per[0]) == 0 for x in per) else sp.Max(*per)
+    return q, C
+
+
+def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None, k: int, *,
+                         N: int = 30) -> Result:
+    """Decide and enclose ``sum_{n >= 0} m^{kn} ||S_{a^n} - S_a||_inf`` (module docstring).
+
+    ``values``: parameter -> exact value or ``(lo, hi)`` box. Certified ``[lower, upper]`` with
+    ``witness["verdict"] == "convergent"``, or ``value = oo`` ``"divergent"``, or inconclusive.
+    """
+    if isinstance(k, bool) or not isinstance(k, int) or k < 0:
+        raise AnalysisError(f"the weight exponent must be a non-negative integer, not {k!r}")
+    if not isinstance(N, int) or N < 2:
+        raise AnalysisError("N must be an integer >= 2")
+    m = s.arity
+    env = _parse_values(s.scheme, values)
+    q, C = _leading(s, env)
+    models = taylor_models(s.scheme, env)
+    rho = models[0].rho
+    groups = s.residue_groups()
+    witness: dict[str, Any] = {"weight": k, "arity": m, "order": q, "leading_constant": C,
+                               "leading_asymptotics": f"{sp.sstr(C)} * {m}^(-{q}n)"}
+    prov = {"method": "arb partial sum + Cauchy-estimate Taylor tail", "scheme": s.slug, "arity": m,
+            "parameters": {a: (tuple(v) if isinstance(v, tuple) else v) for a, v in env.items()}}
+    with workprec(128):
+        hN = flint.arb(1) / flint.arb(m) ** N
+        if not hN < rho / 2:
+            raise AnalysisError(f"N = {N} is too small for the Taylor model radius; raise N")
+    if k < q:
+        partial = flint.arb(0)
+        for n in range(N):
+            prec = _prec(q, n, m)
+            g = _differences(s, n, env, prec)
+            with workprec(prec):
+                h = flint.arb(1) / flint.arb(m) ** n
+                for j, mdl in enumerate(models):
+                    if h < mdl.rho / 2:
+                        t = mdl.enclose(h)
+                        g[j] = g[j].intersection(t) if (g[j].is_finite() and g[j].overlaps(t)) else t
+                T = None
+                for ks in groups:
+                    x = sum((arb_abs(g[j]) for j in ks), flint.arb(0))
+                    T = x if T is None else T.max(x)
+            if not T.is_finite():
+                return Result(status=INCONCLUSIVE, witness={**witness, "verdict": "unknown",
+                                                            "reason": f"level {n}: the enclosure is not finite"},
+                              provenance=prov)
+            with workprec(128):
+                partial = partial + flint.arb(m) ** (k * n) * T
+        with workprec(128):
+            K = flint.arb(0)
+            for ks in groups:
+                K = K.max(sum((models[j].abs_upper_over(q, hN) for j in ks), flint.arb(0)))
+            r = flint.arb(m) ** (k - q)
+            tail = flint.arb(K.upper()) * r ** N / (1 - r)
+            lo = partial.lower() if partial.lower() > 0 else flint.arb(0)
+            hi = partial.upper() + tail.upper()
+        witness.update({"verdict": "convergent",
+                        "tail": {"N": N, "K": ball_to_interval(flint.arb(K.upper()))[1],
+                                 "ratio": sp.sstr(sp.Rational(m) ** (k - q)), "bound": ball_to_interval(tail)[1],
+                                 "statement": f"{m}^(k n)||S_(a^n) - S_a|| <= K r^n for n >= {N}"}})
+        return Result(lower=ball_to_interval(flint.arb(lo))[0], upper=ball_to_interval(flint.arb(hi))[1],
+                      status=CERTIFIED, witness=witness, provenance=prov)
+    with workprec(128):
+        best = flint.arb(0)
+        for ks in groups:
+            tot = flint.arb(0)
+            for j in ks:
+                mdl = models[j]
+                lead = arb_abs(mdl.coeffs[q]) if len(mdl.coeffs) > q else flint.arb(0)
+                E = mdl.abs_upper_over(q + 1, hN) * hN if q + 1 <= mdl.J else flint.arb(0)
+                low = flint.arb(lead.lower()) - flint.arb(E.upper())
+                if low > 0:
+                    tot = tot + low
+            best = best.max(tot)
+    if best > 0:
+        witness.update({"verdict": "divergent", "term_lower_bound": ball_to_interval(flint.arb(best.lower()))[0],
+                        "statement": f"{m}^(k n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} (k = {k} >= q = {q})"})
+        return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
+    witness.update({"verdict": "unknown", "reason": "the leading constant is not certified nonzero"})
+    return Result(status=INCONCLUSIVE, witness=witness, provenance=prov)
+
+
+# --------------------------------------------------------------------------------------------
+# C^k
+# --------------------------------------------------------------------------------------------
+
+def same_support_mary(s: LevelDependentMary, values, *, N: int = 30) -> Result:
+    """Certify that ``a^n`` and ``a`` have the same support at every level (Arb for ``n < N``, Taylor tail after)."""
+    env = _parse_values(s.scheme, values)
+    m = s.arity
+    q = s.order()
+    models = taylor_models(s.scheme, env)
+    bad = []
+    with workprec(128):
+        envb = {a: _to_ball(v, False) for a, v in env.items()}
+        hN = flint.arb(1) / flint.arb(m) ** N
+        lows = []
+        for j, (c, c0) in enumerate(zip(s.mask, s.scheme._limits)):
+            b0 = _ball(c0, envb, False)
+            lows.append(b0)
+            if b0.contains(0):
+                bad.append((s.start + j, "limit coefficient not certified nonzero"))
+            elif H in c.free_symbols and not abs(b0) > models[j].abs_upper_over(q, hN) * hN ** q:
+                bad.append((s.start + j, "tail"))
+    if not bad:
+        for n in range(N):
+            g = _differences(s, n, env, _prec(q, n, m))
+            for j, b0 in enumerate(lows):
+                if (b0 + g[j]).contains(0):
+                    bad.append((s.start + j, f"level {n}"))
+                    break
+            if bad:
+                break
+    if bad:
+        return Result(value=None, status=INCONCLUSIVE, witness={"same_support": None, "failed": bad},
+                      provenance={"method": "arb enclosures + Taylor tail"})
+    return Result(value=True, status=CERTIFIED, witness={"same_support": True, "support": (s.start, s.scheme.end)},
+                  provenance={"method": f"arb enclosures (n < {N}) + Taylor tail (n >= {N})", "arity": m})
+
+
+def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30,
+                           budget_seconds: float = 10.0) -> Result:
+    """C^k of ``{S_{a^n}}`` by the m-ary Dyn–Levin theorem, every hypothesis checked (module docstring).
+
+    ``value`` True (certified) or None (inconclusive, ``witness["failed"]`` naming the hypotheses).
+    """
+    from ..regularity.mary import NotConvergentMary, smoothness_mary
+
+    env = _parse_values(s.scheme, values)
+    a = s.limit()
+    point = {p.name: env[p.name] for p in a.params if p.name in env}
+    if any(isinstance(v, tuple) for v in point.values()):
+        raise AnalysisError("the limit symbol depends on a boxed parameter: give exact values")
+    a = a.subs(point) if point else a
+    if a.params:
+        raise AnalysisError(f"give values for {', '.join(p.name for p in a.params)}")
+    try:
+        lim = smoothness_mary(a, s.arity, k, budget_seconds=budget_seconds)
+    except NotConvergentMary as exc:
+        lim = exc.result()
+    ser = weighted_series_mary(s, env, k, N=N)
+    sup = same_support_mary(s, env, N=N)
+    hyps = {"same_support": sup, f"limit_C^{k}": lim, f"series_k={k}": ser}
+    failed = [name for name, r in hyps.items()
+              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
+    return Result(value=True if not failed else None, status=CERTIFIED if not failed else INCONCLUSIVE,
+                  witness={"claim": f"C^{k}", "hypotheses": hyps, "failed": failed,
+                           "theorem": f"Dyn-Levin 1995 with dilation {s.arity}: same support, S_a C^{k}, "
+                                      f"sum {s.arity}^({k}n)||S_(a^n)-S_a|| < oo  =>  C^{k}"},
+                  provenance={"scheme": s.slug, "arity": s.arity, "parameters": env})
+
+
+def level_smoothness_mary(s: LevelDependentMary, values=None, *, k_max: int | None = None, N: int = 30) -> Result:
+    """The C^k verdict for ``k = 0, 1, ...`` (up to ``k_max`` or the first undecided ``k``).
+
+    ``value``: the largest ``k`` with C^k certified (``-1`` if convergence is not certified) — a lower bound.
+    """
+    from ..algebra.mary import smoothing_factor_mary
+
+    a = s.limit()
+    env = _parse_values(s.scheme, values)
+    point = {p.name: env[p.name] for p in a.params if p.name in env}
+    a = a.subs(point) if point else a
+    top = smoothing_factor_mary(a, s.arity).value - 1
+    top = top if k_max is None else min(top, k_max)
+    verdicts, best = [], -1
+    for k in range(0, max(top, 0) + 1):
+        r = smoothness_levels_mary(s, values, k, N=N)
+        verdicts.append({"k": k, "status": r.status, "failed": r.witness["failed"], "result": r})
+        if not r.is_certified:
+            break
+        best = k
+    return Result(value=best, status=CERTIFIED if best >= 0 else INCONCLUSIVE,
+                  witness={"verdicts": verdicts, "limit": a, "arity": s.arity},
+                  provenance={"scheme": s.slug, "arity": s.arity})
