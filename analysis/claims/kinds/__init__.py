@@ -10,14 +10,14 @@ evaluator by name at evaluation time).
 Examples
 --------
 >>> sorted(KIND_CLASSES)[:4]
-['asymptotic equivalence', 'cited', 'ck range', 'eigenvalues']
->>> kind_class("sum rule")
+['asymptotic equivalence', 'cited', 'ck range', 'eigenvalue inequality']
+>>> kind_class("sum rule")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalues, exponential reproduction, holder, inequality, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, symmetry, weighted series
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalue inequality, eigenvalues, end rules, ...
 
-Not (yet) kinds — they stay ``python`` claims: end rules of open polygons, Gibbs conditions,
-symmetry of the basic limit function, eigenvalue inequalities as sets in a parameter.
+Seed 004's conversion added ``eigenvalue inequality`` (:mod:`.spectral`), ``end rules`` and ``gibbs``
+(:mod:`.open_curves`).
 
 References
 ----------
@@ -30,14 +30,19 @@ from ...result import AnalysisError
 from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
 from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
+from .open_curves import EndRules, Gibbs
 from .other import Cited, Inequality, Python
 from .profile import SmoothnessProfile
 from .regularity import CkRange, Holder, NormTest, Sobolev
+from .spectral import EigenvalueInequality
 
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
     MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
     SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Cited, Python)}
+KIND_CLASSES[EigenvalueInequality.name] = EigenvalueInequality   # issue 11, seed 004
+KIND_CLASSES[EndRules.name] = EndRules                           # issue 11, seed 004
+KIND_CLASSES[Gibbs.name] = Gibbs                                 # issue 11, seed 004
 
 
 def kind_class(name: str) -> type[Kind]:

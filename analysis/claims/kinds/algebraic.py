@@ -61,7 +61,8 @@ class MaskIdentity(Kind):
     summary = "the printed mask/rules/symbol equals the scheme's symbol (exact coefficients)"
     optional = {"mask": "printed coefficients (with start)", "start": "index of the first coefficient",
                 "symbol": "printed symbol a(z)", "rules": "{even = [...], odd = [...], first = p}",
-                "same_as": "another scheme of the file", "at": "parameter values"}
+                "same_as": "another scheme of the file", "at": "parameter values",
+                "substitute": "{ parameter = \"expression\" }: a sub-family (e.g. nu = \"1 - 2*mu\")"}
     example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
     mary = True
 
@@ -74,7 +75,17 @@ class MaskIdentity(Kind):
             raise AnalysisError(f"{self.where}: kind 'mask identity' with 'rules' (even/odd) is binary; "
                                 f"for arity {self.arity} give 'mask' or 'symbol'")
         self.values()
+        self.substitution()
         self.printed()
+
+    def substitution(self) -> dict:
+        """``substitute``: parameters replaced by expressions in the others (exact)."""
+        sub = self.get("substitute", {})
+        names = {p.name: p for p in self.scheme.params}
+        if not isinstance(sub, dict) or set(sub) - set(names):
+            raise AnalysisError(f"{self.where}: 'substitute' is {{ parameter = \"expression\" }} over the "
+                                f"parameters {', '.join(sorted(names))}")
+        return {names[k]: sp.sympify(str(v), rational=True, locals=names) for k, v in sub.items()}
 
     def printed(self) -> tuple[LaurentSymbol, str]:
         f = self.fields
@@ -99,14 +110,16 @@ class MaskIdentity(Kind):
 
     def evaluate(self) -> Verdict:
         printed, what = self.printed()
-        built = self.symbol()
+        sub = self.substitution()
+        built = self.symbol().subs(sub) if sub else self.symbol()
         lo, hi = min(printed.start, built.start), max(printed.end, built.end)
         diff = [(i, printed.coeff(i), built.coeff(i)) for i in range(lo, hi + 1) if not _same(printed.coeff(i), built.coeff(i))]
         r = exact_result(not diff, "exact coefficient comparison", printed=printed, constructed=built)
-        ev = [evidence(f"{what} vs the constructed symbol of {self.where_text()}", r,
+        where = self.where_text() + (" with " + _cond_text(sub) if sub else "")
+        ev = [evidence(f"{what} vs the constructed symbol of {where}", r,
                        text=f"constructed: {built.mask} from index {built.start}")]
         if not diff:
-            return self.certified(f"{what} is the symbol of {self.where_text()} (exact)", evidence=ev,
+            return self.certified(f"{what} is the symbol of {where} (exact)", evidence=ev,
                                   numbers=[Number("support length", len(built.mask))])
         first = ", ".join(f"a_{i}: printed {sp.sstr(p)}, constructed {sp.sstr(c)}" for i, p, c in diff[:3])
         return self.refuted(f"{what} differs from the constructed symbol in {len(diff)} coefficient(s) ({first})",
@@ -120,7 +133,8 @@ class SumRules(Kind):
     name = "sum rules"
     summary = "a(z) = ((1+z)/2)^k b(z) with k factors (sum rules of order k), exceptional parameter values"
     required = {"factors": "claimed k (generic)"}
-    optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values"}
+    optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values",
+                "at_least": "true: the claim is k or more factors (e.g. a(1) = 2, a(-1) = 0 is at least 1)"}
     example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
     mary = True
 
@@ -148,8 +162,8 @@ class SumRules(Kind):
                            text=f"residue sums {', '.join(map(sp.sstr, sr.witness['residue_sums']))}"
                                 + (f"; fails: {'; '.join(sr.witness['failures'])}" if sr.witness["failures"] else ""))]
         wrong = []
-        if self.get("factors") != k:
-            wrong.append(f"generic k = {k}, not {self.get('factors')}")
+        if (k < self.get("factors")) if self.get("at_least") else (self.get("factors") != k):
+            wrong.append(f"generic k = {k}, not {'at least ' if self.get('at_least') else ''}{self.get('factors')}")
         for e in self.get("exceptional", []):
             vals = self.scheme.values(e["at"], self.where)
             hit = [x for x in found if set(map(str, x["condition"])) == set(vals)
@@ -287,6 +301,8 @@ class Eigenvalues(Kind):
         if missing or (self.get("complete") and rest):
             why = (f"not eigenvalues (or with lower multiplicity): {', '.join(map(sp.sstr, missing))}" if missing
                    else f"the spectrum has more: {', '.join(map(sp.sstr, rest))}")
+            if len(self.claimed) > nums[0].value:
+                why += f" (the claim lists {len(self.claimed)} eigenvalues of a {nums[0].value}x{nums[0].value} matrix)"
             return self.refuted(f"{why}", corrected=f"the eigenvalues are {text}", evidence=ev, numbers=nums)
         if self.get("complete") and not complete:
             return self.inconclusive("the claimed eigenvalues occur, but part of the spectrum is implicit",
