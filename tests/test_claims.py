@@ -129,7 +129,6 @@ def _verdict(cid):
 
 def test_construction_equals_catalogue_entry():
     b = K4.construction()
-    a = sp.Symbol("a")
     # independent: Q_{2i} - DE by hand with the printed (3.1), (3.2)
     Q = [sp.Rational(c, 128) for c in (-7, 105, 35, -5)]
     R = [sp.Rational(c, 64) for c in (7, 35, 21, 1)]

@@ -221,7 +221,8 @@ class Support(Kind):
     name = "support"
     summary = "support [s, e] of the mask or of the basic limit function (our indexing or centred)"
     required = {"support": "[s, e]"}
-    optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values"}
+    optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values",
+                "plot": "[{ parameter = value }, ...]: members whose basic limit functions the report draws"}
     example = 'support = [-3, 3]\nof = "limit function"'
     mary = True
 
@@ -235,6 +236,9 @@ class Support(Kind):
         if not isinstance(s, list) or len(s) != 2:
             raise AnalysisError(f"{self.where}: field 'support' must be [s, e]")
         [parse_number(x, f"{self.where}: support") for x in s]
+        if not isinstance(self.get("plot", []), list):
+            raise AnalysisError(f"{self.where}: field 'plot' is a list of parameter tables [{{ w = \"1/16\" }}, ...]")
+        [self.scheme.values(v, self.where) for v in self.get("plot", [])]
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
@@ -248,11 +252,19 @@ class Support(Kind):
         text = f"[{sp.sstr(true[0])}, {sp.sstr(true[1])}]"
         ev = [evidence(f"support of the {of}", r, text=text)]
         nums = [Number("support start", true[0]), Number("support end", true[1])]
+        figs = []
+        if self.get("plot"):                      # pictures of the basic limit functions (issue 11, seed 004)
+            from .plots import limit_function_figure
+
+            members = [self.scheme.values(v, self.where) for v in self.get("plot")]
+            figs = [limit_function_figure(f"blf-{self.scheme.name}", f"Basic limit functions of {self.scheme.name}",
+                                          [(_cond_text(v), a.subs(v)) for v in members])]
         if ok:
-            return self.certified(f"the {of} of {self.where_text()} has support {text}", evidence=ev, numbers=nums)
+            return self.certified(f"the {of} of {self.where_text()} has support {text}", evidence=ev, numbers=nums,
+                                  figures=figs)
         return self.refuted(f"the {of} of {self.where_text()} has support {text}, not "
                             f"[{sp.sstr(claim[0])}, {sp.sstr(claim[1])}]", corrected=f"support {text}",
-                            evidence=ev, numbers=nums)
+                            evidence=ev, numbers=nums, figures=figs)
 
 
 class Eigenvalues(Kind):

@@ -84,7 +84,7 @@ class EndRules(Kind):
     required = {"point": "the new point: \"P0\", \"P1\", ..., \"P2n-4\", ..., \"P2n+1\"",
                 "printed": "[[coefficient, index], ...]: index \"0\", \"1\", ... or \"n\", \"n-1\", ..."}
     optional = {"scale": "common factor of the printed coefficients (e.g. \"1/128\")",
-                "garbled": "{ μ = \"mu\", ... }: coefficients lost their minus signs (both readings tried)",
+                "garbled": "{ \"μ\" = \"mu\", ... }: coefficients lost their minus signs (both readings tried)",
                 "check_at": "{ parameter = value }: also compare with the engine's refinement there"}
     example = 'point = "P1"\nprinted = [["1/2 - w", "0"], ["1/2 + 2*w", "1"], ["-w", "2"]]'
 
@@ -251,15 +251,16 @@ class Gibbs(Kind):
             ev.append(evidence(f"exact {p.name}-sets where all zeta^[k] >= 0",
                                exact_result(sets[levels], "exact_set"),
                                text="; ".join(f"k = {k}: {s}" for k, s in sets.items())))
+        figs = [self.figure(a, lo, hi) if a.params else self.figure(a)]
         if positive:
             return self.certified(f"True: for {claim} the mask is nonnegative, so every k-step mask is a product of "
                                   "nonnegative polynomials and all zeta^[k] >= 0 for every level k.",
                                   evidence=ev, numbers=nums,
                                   sharpness=(f"the level-1 conditions hold on {sets[1]} (all levels would still need "
-                                             "checking there)") if sets else None)
+                                             "checking there)") if sets else None, figures=figs)
         if not sets:
             return self.inconclusive(f"the mask of {claim} has negative entries: the conditions need every level k",
-                                     settle="the conditions zeta^[k] >= 0 for every k", evidence=ev)
+                                     settle="the conditions zeta^[k] >= 0 for every k", evidence=ev, figures=figs)
         inside = [k for k, s in sets.items() if not contains_interval(s, lo, hi, closed=lc or hc)]
         return self.inconclusive(
             f"The level-1 conditions hold exactly for {p.name} in {sets[1]}; Theorem 2.3 (as quoted) needs them for every "
@@ -267,5 +268,17 @@ class Gibbs(Kind):
             + (f" — smaller than the printed range at k = {inside[0]}" if inside else "")
             + ". Gibbs-freeness on the range is therefore not established by this sufficient condition.",
             settle="the conditions for every k (an induction, or a lemma reducing to k = 1), or a direct analysis of "
-                   "the limit of the step data", sharpness=f"level 1 exact set {sets[1]}", evidence=ev, numbers=nums)
+                   "the limit of the step data", sharpness=f"level 1 exact set {sets[1]}", evidence=ev, numbers=nums,
+            figures=figs)
+
+    def figure(self, a, lo=None, hi=None):
+        """Step data refined by the claimed member, or by the ends and the middle of the claimed set."""
+        from .plots import step_figure
+
+        if lo is None:
+            members = [(self.where_text(), a)]
+        else:
+            p = a.params[0]
+            members = [(f"{p.name} = {sp.sstr(v)}", a.subs({p: v})) for v in (lo, (lo + hi) / 2, hi)]
+        return step_figure(f"gibbs-{self.scheme.name}", f"Step data refined by {self.scheme.name}", members)
 
