@@ -57,6 +57,8 @@ def _label(point: str):
     """``"P3"`` -> (left, i = 1, eps = 1); ``"P2n-4"`` -> (right, r = -2, eps = 0)."""
     t = point.replace(" ", "")
     try:
+        if not t.startswith("P"):
+            raise ValueError(t)
         if t.startswith("P2n"):
             k = int(t[3:] or 0)
             return "right", k // 2, k % 2
@@ -268,7 +270,8 @@ class Gibbs(Kind):
             + (f" — smaller than the printed range at k = {inside[0]}" if inside else "")
             + ". Gibbs-freeness on the range is therefore not established by this sufficient condition.",
             settle="the conditions for every k (an induction, or a lemma reducing to k = 1), or a direct analysis of "
-                   "the limit of the step data", sharpness=f"level 1 exact set {sets[1]}", evidence=ev, numbers=nums,
+                   "the limit of the step data", evidence=ev, numbers=nums,
+            sharpness=f"level 1 exact set {sets[1]}; every level holds where the mask is nonnegative: {N}",
             figures=figs)
 
     def figure(self, a, lo=None, hi=None):
