@@ -11,6 +11,8 @@ Expected values are derived by hand here, independently of the code under test:
   P_1 = -w P_-1 + (1/2 + w)(P_0 + P_1) - w P_2 = (1/2 - w) P_0 + (1/2 + 2w) P_1 - w P_2;
 * four-point zeta^[1]: the odd sub-mask -w, 1/2 + w, 1/2 + w, -w has the partial sums -w, 1/2 (left)
   and -w (right), the even one 0, 1, 0: all >= 0 iff w <= 0;
+* four-point moduli: |2w| > |(1 + sqrt(1 - 16w))/4| iff w < -1/2 (w < 0: -8w - 1 > sqrt(1 - 16w) gives
+  w(w + 1/2) > 0) or w > 1/4 (w > 1/16: the pair has modulus sqrt(w) < 2w); never for 0 <= w <= 1/16;
 * seed 004, (3.8) is (3.6) at omega = mu, nu = 1 - 2mu (the paper's Sect. 3.6).
 """
 
@@ -26,7 +28,7 @@ from analysis.algebra.symbol import LaurentSymbol
 from analysis.claims import evaluate_claim, get_paper
 from analysis.claims.kinds.base import SchemeSpec
 from analysis.claims.kinds.open_curves import EndRules, Gibbs
-from analysis.claims.kinds.spectral import EigenvalueInequality, stable_in_disk
+from analysis.claims.kinds.spectral import EigenvalueInequality, moduli_chain_set, stable_in_disk
 from analysis.claims.kinds.algebraic import MaskIdentity, SumRules
 from analysis.result import AnalysisError
 
@@ -57,6 +59,16 @@ def test_schur_cohn_agrees_with_numpy_roots():
             assert stable_in_disk(c, r) == (m < 0.25)
             checked += 1
     assert checked > 150
+
+
+def test_moduli_ordering_of_four_point_eigenvalues():
+    assert str(moduli_chain_set([2 * W, (1 + sp.sqrt(1 - 16 * W)) / 4], W)) == "(-oo, -1/2) U (1/4, oo)"
+    fields = {"moduli": ["2*w", "(1 + sqrt(1 - 16*w))/4"], "interval": "(1/4, 1/2)"}
+    assert EigenvalueInequality(fields, FOUR, "x").evaluate().label == "CERTIFIED TRUE"   # inside (1/4, oo)
+    v = EigenvalueInequality({**fields, "moduli": ["2*w", "3*w"]}, FOUR, "x").evaluate()
+    assert v.label == "INCONCLUSIVE" and "3*w" in v.summary                                # not an eigenvalue
+    with pytest.raises(AnalysisError, match="exactly one of 'j', 'moduli'"):
+        EigenvalueInequality({**fields, "j": 1}, FOUR, "x")
 
 
 def test_eigenvalue_inequality_needs_one_parameter():
@@ -123,8 +135,8 @@ def test_mask_identity_substitute():
 # ------------------------------------------------------------------ seed 004
 @pytest.mark.parametrize("cid, kind, status", [
     ("004:(3.8)", "mask identity", "certified"), ("004:(3.9)-(3.10)/P2n", "end rules", "refuted"),
-    ("004:Theorem5.1", "eigenvalue inequality", "certified"), ("004:Theorem6.2", "gibbs", "certified")],
-    ids=["3.8", "end-rule", "thm5.1", "thm6.2"])
+    ("004:Theorem5.1", "eigenvalue inequality", "certified"), ("004:(5.9)", "eigenvalue inequality", "refuted"),
+    ("004:Theorem6.2", "gibbs", "certified")], ids=["3.8", "end-rule", "thm5.1", "5.9", "thm6.2"])
 def test_seed004_claims_are_kind_data(cid, kind, status):
     claim = get_paper("004").claim(cid)
     assert claim.kind == kind
