@@ -98,10 +98,22 @@ def test_four_point_wrong_end_rule_is_refuted_with_the_derived_one():
     assert "P[2]" in v.corrected
 
 
-@pytest.mark.parametrize("point", ["Q1", "P-1", "Pn"])
-def test_end_rule_bad_point_is_a_one_line_error(point):
-    with pytest.raises(AnalysisError, match="cannot read the point"):
-        EndRules({"point": point, "printed": [["1", "0"]]}, FOUR, "x")
+@pytest.mark.parametrize("fields, message", [
+    ({"point": "Q1"}, "x: cannot read the point 'Q1'"), ({"point": "P-1"}, "cannot read the point"),
+    ({"printed": [["1", "x"]]}, "x: cannot read the point index 'x'"),
+    ({"printed": [["1/2 - v", "0"]]}, "unknown parameter 'v' in the printed coefficient"),
+    ({"printed": [["12x", "0"]], "garbled": {"ω": "w"}}, "cannot read the printed coefficient '12x'"),
+    ({"garbled": {"ω": "v"}}, "field 'garbled'"), ({"printed": "1"}, "field 'printed'")],
+    ids=["Q1", "P-1", "index", "parameter", "garbled-text", "garbled-table", "printed"])
+def test_end_rule_bad_fields_are_one_line_errors(fields, message):
+    with pytest.raises(AnalysisError, match=message):
+        EndRules({"point": "P1", "printed": [["1", "0"]], **fields}, FOUR, "x")
+
+
+def test_gibbs_needs_interval_or_every_parameter_fixed():
+    for fields in ({}, {"at": {"w": "1/8"}, "interval": "(0, 1/8)"}):
+        with pytest.raises(AnalysisError, match="kind 'gibbs' needs one free parameter"):
+            Gibbs(fields, FOUR, "x")
 
 
 # ------------------------------------------------------------------ gibbs

@@ -91,16 +91,30 @@ class EndRules(Kind):
     example = 'point = "P1"\nprinted = [["1/2 - w", "0"], ["1/2 + 2*w", "1"], ["-w", "2"]]'
 
     def check(self) -> None:
-        self.side = _label(str(self.get("point")))
         pr = self.get("printed")
         if not isinstance(pr, list) or not all(isinstance(x, list) and len(x) == 2 for x in pr):
             raise AnalysisError(f"{self.where}: field 'printed' is [[coefficient, index], ...]")
-        self.offsets = [_offset(i) for _, i in pr]
+        try:
+            self.side = _label(str(self.get("point")))
+            self.offsets = [_offset(i) for _, i in pr]
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         self.scale = self.number("scale") or sp.Integer(1)
         g = self.get("garbled")
-        if g is not None and not isinstance(g, dict):
-            raise AnalysisError(f"{self.where}: field 'garbled' is a table {{ letter = \"parameter\" }}")
+        names = {p.name for p in self.scheme.params}
+        if g is not None and (not isinstance(g, dict) or not set(map(str, g.values())) <= names):
+            raise AnalysisError(f"{self.where}: field 'garbled' is a table {{ letter = \"parameter\" }} over the "
+                                f"parameters {', '.join(sorted(names))}")
         self.letters = {k: sp.Symbol(v) for k, v in (g or {}).items()}
+        for text, _ in pr:                        # every printed coefficient must be readable now
+            try:
+                r = (read_garbled_linear(str(text), self.letters)[0] if self.letters else
+                     parse_coefficient(text, locals_={p.name: p for p in self.scheme.params}))
+            except (ValueError, AnalysisError) as exc:
+                raise AnalysisError(f"{self.where}: cannot read the printed coefficient {text!r}: {exc}") from None
+            extra = sorted({x.name for x in sp.sympify(r).free_symbols} - names)
+            if extra:
+                raise AnalysisError(f"{self.where}: unknown parameter {extra[0]!r} in the printed coefficient {text!r}")
         self.scheme.values(self.get("check_at"), self.where)
 
     def derived(self) -> LinearForm:
@@ -156,7 +170,7 @@ class EndRules(Kind):
         if not bad:
             return self.certified(f"The printed rule is the derived one{lost}.", evidence=ev, numbers=nums)
         printed_total = sp.expand(total)
-        per = f"/{sp.sstr(s)}" if s.is_Integer else f"*{sp.sstr(self.scale)}"
+        per = "" if s == 1 else f"/{sp.sstr(s)}" if s.is_Integer else f"*{sp.sstr(self.scale)}"
         return self.refuted(f"{len(bad)} printed coefficient(s) differ from the derivation: "
                             + "; ".join(f"{r[0]}: printed ({r[2]}){per}, derived ({r[3]}){per}" for r in bad)
                             + f". Printed coefficients (as read) sum to {sp.sstr(printed_total)}"
@@ -224,14 +238,16 @@ class Gibbs(Kind):
 
     def check(self) -> None:
         self.values(), self.interval("interval"), self.integer("levels", 1)
+        free = len(self.symbol().params)
+        if free > 1 or (free == 1) != ("interval" in self.fields):
+            raise AnalysisError(f"{self.where}: kind 'gibbs' needs one free parameter with 'interval', or 'at' "
+                                f"fixing every parameter ({free} free)")
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
         levels = self.get("levels", 2)
         whole = self.scheme.symbol
         p = a.params[0] if len(a.params) == 1 else (whole.params[0] if len(whole.params) == 1 else None)
-        if len(a.params) > 1 or (len(a.params) == 1 and self.get("interval") is None):
-            raise AnalysisError(f"{self.where}: kind 'gibbs' needs one free parameter with 'interval', or 'at'")
         ev, nums = [], []
         if a.params:
             lo, hi, lc, hc = self.interval("interval")
