@@ -253,7 +253,7 @@ class Support(Kind):
         ev = [evidence(f"support of the {of}", r, text=text)]
         nums = [Number("support start", true[0]), Number("support end", true[1])]
         figs = []
-        if self.get("plot"):                      # pictures of the basic limit functions (issue 11, seed 004)
+        if self.get("plot") and self.arity == 2:  # pictures of the basic limit functions (issue 11, seed 004)
             from .plots import limit_function_figure
 
             members = [self.scheme.values(v, self.where) for v in self.get("plot")]
