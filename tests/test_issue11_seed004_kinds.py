@@ -127,6 +127,28 @@ def test_gibbs_negative_mask_is_inconclusive_with_the_level_one_set():
     assert v.label == "INCONCLUSIVE" and "(-oo, 0]" in v.sharpness
 
 
+# ------------------------------------------------------------------ construction
+def test_construction_of_chaikin_from_the_cubic_b_spline_and_its_errors():
+    """P = Q - w (Q - R) with Q the cubic B-spline, R Chaikin: w = 1 is Chaikin; by hand
+    D_2i = (P_i-1 + 6 P_i + P_i+1)/8 - (3 P_i + P_i+1)/4 = (P_i-1 - P_i+1)/8."""
+    from analysis.claims.kinds.construction import Construction
+
+    q = LaurentSymbol.from_mask(["1/8", "1/2", "3/4", "1/2", "1/8"], start=-2)   # P_2i = (P_i-1 + 6 P_i + P_i+1)/8
+    r = LaurentSymbol.from_mask(["1/4", "3/4", "3/4", "1/4"], start=-2)          # P_2i = (3 P_i + P_i+1)/4
+    c = LaurentSymbol.from_expr(sp.expand((1 - W) * q.expr() + W * r.expr()))
+    S = {"q": SchemeSpec("q", q), "r": SchemeSpec("r", r), "c": SchemeSpec("c", c)}
+    f = {"scheme": "c", "from": {"Q": "q", "R": "r"}, "weights": {"even": {"0": "w"}, "odd": {"0": "w"}},
+         "forms": {"D_{2i}": {"first": -1, "coefficients": ["1/8", "0", "-1/8"]}}, "cases": [{"at": {"w": 1}, "same_as": "r"}]}
+    assert Construction(f, S, "x").evaluate().label == "CERTIFIED TRUE"
+    v = Construction({**f, "cases": [{"at": {"w": 1}, "same_as": "q"}]}, S, "x").evaluate()
+    assert v.label == "REFUTED" and "at w = 1 the construction is not 'q'" in v.summary
+    with pytest.raises(AnalysisError, match="field 'from'"):
+        Construction({**f, "from": {"Q": "q", "R": "nope"}}, S, "x")
+    v = Construction({**f, "forms": {"D_{2i+7}": "w"}}, S, "x")
+    with pytest.raises(AnalysisError, match="unknown form 'D_{2i\\+7}'"):
+        v.evaluate()
+
+
 # ------------------------------------------------------------------ extended fields of existing kinds
 def test_sum_rules_at_least():
     assert SumRules({"factors": 1, "at_least": True}, FOUR, "x").evaluate().label == "CERTIFIED TRUE"
@@ -146,9 +168,9 @@ def test_mask_identity_substitute():
 
 # ------------------------------------------------------------------ seed 004
 @pytest.mark.parametrize("cid, kind, status", [
-    ("004:(3.8)", "mask identity", "certified"), ("004:(3.9)-(3.10)/P2n", "end rules", "refuted"),
+    ("004:(3.8)", "mask identity", "certified"), ("004:Remark3.3", "construction", "certified"), ("004:(3.9)-(3.10)/P2n", "end rules", "refuted"),
     ("004:Theorem5.1", "eigenvalue inequality", "certified"), ("004:(5.9)", "eigenvalue inequality", "refuted"),
-    ("004:Theorem6.2", "gibbs", "certified")], ids=["3.8", "end-rule", "thm5.1", "5.9", "thm6.2"])
+    ("004:Theorem6.2", "gibbs", "certified")], ids=["3.8", "remark3.3", "end-rule", "thm5.1", "5.9", "thm6.2"])
 def test_seed004_claims_are_kind_data(cid, kind, status):
     claim = get_paper("004").claim(cid)
     assert claim.kind == kind

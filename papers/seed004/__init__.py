@@ -3,10 +3,9 @@
 
 The paper's checkable claims: ``PAPER`` (``subdiv report 004``), read from the paper file
 ``papers/seed004/paper.toml`` (issue 11). Its schemes (3.6), (3.7), (3.8) are catalogue entries
-(:mod:`schemes.seed004`). Every claim that fits a kind is data; the genuinely special evaluators
-that the file's ``python`` claims name are in :mod:`.construction` (the displacement vectors, the
-rule (3.6) from Steps 1-4, its matrix form, Remarks 3.2-3.3, the parents, the nonzero points after
-L steps).
+(:mod:`schemes.seed004`). Every claim that fits a kind is data (the construction Steps 1-4 too: kind
+``construction``); the genuinely special evaluators that the file's ``python`` claims name are in
+:mod:`.special` (the printed matrix form of (3.6), the nonzero points after L steps).
 
 Examples
 --------

@@ -10,14 +10,14 @@ evaluator by name at evaluation time).
 Examples
 --------
 >>> sorted(KIND_CLASSES)[:4]
-['asymptotic equivalence', 'cited', 'ck range', 'eigenvalue inequality']
+['asymptotic equivalence', 'cited', 'ck range', 'construction']
 >>> kind_class("sum rule")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, eigenvalue inequality, eigenvalues, end rules, ...
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: asymptotic equivalence, cited, ck range, construction, eigenvalue inequality, ...
 
 Seed 004's conversion added ``eigenvalue inequality`` (:mod:`.spectral`), ``end rules`` and ``gibbs``
-(:mod:`.open_curves`).
+(:mod:`.open_curves`), ``construction`` (:mod:`.construction`).
 
 References
 ----------
@@ -29,6 +29,7 @@ from __future__ import annotations
 from ...result import AnalysisError
 from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
+from .construction import Construction
 from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
 from .open_curves import EndRules, Gibbs
 from .other import Cited, Inequality, Python
@@ -43,6 +44,7 @@ KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
 KIND_CLASSES[EigenvalueInequality.name] = EigenvalueInequality   # issue 11, seed 004
 KIND_CLASSES[EndRules.name] = EndRules                           # issue 11, seed 004
 KIND_CLASSES[Gibbs.name] = Gibbs                                 # issue 11, seed 004
+KIND_CLASSES[Construction.name] = Construction                   # issue 11, seed 004
 
 
 def kind_class(name: str) -> type[Kind]:

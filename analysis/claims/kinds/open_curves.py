@@ -46,7 +46,7 @@ from ...algebra.algebraic import sign
 from ...algebra.linear_forms import LinearForm, end_rules, read_garbled_linear
 from ...algebra.symbol import parse_coefficient
 from ...result import AnalysisError
-from ..model import Number, Verdict, contains_interval, exact_result, exact_set
+from ..model import Evidence, Number, Verdict, contains_interval, exact_result, exact_set
 from .base import Kind, evidence, interval_text
 from .spectral import set_numbers
 
@@ -154,7 +154,8 @@ class EndRules(Kind):
                 rows.append((name(q), "(missing)", "0", sp.sstr(sp.expand(c * s)), "NO"))
                 bad.append(rows[-1])
         res = exact_result(not bad, "ghost points P_-m = 2P_0 - P_m, P_(n+m) = 2P_n - P_(n-m) substituted into the rules")
-        ev = [evidence("derived rule", res, text=f"{point}^(k+1) = {sp.sstr(d.to_expr())}"),
+        ev = [Evidence("derived rule", result=res, text=f"{point}^(k+1) = {sp.sstr(d.to_expr())}",
+                       latex="P_{" + point.replace(" ", "")[1:] + "}^{k+1} = " + d.latex()),
               evidence(f"printed coefficients vs derived (x {sp.sstr(s)})",
                        table=(("coefficient of", "printed", "our reading", "derived", "agree"), *rows)),
               evidence("affine invariance", text=f"sum of the derived coefficients = {sp.sstr(d.total())}; "
