@@ -92,10 +92,49 @@ def test_exact_set_handles_points_and_gaps():
 
 # ------------------------------------------------------------------------------ seed 004
 from analysis.algebra.linear_forms import read_garbled_linear  # noqa: E402
-from papers.seed004 import derivations as D4, transcription as T4  # noqa: E402
+import schemes  # noqa: E402
+from analysis.algebra.symbol import LaurentSymbol  # noqa: E402
+from analysis.algebra.linear_forms import end_rules  # noqa: E402
+from analysis.claims.kinds.open_curves import _nonneg_set, zeta_conditions  # noqa: E402
+from papers.seed004 import special as K4  # noqa: E402
 from schemes import seed004  # noqa: E402
 
 MU, NU, OMEGA = seed004.MU, seed004.NU, seed004.OMEGA
+_GREEK = {"μ": MU, "ν": NU, "ω": OMEGA}
+
+
+def _printed_end_rules():
+    """The printed end rules, as the paper file holds them: {point: [(garbled, index), ...]}."""
+    from pathlib import Path
+
+    try:
+        import tomllib
+    except ModuleNotFoundError:  # Python 3.10
+        import tomli as tomllib
+
+    data = tomllib.loads((Path(K4.__file__).with_name("paper.toml")).read_text(encoding="utf-8"))
+    return {c["point"]: [tuple(x) for x in c["printed"]] for c in data["claims"] if c["kind"] == "end rules"}
+
+
+PRINTED_END_RULES = _printed_end_rules()
+
+
+def _construction():
+    """Steps 1-4 as the paper file's 'construction' claims build them."""
+    from analysis.claims.kinds.construction import Construction
+    from analysis.claims.kinds.base import SchemeSpec
+
+    specs = {n: SchemeSpec(n, schemes.get(s).symbol) for n, s in (("dc", "seed004-design-control"),)}
+    q, r = (LaurentSymbol.from_rules(x.even, x.odd, even_first=x.even_first, odd_first=x.odd_first)
+            for x in (seed004.RULE_3_1, seed004.RULE_3_2))
+    specs.update({"q": SchemeSpec("q", q), "r": SchemeSpec("r", r)})
+    return Construction({"scheme": "dc", "from": {"Q": "q", "R": "r"}, "weights": {
+        "even": {"-1": "mu", "0": "nu", "1": "omega"}, "odd": {"-1": "omega", "0": "nu", "1": "mu"}}}, specs, "x").build()
+
+
+def _derived_end_rules():
+    b = _construction()
+    return end_rules(b["P_{2i}"], b["P_{2i+1}"])
 
 
 def _verdict(cid):
@@ -103,8 +142,7 @@ def _verdict(cid):
 
 
 def test_construction_equals_catalogue_entry():
-    b = D4.construction()
-    a = sp.Symbol("a")
+    b = _construction()
     # independent: Q_{2i} - DE by hand with the printed (3.1), (3.2)
     Q = [sp.Rational(c, 128) for c in (-7, 105, 35, -5)]
     R = [sp.Rational(c, 64) for c in (7, 35, 21, 1)]
@@ -121,7 +159,7 @@ def test_construction_equals_catalogue_entry():
 
 def _reflect_and_apply(lab, vals):
     """Independent end-rule computation: numeric ghost points and the (3.6) mask directly."""
-    a = D4.get_entry("seed004-design-control").symbol.subs(vals)
+    a = schemes.get("seed004-design-control").symbol.subs(vals)
     n = 9
     rng = np.random.default_rng(1)
     P = {j: sp.Rational(int(v), 7) for j, v in enumerate(rng.integers(-20, 20, n + 1))}
@@ -133,32 +171,35 @@ def _reflect_and_apply(lab, vals):
     if k is None:
         k = 2 * n + int(lab[3:] or 0)
     val = sum(a.coeff(k - 2 * j) * P[j] for j in range(-2, n + 4) if j in P)
-    form = D4.derived_end_rules()[lab].subs(vals)
+    form = _derived_end_rules()[lab].subs(vals)
     base = 0 if lab in ("P0", "P1", "P2", "P3") else n
     return val, sum(c * P[base + q] for q, c in form.items())
 
 
-@pytest.mark.parametrize("lab", list(T4.PRINTED_END_RULES))
+@pytest.mark.parametrize("lab", list(PRINTED_END_RULES))
 def test_end_rules_match_direct_ghost_refinement(lab):
     vals = {MU: sp.Rational(3, 17), NU: sp.Rational(-5, 11), OMEGA: sp.Rational(2, 13)}
     direct, derived = _reflect_and_apply(lab, vals)
     assert direct == derived
 
 
-@pytest.mark.parametrize("lab", list(T4.PRINTED_END_RULES))
+@pytest.mark.parametrize("lab", list(PRINTED_END_RULES))
 def test_end_rule_verdict_follows_printed_coefficients(lab):
-    derived = D4.derived_end_rules()[lab]
+    derived = _derived_end_rules()[lab]
     agree = all(any(sp.expand(r - derived[q] * 128) == 0
-                    for r in read_garbled_linear(g, T4._GREEK))
-                for g, idx in T4.PRINTED_END_RULES[lab]
+                    for r in read_garbled_linear(g, _GREEK))
+                for g, idx in PRINTED_END_RULES[lab]
                 for q in [int(idx[1:] or 0) if idx.startswith("n") else int(idx)])
-    agree &= len(T4.PRINTED_END_RULES[lab]) == len(derived.items())
+    agree &= len(PRINTED_END_RULES[lab]) == len(derived.items())
     assert _verdict(f"004:(3.9)-(3.10)/{lab}").status == (CERTIFIED if agree else REFUTED)
 
 
 def test_theorem_5_1_necessary_set_is_minus_one_to_25_over_7():
     # independent: sample |9/64 - 7nu/64| < 1/4 on a grid of rationals
-    s, _ = D4._lam5_set()
+    from analysis.claims.kinds.base import SchemeSpec
+    from analysis.claims.kinds.spectral import EigenvalueInequality
+    t = SchemeSpec("t-nu", schemes.get("seed004-t-nu").symbol)
+    s = EigenvalueInequality({"j": 2, "interval": "(5/7, 13/7)"}, {"t-nu": t}, "x").exact()[0]
     for q in [sp.Rational(k, 20) for k in range(-40, 90)]:
         assert s.contains(q) == (abs(sp.Rational(9, 64) - 7 * q / 64) < sp.Rational(1, 4))
     v = _verdict("004:Theorem5.1")
@@ -166,7 +207,9 @@ def test_theorem_5_1_necessary_set_is_minus_one_to_25_over_7():
 
 
 def test_inequality_5_7_against_float_eigenvalues():
-    s = D4.inequality_sets()["5.7"]
+    from analysis.claims.kinds.spectral import moduli_chain_set
+    D = 833 * MU ** 2 + 70 * MU + 1
+    s = moduli_chain_set([-7 * MU / 32, (7 * MU + 1 + sp.sqrt(D)) / 128], MU)
     for mu in (-2.0, -0.5, -0.06, -0.04, -0.03, 0.0, 0.3):
         c, D = 7 * mu + 1, 833 * mu ** 2 + 70 * mu + 1
         l8 = (c + np.sqrt(complex(D))) / 128
@@ -175,26 +218,26 @@ def test_inequality_5_7_against_float_eigenvalues():
 
 def test_c6_claim_is_refuted_by_a_c7_member():
     from analysis.stationary.difference import difference_norm
-    a = D4.get_entry("seed004-design-control").symbol_at(mu="-1/56", nu="29/28", omega="-1/56")
+    a = schemes.get("seed004-design-control").symbol_at(mu="-1/56", nu="29/28", omega="-1/56")
     assert difference_norm(a, 8, 1).value < 1            # C^7 by Dyn-Levin
-    v = _verdict("004:Sec7(C6)")
-    assert v.status == REFUTED and "C^7" in v.corrected
+    v = _verdict("004:Sec7(C6)")                          # alpha <= 7 is refuted: alpha > 7 there
+    assert v.status == REFUTED and v.numbers[0].lower > 7
 
 
 def test_theorem_5_3_eigenvalue_list_is_refuted_for_the_double_one_over_64():
     from analysis.stationary.transition import local_eigenvalues
-    r = local_eigenvalues(D4.get_entry("seed004-l-mu").symbol)
+    r = local_eigenvalues(schemes.get("seed004-l-mu").symbol)
     assert r.value[sp.Rational(1, 64)] == 1 and sum(r.value.values()) == 10
     assert _verdict("004:Theorem5.3(eigenvalues)").status == REFUTED
 
 
 def test_gibbs_level_one_conditions():
-    t = D4.get_entry("seed004-t-nu").symbol
-    z = D4.zeta_conditions(t, 1)
+    t = schemes.get("seed004-t-nu").symbol
+    z = zeta_conditions(t, 1)
     # the paper's own partial sums: zeta_0(-2) = t_-4, zeta_1(-1) = t_-1 + t_-3
     assert sp.expand(z[(0, -2)] - t.coeff(-4)) == 0
     assert sp.expand(z[(1, -1)] - t.coeff(-1) - t.coeff(-3)) == 0
-    s, _ = D4._zeta_set(t, 1, NU)
+    s = _nonneg_set(z.values(), NU)
     assert str(s) == "[5/7, 7]"
 
 

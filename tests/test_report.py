@@ -36,10 +36,10 @@ def report_dir(tmp_path_factory):
 def test_report_files_are_written(report_dir):
     md = (report_dir / "004.md").read_text(encoding="utf-8")
     assert "| claim | kind | verdict | summary |" in md
-    assert "| 004:Sec7(C6) | smoothness | REFUTED |" in md
+    assert "| 004:Sec7(C6) | holder | REFUTED |" in md
     html = (report_dir / "004.html").read_text(encoding="utf-8")
     assert 'id="verdicts"' in html and "figures/formulas/" in html
-    assert (report_dir / "figures" / "blf-seed004-design-control.png").exists()
+    assert (report_dir / "figures" / "blf-design-control.png").exists()
     assert list((report_dir / "figures" / "formulas").glob("f-*.svg"))
     data = json.loads((report_dir / "verdicts.json").read_text())
     assert set(data["papers"]["004"]["claims"]) == set(FAST)
@@ -56,7 +56,7 @@ def test_check_fails_with_a_readable_diff_when_verdicts_are_altered(report_dir, 
     data = json.loads((report_dir / "verdicts.json").read_text())
     claims = data["papers"]["004"]["claims"]
     claims["004:Theorem5.1"]["status"] = "refuted"
-    claims["004:Sec7(C6)"]["numbers"]["holder_upper_bound"]["float"] += 1e-3
+    claims["004:Sec7(C6)"]["numbers"]["alpha"]["float"] += 1e-3
     claims["004:Lemma4.1"]["numbers"]["last_nonzero_index"]["exact"] = "6"
     bad = tmp_path / "verdicts.json"
     bad.write_text(json.dumps(data))
@@ -65,7 +65,7 @@ def test_check_fails_with_a_readable_diff_when_verdicts_are_altered(report_dir, 
     assert info.value.code == 1
     out = capsys.readouterr().out
     assert "004:Theorem5.1: status changed: refuted -> certified" in out
-    assert "004:Sec7(C6): number 'holder_upper_bound' moved" in out
+    assert "004:Sec7(C6): number 'alpha' moved" in out
     assert "004:Lemma4.1: number 'last_nonzero_index' changed: 6 -> 5 (exact)" in out
 
 

@@ -9,15 +9,17 @@ evaluator by name at evaluation time).
 
 Examples
 --------
->>> sorted(KIND_CLASSES)[:3]
-['all of', 'asymptotic equivalence', 'cited']
->>> kind_class("sum rule")
+>>> sorted(KIND_CLASSES)[:4]
+['all of', 'asymptotic equivalence', 'cited', 'ck range']
+>>> kind_class("sum rule")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: all of, asymptotic equivalence, cited, ck range, curve comparison, eigenvalues, exponential reproduction, factorization, holder, identity, inequality, limit symmetry, mask identity, norm test, python, reproduction, smoothness profile, sobolev, sum rules, support, support after steps, symmetry, weighted series
+analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: all of, asymptotic equivalence, cited, ck range, construction, ...
 
-Not (yet) kinds — they stay ``python`` claims: end rules of open polygons, Gibbs conditions,
-eigenvalue inequalities as sets in a parameter.
+Kinds added with the bundled papers' conversion: ``identity``, ``factorization``, ``inequality``
+(:mod:`.lemma`), ``curve comparison``, ``all of`` (seeds 003/000); ``support after steps``,
+``limit symmetry`` (seed 001); ``eigenvalue inequality`` (:mod:`.spectral`), ``end rules`` and ``gibbs``
+(:mod:`.open_curves`), ``construction`` (:mod:`.construction`) (seed 004).
 
 References
 ----------
@@ -30,20 +32,24 @@ from ...result import AnalysisError
 from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
 from .compound import AllOf
+from .construction import Construction
 from .curves import CurveComparison
 from .lemma import Factorization, Identity
 from .levels import AsymptoticEquivalence, ExponentialReproduction, WeightedSeries
 from .limit_symmetry import LimitSymmetry
+from .open_curves import EndRules, Gibbs
 from .other import Cited, Inequality, Python
 from .profile import SmoothnessProfile
 from .regularity import CkRange, Holder, NormTest, Sobolev
+from .spectral import EigenvalueInequality
 from .support_steps import SupportAfterSteps
 
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
     MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
-    SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Identity, Factorization, CurveComparison, AllOf, Cited, Python)}
-KIND_CLASSES.update({k.name: k for k in (SupportAfterSteps, LimitSymmetry)})   # issue 11: seed 001
+    SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Identity,
+    Factorization, EigenvalueInequality, SupportAfterSteps, LimitSymmetry, EndRules, Gibbs, Construction,
+    CurveComparison, AllOf, Cited, Python)}
 
 
 def kind_class(name: str) -> type[Kind]:

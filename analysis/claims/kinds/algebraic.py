@@ -61,7 +61,8 @@ class MaskIdentity(Kind):
     summary = "the printed mask/rules/symbol equals the scheme's symbol (exact coefficients)"
     optional = {"mask": "printed coefficients (with start)", "start": "index of the first coefficient",
                 "symbol": "printed symbol a(z)", "rules": "{even = [...], odd = [...], first = p}",
-                "same_as": "another scheme of the file", "at": "parameter values"}
+                "same_as": "another scheme of the file", "at": "parameter values",
+                "substitute": "{ parameter = \"expression\" }: a sub-family (e.g. nu = \"1 - 2*mu\")"}
     example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
     mary = True
 
@@ -74,7 +75,17 @@ class MaskIdentity(Kind):
             raise AnalysisError(f"{self.where}: kind 'mask identity' with 'rules' (even/odd) is binary; "
                                 f"for arity {self.arity} give 'mask' or 'symbol'")
         self.values()
+        self.substitution()
         self.printed()
+
+    def substitution(self) -> dict:
+        """``substitute``: parameters replaced by expressions in the others (exact)."""
+        sub = self.get("substitute", {})
+        names = {p.name: p for p in self.scheme.params}
+        if not isinstance(sub, dict) or set(sub) - set(names):
+            raise AnalysisError(f"{self.where}: 'substitute' is {{ parameter = \"expression\" }} over the "
+                                f"parameters {', '.join(sorted(names))}")
+        return {names[k]: sp.sympify(str(v), rational=True, locals=names) for k, v in sub.items()}
 
     def printed(self) -> tuple[LaurentSymbol, str]:
         f = self.fields
@@ -99,14 +110,16 @@ class MaskIdentity(Kind):
 
     def evaluate(self) -> Verdict:
         printed, what = self.printed()
-        built = self.symbol()
+        sub = self.substitution()
+        built = self.symbol().subs(sub) if sub else self.symbol()
         lo, hi = min(printed.start, built.start), max(printed.end, built.end)
         diff = [(i, printed.coeff(i), built.coeff(i)) for i in range(lo, hi + 1) if not _same(printed.coeff(i), built.coeff(i))]
         r = exact_result(not diff, "exact coefficient comparison", printed=printed, constructed=built)
-        ev = [evidence(f"{what} vs the constructed symbol of {self.where_text()}", r,
+        where = self.where_text() + (" with " + _cond_text(sub) if sub else "")
+        ev = [evidence(f"{what} vs the constructed symbol of {where}", r,
                        text=f"constructed: {built.mask} from index {built.start}")]
         if not diff:
-            return self.certified(f"{what} is the symbol of {self.where_text()} (exact)", evidence=ev,
+            return self.certified(f"{what} is the symbol of {where} (exact)", evidence=ev,
                                   numbers=[Number("support length", len(built.mask))])
         first = ", ".join(f"a_{i}: printed {sp.sstr(p)}, constructed {sp.sstr(c)}" for i, p, c in diff[:3])
         return self.refuted(f"{what} differs from the constructed symbol in {len(diff)} coefficient(s) ({first})",
@@ -120,7 +133,8 @@ class SumRules(Kind):
     name = "sum rules"
     summary = "a(z) = ((1+z)/2)^k b(z) with k factors (sum rules of order k), exceptional parameter values"
     required = {"factors": "claimed k (generic)"}
-    optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values"}
+    optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values",
+                "at_least": "true: the claim is k or more factors (e.g. a(1) = 2, a(-1) = 0 is at least 1)"}
     example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
     mary = True
 
@@ -148,8 +162,8 @@ class SumRules(Kind):
                            text=f"residue sums {', '.join(map(sp.sstr, sr.witness['residue_sums']))}"
                                 + (f"; fails: {'; '.join(sr.witness['failures'])}" if sr.witness["failures"] else ""))]
         wrong = []
-        if self.get("factors") != k:
-            wrong.append(f"generic k = {k}, not {self.get('factors')}")
+        if (k < self.get("factors")) if self.get("at_least") else (self.get("factors") != k):
+            wrong.append(f"generic k = {k}, not {'at least ' if self.get('at_least') else ''}{self.get('factors')}")
         for e in self.get("exceptional", []):
             vals = self.scheme.values(e["at"], self.where)
             hit = [x for x in found if set(map(str, x["condition"])) == set(vals)
@@ -207,7 +221,8 @@ class Support(Kind):
     name = "support"
     summary = "support [s, e] of the mask or of the basic limit function (our indexing or centred)"
     required = {"support": "[s, e]"}
-    optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values"}
+    optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values",
+                "plot": "[{ parameter = value }, ...]: members whose basic limit functions the report draws"}
     example = 'support = [-3, 3]\nof = "limit function"'
     mary = True
 
@@ -221,6 +236,9 @@ class Support(Kind):
         if not isinstance(s, list) or len(s) != 2:
             raise AnalysisError(f"{self.where}: field 'support' must be [s, e]")
         [parse_number(x, f"{self.where}: support") for x in s]
+        if not isinstance(self.get("plot", []), list):
+            raise AnalysisError(f"{self.where}: field 'plot' is a list of parameter tables [{{ w = \"1/16\" }}, ...]")
+        [self.scheme.values(v, self.where) for v in self.get("plot", [])]
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
@@ -234,11 +252,19 @@ class Support(Kind):
         text = f"[{sp.sstr(true[0])}, {sp.sstr(true[1])}]"
         ev = [evidence(f"support of the {of}", r, text=text)]
         nums = [Number("support start", true[0]), Number("support end", true[1])]
+        figs = []
+        if self.get("plot") and self.arity == 2:  # pictures of the basic limit functions (issue 11, seed 004)
+            from .plots import limit_function_figure
+
+            members = [self.scheme.values(v, self.where) for v in self.get("plot")]
+            figs = [limit_function_figure(f"blf-{self.scheme.name}", f"Basic limit functions of {self.scheme.name}",
+                                          [(_cond_text(v), a.subs(v)) for v in members])]
         if ok:
-            return self.certified(f"the {of} of {self.where_text()} has support {text}", evidence=ev, numbers=nums)
+            return self.certified(f"the {of} of {self.where_text()} has support {text}", evidence=ev, numbers=nums,
+                                  figures=figs)
         return self.refuted(f"the {of} of {self.where_text()} has support {text}, not "
                             f"[{sp.sstr(claim[0])}, {sp.sstr(claim[1])}]", corrected=f"support {text}",
-                            evidence=ev, numbers=nums)
+                            evidence=ev, numbers=nums, figures=figs)
 
 
 class Eigenvalues(Kind):
@@ -287,6 +313,8 @@ class Eigenvalues(Kind):
         if missing or (self.get("complete") and rest):
             why = (f"not eigenvalues (or with lower multiplicity): {', '.join(map(sp.sstr, missing))}" if missing
                    else f"the spectrum has more: {', '.join(map(sp.sstr, rest))}")
+            if len(self.claimed) > nums[0].value:
+                why += f" (the claim lists {len(self.claimed)} eigenvalues of a {nums[0].value}x{nums[0].value} matrix)"
             return self.refuted(f"{why}", corrected=f"the eigenvalues are {text}", evidence=ev, numbers=nums)
         if self.get("complete") and not complete:
             return self.inconclusive("the claimed eigenvalues occur, but part of the spectrum is implicit",

@@ -164,11 +164,12 @@ class NormTest(Kind):
     name = "norm test"
     summary = "the L-step norm test proves C^j on the claimed interval (exact norm set)"
     required = {"j": "smoothness C^j", "L": "number of steps", "interval": "claimed parameter interval"}
+    optional = {"at": "values of the other parameters", "plot": "\"(a, b)\": the report draws the norm over this range"}
     example = 'j = 1\nL = 2\ninterval = "(0, 1/8)"'
     mary = True
 
     def check(self) -> None:
-        self.integer("j"), self.integer("L", 1), self.interval("interval")
+        self.integer("j"), self.integer("L", 1), self.interval("interval"), self.interval("plot")
         self.values()
 
     def evaluate(self) -> Verdict:
@@ -186,11 +187,18 @@ class NormTest(Kind):
         claim = interval_text(lo, hi, lc, hc)
         ev = [evidence(f"exact set where ||(1/{m} S_(a_{j + 1}))^{L}||_inf < 1", r, text=f"{p.name} in {S}")]
         nums = [Number("norm set", str(S))]
+        figs = []
+        if self.get("plot") and m == 2:           # the norm curve (issue 11, seed 004)
+            from .plots import norm_figure
+
+            figs = [norm_figure(f"norm-{self.scheme.name}-j{j}-L{L}", f"{L}-step norm of the difference scheme for C^{j}",
+                                a, p, j, L, self.interval("plot")[:2], (lo, hi), S)]
         if ok:
             return self.certified(f"the {L}-step norm test proves C^{j} for {p.name} in {claim}: it holds exactly on {S}",
-                                  evidence=ev, numbers=nums, sharpness=f"the norm-test set is {S}")
+                                  evidence=ev, numbers=nums, sharpness=f"the norm-test set is {S}", figures=figs)
         return self.refuted(f"the {L}-step norm test for C^{j} holds exactly on {S}, which does not contain {claim}",
-                            corrected=f"the {L}-step norm test proves C^{j} for {p.name} in {S}", evidence=ev, numbers=nums)
+                            corrected=f"the {L}-step norm test proves C^{j} for {p.name} in {S}", evidence=ev, numbers=nums,
+                            figures=figs)
 
 
 class CkRange(Kind):
