@@ -102,6 +102,36 @@ def _ra(x):
     return RealAlgebraic.from_expr(sp.sympify(x))
 
 
+def _compare(x, y) -> int:
+    """The sign of ``x - y`` for exact real constants, certified (exact for algebraic numbers, else an
+    exact zero test and an Arb ball at up to 256 bits)."""
+    from ...algebra.algebraic import RealAlgebraic
+
+    x, y = sp.sympify(x), sp.sympify(y)
+    try:
+        return RealAlgebraic.from_expr(x).compare(RealAlgebraic.from_expr(y))
+    except Exception:   # not algebraic (pi/5, exp(1), ...): exact zero test, then a ball
+        pass
+    d = sp.simplify(x - y)
+    if d == 0:
+        return 0
+    import flint
+
+    from ...levels.balls import ball
+
+    for prec in (64, 128, 256):
+        old, flint.ctx.prec = flint.ctx.prec, prec
+        try:
+            b = ball(d)
+        finally:
+            flint.ctx.prec = old
+        if b > 0:
+            return 1
+        if b < 0:
+            return -1
+    raise AnalysisError(f"cannot decide the sign of {sp.sstr(d)} (256-bit balls contain 0)")
+
+
 @dataclass(frozen=True)
 class Domain:
     """The domain of a parameter: an interval (possibly unbounded) of the real line."""
@@ -118,14 +148,21 @@ class Domain:
         return cls(*parse_interval(x, "parameter domain"))
 
     def contains(self, v) -> bool:
+        """Whether the exact number ``v`` lies in the domain, decided exactly: real algebraic numbers are
+        compared exactly; other constants (``pi/5``, ``exp(1)``) by exact equality or a certified Arb
+        ball comparison (an :class:`AnalysisError` if 256 bits cannot separate them).
+
+        >>> d = Domain.parse("(0, pi/3)")
+        >>> d.contains("pi/5"), d.contains("pi/3"), d.contains("sqrt(2)/2"), d.contains(-1)
+        (True, False, True, False)
+        """
         v = sp.sympify(v)
-        x = _ra(v)
         if self.lo != -sp.oo:
-            c = x.compare(_ra(self.lo))
+            c = _compare(v, self.lo)
             if c < 0 or (c == 0 and not self.lo_closed):
                 return False
         if self.hi != sp.oo:
-            c = x.compare(_ra(self.hi))
+            c = _compare(v, self.hi)
             if c > 0 or (c == 0 and not self.hi_closed):
                 return False
         return True
