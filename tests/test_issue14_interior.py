@@ -189,3 +189,54 @@ def test_family_excludes_other_inputs(tmp_path):
     _run("derive", "--support", "3", "--symmetric", "primal", "--sum-rules", "1", "--output", str(f))
     r = _run("atlas", "--family", str(f), "--mask", "1,1", "--x", "t1=0:1:2", "--y", "t1=0:1:2")
     assert r.returncode == 2 and "--family replaces the scheme input" in r.stderr
+
+
+# ------------------------------------------------------------------ --maximize beyond one binary parameter
+def test_maximize_ternary_family():
+    """Ternary interpolatory 4-point family on [-1/16, 0]: certified gap <= 1e-3, and every sampled
+    member's certified alpha (holder_exponent_mary, an independent route) lies below the box bound."""
+    from analysis.regularity.mary import holder_exponent_mary
+    from analysis.regularity.maximize_box import maximize_holder_box
+
+    a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
+    t = a.params[0]
+    r = maximize_holder_box(a, {"t1": (sp.Rational(-1, 16), 0)}, arity=3, gap=sp.Rational(1, 1000),
+                            budget_seconds=60)
+    assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 1000)
+    for q in (sp.Rational(-1, 16), sp.Rational(-1, 20), r.value["t1"] + sp.Rational(1, 500), sp.Rational(-1, 100)):
+        h = holder_exponent_mary(a.subs({t: q}), 3)
+        assert h.lower <= r.upper
+    h = holder_exponent_mary(a.subs({t: r.value["t1"]}), 3)
+    assert h.upper >= r.lower
+
+
+@pytest.mark.slow
+def test_maximize_two_parameters_finds_the_exceptional_line():
+    """The two-parameter family (support 11, reproducing linears) on t1 in [0, 1/32], t2 in [-1/8, 0]:
+    generic members have 2 factors (alpha < 2), the maximum lies on the exceptional line
+    t1 = -t2/3 - 1/48 (4 factors: the one-parameter family reproducing cubics), whose maximiser the
+    one-parameter routine finds independently (README: t1* ~ 0.0138241, alpha 3.206710)."""
+    from analysis.regularity.maximize import maximize_holder
+    from analysis.regularity.maximize_box import maximize_holder_box
+
+    a = derive_mask(support=11, interpolatory=True, symmetric="primal", reproduction=1).value
+    r = maximize_holder_box(a, {"t1": (0, sp.Rational(1, 32)), "t2": (sp.Rational(-1, 8), 0)},
+                            gap=sp.Rational(1, 100), budget_seconds=120)
+    assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 100)
+    t1, t2 = r.value["t1"], r.value["t2"]
+    assert t1 == -t2 / 3 - sp.Rational(1, 48)
+    one = derive_mask(support=11, interpolatory=True, symmetric="primal", reproduction=3).value
+    ref = maximize_holder(one, within=(0, sp.Rational(1, 32)), gap=sp.Rational(1, 100))
+    assert abs(float(ref.value) - float(t1)) < 1e-3
+    assert abs(float(ref.lower) - float(r.lower)) < 1e-2 and ref.lower <= r.upper
+    h = smoothness(a.subs({"t1": sp.Rational(1, 64), "t2": sp.Rational(-1, 16)}), 2)   # a generic member
+    assert h.value is False
+
+
+def test_cli_maximize_box_errors():
+    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+             "--maximize", "holder", "--box", "t1=0,1/32")
+    assert r.returncode == 2 and "give a range for every free parameter (t1, t2)" in r.stderr
+    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+             "--maximize", "holder", "--box", "t1:0,1")
+    assert r.returncode == 2 and "malformed --box" in r.stderr
