@@ -8,9 +8,13 @@ Examples
     subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 --json
     subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 3 \\
         --maximize holder --within 0,1/32
+    subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 3 --C 2 --within=-1/32,1/16
+    subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 1 --output fam.json \\
+        --maximize holder --box t1=0,1/32 --box t2=-1/8,0
 
 The printed mask string can be pasted into ``subdiv range --mask "..." --start S`` or
-``subdiv atlas --mask "..." --start S`` (the free parameters ``t1, t2, ...`` are parameters there).
+``subdiv atlas --mask "..." --start S`` (the free parameters ``t1, t2, ...`` are parameters there),
+or the family written with ``--output`` read back by ``subdiv range|atlas --family FILE.json``.
 """
 
 from __future__ import annotations
