@@ -240,3 +240,18 @@ def test_cli_maximize_box_errors():
     r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
              "--maximize", "holder", "--box", "t1:0,1")
     assert r.returncode == 2 and "malformed --box" in r.stderr
+
+
+def test_profile_lists_the_strips():
+    """The smoothness-profile kind: the C^1 row of the 4-point family names the strip left next to
+    w* (the root of 32 w^3 + 4 w - 1, Hechler–Mößner–Reif 2009) and the status stays inconclusive."""
+    from analysis.claims.kinds.base import SchemeSpec
+    from analysis.claims.kinds.profile import SmoothnessProfile
+
+    v = SmoothnessProfile({"within": "(0, 1/4)", "max_j": 1, "grid": 4, "samples": 2},
+                          {"s": SchemeSpec("s", FOUR_POINT)}, "x").evaluate()
+    assert v.label == "INCONCLUSIVE"
+    table = next(e.table for e in v.evidence if e.table)
+    row = next(r for r in table if r[0] == "C^1")
+    assert "interior certified (exact parametric norm tests) except" in row[2]
+    assert "CRootOf(32*w**3 + 4*w - 1, 0)" in row[2]
