@@ -192,7 +192,7 @@ def _ck_part(args, r, arity: int, lines: list, data: dict) -> None:
     from ..regularity.ranges import ck_parameter_set
     from .regularity import _interior_lines
 
-    c = ck_parameter_set(r.value, j, within=(lo, hi))
+    c = ck_parameter_set(r.value, j, within=(lo, hi), interior_L_max=12)
     lines.append(f"C^{j} set on [{lo}, {hi}] ({c.status}):")
     for run in c.value:
         if run.get("interior"):

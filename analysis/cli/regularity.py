@@ -320,7 +320,7 @@ def cmd_range(args) -> None:
     if not (1e-30 <= tol <= 1):
         raise AnalysisError("--tol must be between 1e-30 and 1")
     r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
-                         budget_seconds=float(args.budget))
+                         budget_seconds=float(args.budget), interior_L_max=12)
     p = r.witness["parameter"]
     lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
              f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]

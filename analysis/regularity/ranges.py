@@ -91,7 +91,7 @@ def _verdict_at(a, p, value, j, budget):
 
 
 def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), grid: int = 16,
-                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 12) -> Result:
+                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 10) -> Result:
     """Where is the one-parameter family ``a(p)`` C^j?  Boundaries to ``tol``, bracketed by certified points.
 
     A grid of ``grid + 1`` rational points in ``within`` gets certified verdicts; between two
