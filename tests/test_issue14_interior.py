@@ -255,3 +255,21 @@ def test_profile_lists_the_strips():
     row = next(r for r in table if r[0] == "C^1")
     assert "interior certified (exact parametric norm tests) except" in row[2]
     assert "CRootOf(32*w**3 + 4*w - 1, 0)" in row[2]
+
+
+def test_range_with_algebraic_coefficients_is_not_a_traceback():
+    """Regression: a family over QQ(sqrt 2)[t1] crashed in the exact boundary determinant
+    (CoercionFailed); now the boundary is bisected and the interior says why no norm test ran."""
+    from analysis.regularity.ranges import ck_parameter_set
+
+    t = sp.Symbol("t1")
+    s2 = sp.sqrt(2)
+    a = LaurentSymbol.from_mask([s2 * t, 0, sp.Rational(1, 2) - s2 * t, 1, sp.Rational(1, 2) - s2 * t, 0, s2 * t],
+                                start=-3)
+    r = ck_parameter_set(a, 1, within=(sp.Rational(-1, 16), 0), grid=2, tol=0.05)
+    (run,) = r.value
+    assert r.status == "inconclusive" and run["interior"]["proven"] is False
+    assert "polynomials in t1 over the rationals" in run["interior"]["route"]
+    with pytest.raises(Exception) as exc:
+        ParametricNorm(difference_symbol(a, 2), t, 2)
+    assert type(exc.value).__name__ == "AnalysisError"

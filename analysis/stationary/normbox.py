@@ -124,7 +124,11 @@ class ParametricNorm:
             c = sp.sympify(c)
             if c.free_symbols - {p}:
                 raise AnalysisError(f"the coefficients must depend on {p.name} only")
-            polys.append(sp.Poly(c, p, domain=sp.QQ))
+            try:
+                polys.append(sp.Poly(c, p, domain=sp.QQ))
+            except (sp.PolificationFailed, sp.PolynomialError, sp.polys.polyerrors.CoercionFailed):
+                raise AnalysisError(f"the parametric norm needs coefficients that are polynomials in {p.name} "
+                                    f"over the rationals, not {sp.sstr(c)}") from None
         deg = max((q.degree() for q in polys if not q.is_zero), default=0)
         d = lcm(*[int(sp.Rational(co).q) for q in polys for co in q.all_coeffs()])
         ints = [[int(co * d) for co in reversed(q.all_coeffs())] if not q.is_zero else [] for q in polys]
