@@ -248,12 +248,15 @@ class ParametricNorm:
             P = self._poly(coeffs) - sp.Poly(sp.Rational(bnd.numerator, bnd.denominator) * self.scale, self.p)
             if P.is_zero or P.eval(wq) >= 0 or e.sign_of(P) > 0:
                 return None
-            for r in RealAlgebraic.roots_of(P):
+            roots = RealAlgebraic.roots_of(P)
+            for r in roots:
                 inside = (r.compare(e) > 0 and r.compare(W) < 0) if side > 0 else \
                          (r.compare(W) > 0 and r.compare(e) < 0)
                 if inside:
                     return None
             touching.append({"residue": self.residues[lo],
                              "sum": sp.sstr(sp.expand(P.as_expr() / self.scale + sp.Rational(bnd.numerator, bnd.denominator))),
-                             "at_end": "= bound" if e.sign_of(P) == 0 else "< bound"})
+                             "at_end": "= bound" if e.sign_of(P) == 0 else "< bound",
+                             # the root isolation: every real root of sum - bound, none strictly inside the piece
+                             "roots_of_sum_minus_bound": [f"[{sp.sstr(r.a)}, {sp.sstr(r.b)}]" for r in roots]})
         return {"touching": touching}
