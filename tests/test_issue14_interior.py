@@ -189,3 +189,87 @@ def test_family_excludes_other_inputs(tmp_path):
     _run("derive", "--support", "3", "--symmetric", "primal", "--sum-rules", "1", "--output", str(f))
     r = _run("atlas", "--family", str(f), "--mask", "1,1", "--x", "t1=0:1:2", "--y", "t1=0:1:2")
     assert r.returncode == 2 and "--family replaces the scheme input" in r.stderr
+
+
+# ------------------------------------------------------------------ --maximize beyond one binary parameter
+def test_maximize_ternary_family():
+    """Ternary interpolatory 4-point family on [-1/16, 0]: certified gap <= 1e-3, and every sampled
+    member's certified alpha (holder_exponent_mary, an independent route) lies below the box bound."""
+    from analysis.regularity.mary import holder_exponent_mary
+    from analysis.regularity.maximize_box import maximize_holder_box
+
+    a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
+    t = a.params[0]
+    r = maximize_holder_box(a, {"t1": (sp.Rational(-1, 16), 0)}, arity=3, gap=sp.Rational(1, 1000),
+                            budget_seconds=60)
+    assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 1000)
+    for q in (sp.Rational(-1, 16), sp.Rational(-1, 20), r.value["t1"] + sp.Rational(1, 500), sp.Rational(-1, 100)):
+        h = holder_exponent_mary(a.subs({t: q}), 3)
+        assert h.lower <= r.upper
+    h = holder_exponent_mary(a.subs({t: r.value["t1"]}), 3)
+    assert h.upper >= r.lower
+
+
+@pytest.mark.slow
+def test_maximize_two_parameters_finds_the_exceptional_line():
+    """The two-parameter family (support 11, reproducing linears) on t1 in [0, 1/32], t2 in [-1/8, 0]:
+    generic members have 2 factors (alpha < 2), the maximum lies on the exceptional line
+    t1 = -t2/3 - 1/48 (4 factors: the one-parameter family reproducing cubics), whose maximiser the
+    one-parameter routine finds independently (README: t1* ~ 0.0138241, alpha 3.206710)."""
+    from analysis.regularity.maximize import maximize_holder
+    from analysis.regularity.maximize_box import maximize_holder_box
+
+    a = derive_mask(support=11, interpolatory=True, symmetric="primal", reproduction=1).value
+    r = maximize_holder_box(a, {"t1": (0, sp.Rational(1, 32)), "t2": (sp.Rational(-1, 8), 0)},
+                            gap=sp.Rational(1, 100), budget_seconds=120)
+    assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 100)
+    t1, t2 = r.value["t1"], r.value["t2"]
+    assert t1 == -t2 / 3 - sp.Rational(1, 48)
+    one = derive_mask(support=11, interpolatory=True, symmetric="primal", reproduction=3).value
+    ref = maximize_holder(one, within=(0, sp.Rational(1, 32)), gap=sp.Rational(1, 100))
+    assert abs(float(ref.value) - float(t1)) < 1e-3
+    assert abs(float(ref.lower) - float(r.lower)) < 1e-2 and ref.lower <= r.upper
+    h = smoothness(a.subs({"t1": sp.Rational(1, 64), "t2": sp.Rational(-1, 16)}), 2)   # a generic member
+    assert h.value is False
+
+
+def test_cli_maximize_box_errors():
+    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+             "--maximize", "holder", "--box", "t1=0,1/32")
+    assert r.returncode == 2 and "give a range for every free parameter (t1, t2)" in r.stderr
+    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+             "--maximize", "holder", "--box", "t1:0,1")
+    assert r.returncode == 2 and "malformed --box" in r.stderr
+
+
+def test_profile_lists_the_strips():
+    """The smoothness-profile kind: the C^1 row of the 4-point family names the strip left next to
+    w* (the root of 32 w^3 + 4 w - 1, Hechler–Mößner–Reif 2009) and the status stays inconclusive."""
+    from analysis.claims.kinds.base import SchemeSpec
+    from analysis.claims.kinds.profile import SmoothnessProfile
+
+    v = SmoothnessProfile({"within": "(0, 1/4)", "max_j": 1, "grid": 4, "samples": 2},
+                          {"s": SchemeSpec("s", FOUR_POINT)}, "x").evaluate()
+    assert v.label == "INCONCLUSIVE"
+    table = next(e.table for e in v.evidence if e.table)
+    row = next(r for r in table if r[0] == "C^1")
+    assert "interior certified (exact parametric norm tests) except" in row[2]
+    assert "CRootOf(32*w**3 + 4*w - 1, 0)" in row[2]
+
+
+def test_range_with_algebraic_coefficients_is_not_a_traceback():
+    """Regression: a family over QQ(sqrt 2)[t1] crashed in the exact boundary determinant
+    (CoercionFailed); now the boundary is bisected and the interior says why no norm test ran."""
+    from analysis.regularity.ranges import ck_parameter_set
+
+    t = sp.Symbol("t1")
+    s2 = sp.sqrt(2)
+    a = LaurentSymbol.from_mask([s2 * t, 0, sp.Rational(1, 2) - s2 * t, 1, sp.Rational(1, 2) - s2 * t, 0, s2 * t],
+                                start=-3)
+    r = ck_parameter_set(a, 1, within=(sp.Rational(-1, 16), 0), grid=2, tol=0.05)
+    (run,) = r.value
+    assert r.status == "inconclusive" and run["interior"]["proven"] is False
+    assert "polynomials in t1 over the rationals" in run["interior"]["route"]
+    with pytest.raises(Exception) as exc:
+        ParametricNorm(difference_symbol(a, 2), t, 2)
+    assert type(exc.value).__name__ == "AnalysisError"

@@ -135,6 +135,11 @@ def cmd_atlas(args) -> None:
     data = r.to_json()
     data["scheme"] = label
     data["figure"] = figure
+    if args.maximize:                            # issue 14: the smoothest member of the box
+        from .common import parse_coefficient
+        from .maximize import maximize_part
+
+        maximize_part(a, {xn: (xlo, xhi), yn: (ylo, yhi)}, m, parse_coefficient(args.gap), 120.0, lines, data)
     _emit(args, data, "\n".join(lines))
 
 
@@ -156,4 +161,7 @@ def register(subparsers) -> None:
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")
     s.add_argument("--no-progress", action="store_true", help="no progress bar")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
+    s.add_argument("--maximize", choices=("holder",),
+                   help="also the smoothest member on the box of the two axes (certified gap)")
+    s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap of --maximize (default 1/1000)")
     s.set_defaults(func=cmd_atlas)

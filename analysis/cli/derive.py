@@ -8,9 +8,13 @@ Examples
     subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 --json
     subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 3 \\
         --maximize holder --within 0,1/32
+    subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 3 --C 2 --within=-1/32,1/16
+    subdiv derive --support 11 --interpolatory --symmetric primal --reproduce 1 --output fam.json \\
+        --maximize holder --box t1=0,1/32 --box t2=-1/8,0
 
 The printed mask string can be pasted into ``subdiv range --mask "..." --start S`` or
-``subdiv atlas --mask "..." --start S`` (the free parameters ``t1, t2, ...`` are parameters there).
+``subdiv atlas --mask "..." --start S`` (the free parameters ``t1, t2, ...`` are parameters there),
+or the family written with ``--output`` read back by ``subdiv range|atlas --family FILE.json``.
 """
 
 from __future__ import annotations
@@ -38,8 +42,11 @@ def register(subparsers) -> None:
     s.add_argument("--fix", action="append", metavar="aI=V", help="fix a coefficient, e.g. a0=1/2 (repeatable)")
     s.add_argument("--names", metavar="LIST", help="names of the free parameters (default t1,t2,...)")
     s.add_argument("--max-sum-rules", action="store_true", help="the most sum rules on the support")
-    s.add_argument("--maximize", choices=("holder",), help="the smoothest member (one free parameter)")
+    s.add_argument("--maximize", choices=("holder",),
+                   help="the smoothest member with a certified gap (any arity; several parameters with --box)")
     s.add_argument("--within", metavar="LO,HI", help="box of the parameter for --maximize")
+    s.add_argument("--box", action="append", metavar="NAME=LO,HI",
+                   help="range of one parameter for --maximize with several parameters (repeatable)")
     s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap in alpha (default 1/1000)")
     s.add_argument("--budget", default="60", metavar="SECONDS", help="time budget of --maximize (default 60)")
     s.add_argument("--output", metavar="FAMILY.json",
@@ -122,13 +129,13 @@ def cmd_derive(args) -> None:
         data["output"] = args.output
     if args.C is not None:
         _ck_part(args, r, arity, lines, data)
-    if args.maximize:
+    if args.maximize and (arity != 2 or len(w["parameters"]) != 1 or args.box):
+        _maximize_box(args, r, arity, lines, data)
+    elif args.maximize:
         from ..regularity.maximize import maximize_holder
 
         if args.within is None:
             raise AnalysisError("--maximize needs --within LO,HI (a box for the free parameter)")
-        if arity != 2:
-            raise AnalysisError("--maximize holder is for binary schemes (--arity 2)")
         if r.value is None:
             raise AnalysisError("--maximize needs an algebraic mask (real exponentials give transcendental coefficients)")
         lo, hi = _parse_within(args.within)
@@ -185,7 +192,7 @@ def _ck_part(args, r, arity: int, lines: list, data: dict) -> None:
     from ..regularity.ranges import ck_parameter_set
     from .regularity import _interior_lines
 
-    c = ck_parameter_set(r.value, j, within=(lo, hi))
+    c = ck_parameter_set(r.value, j, within=(lo, hi), interior_L_max=12)
     lines.append(f"C^{j} set on [{lo}, {hi}] ({c.status}):")
     for run in c.value:
         if run.get("interior"):
@@ -193,3 +200,26 @@ def _ck_part(args, r, arity: int, lines: list, data: dict) -> None:
     if not c.value:
         lines.append("  empty on the grid")
     data["C"] = {"j": j, "status": c.status, "result": c.to_json()}
+
+
+def _maximize_box(args, r, arity: int, lines: list, data: dict) -> None:
+    """``--maximize holder`` for several parameters (``--box``) or arity m (:mod:`analysis.cli.maximize`)."""
+    from .common import _parse_within, parse_coefficient
+    from .maximize import maximize_part, parse_boxes
+
+    if r.value is None:
+        raise AnalysisError("--maximize needs an algebraic mask (real exponentials give transcendental coefficients)")
+    names = [str(p) for p in r.witness["parameters"]]
+    if not names:
+        raise AnalysisError("nothing to maximise: the family has no free parameter (dimension 0)")
+    box = parse_boxes(args.box)
+    if not box:
+        if args.within is None or len(names) != 1:
+            raise AnalysisError("--maximize needs a box: --within LO,HI (one parameter) or --box NAME=LO,HI for "
+                                "each of " + ", ".join(names))
+        box = {names[0]: _parse_within(args.within)}
+    try:
+        budget = float(args.budget)
+    except ValueError:
+        raise AnalysisError(f"--budget must be a number of seconds, not {args.budget!r}") from None
+    maximize_part(r.value, box, arity, parse_coefficient(args.gap), budget, lines, data)

@@ -267,6 +267,11 @@ def cmd_range(args, m: int) -> None:
     data = {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
             "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
             "status": r.status}
+    if getattr(args, "maximize", None):          # issue 14: the smoothest member on --within
+        from .common import parse_coefficient
+        from .maximize import maximize_part
+
+        maximize_part(a, {p: within}, m, parse_coefficient(args.gap), 60.0, lines, data)
     if args.figure:
         _figure(args, a, m, p, j, within, r, label, lines, data)
     _emit(args, data, "\n".join(lines))

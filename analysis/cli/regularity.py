@@ -320,7 +320,7 @@ def cmd_range(args) -> None:
     if not (1e-30 <= tol <= 1):
         raise AnalysisError("--tol must be between 1e-30 and 1")
     r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
-                         budget_seconds=float(args.budget))
+                         budget_seconds=float(args.budget), interior_L_max=12)
     p = r.witness["parameter"]
     lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
              f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
@@ -348,6 +348,11 @@ def cmd_range(args) -> None:
     if "message" in r.provenance:
         lines.append(f"  {r.provenance['message']}")
     data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
+    if args.maximize:
+        from .common import parse_coefficient
+        from .maximize import maximize_part
+
+        maximize_part(a, {p: within}, 2, parse_coefficient(args.gap), 60.0, lines, data)
     if args.figure:
         curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget_seconds=float(args.budget))
         from ..report.plots import plot_alpha_curve
@@ -382,4 +387,6 @@ def register(sub) -> None:
     s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
+    s.add_argument("--maximize", choices=("holder",), help="also the smoothest member on --within (certified gap)")
+    s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap of --maximize (default 1/1000)")
     s.set_defaults(func=cmd_range)

@@ -5,8 +5,10 @@ point for exact (rational or algebraic), closed-form, ball and approximately rea
 and the C^k verdict :func:`~analysis.regularity.holder.smoothness` (:mod:`.holder`); the
 L2-Sobolev exponent (:mod:`.sobolev`); stability of the integer shifts (:mod:`.stability`);
 C^k parameter ranges with certified boundaries, alpha curves and the proof or refutation of a
-claimed interval (:mod:`.ranges`); two-parameter atlases (:mod:`.atlas`); the smoothest member of
-a one-parameter family with a certified gap (:mod:`.maximize`).
+claimed interval (:mod:`.ranges`), with the interior of a C^j set certified by exact parametric
+norm tests (:mod:`.interior`); two-parameter atlases (:mod:`.atlas`); the smoothest member of
+a one-parameter family with a certified gap (:mod:`.maximize`), of a box of parameters or an
+m-ary family (:mod:`.maximize_box`).
 
 Layering: may import :mod:`analysis.algebra`, :mod:`analysis.stationary` and :mod:`analysis.jsr`.
 """

@@ -66,6 +66,8 @@ def _single_parameter(a: LaurentSymbol, param) -> sp.Symbol:
 
 def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int], lo, hi):
     """Exact parameter values in (lo, hi) where the product T_word(p) has eigenvalue +-2^{(k-j)L}."""
+    if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ):
+        return []           # algebraic coefficients: no exact crossing over QQ (bisection decides)
     N = smoothing_factor(a, exceptional=False).value
     c = factor_out(a, N) / 2
     T = transition_matrices(c)
@@ -76,7 +78,10 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
         # the determinant over the polynomial ring (or field) of p: exact, and far faster than a
         # symbolic Berkowitz determinant of expression entries
         M = DomainMatrix.from_Matrix(P - sgn * theta * sp.eye(P.shape[0]))
-        num = sp.Poly(sp.fraction(sp.together(M.domain.to_sympy(M.det())))[0], p, domain=sp.QQ)
+        try:
+            num = sp.Poly(sp.fraction(sp.together(M.domain.to_sympy(M.det())))[0], p, domain=sp.QQ)
+        except (sp.polys.polyerrors.CoercionFailed, sp.PolynomialError):
+            return out      # algebraic coefficients: no exact crossing over QQ (bisection decides)
         if num.is_zero or num.degree() < 1:
             continue
         for r in RealAlgebraic.roots_of(num):
@@ -91,7 +96,7 @@ def _verdict_at(a, p, value, j, budget):
 
 
 def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), grid: int = 16,
-                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 12) -> Result:
+                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 10) -> Result:
     """Where is the one-parameter family ``a(p)`` C^j?  Boundaries to ``tol``, bracketed by certified points.
 
     A grid of ``grid + 1`` rational points in ``within`` gets certified verdicts; between two

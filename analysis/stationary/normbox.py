@@ -124,7 +124,11 @@ class ParametricNorm:
             c = sp.sympify(c)
             if c.free_symbols - {p}:
                 raise AnalysisError(f"the coefficients must depend on {p.name} only")
-            polys.append(sp.Poly(c, p, domain=sp.QQ))
+            try:
+                polys.append(sp.Poly(c, p, domain=sp.QQ))
+            except (sp.PolificationFailed, sp.PolynomialError, sp.polys.polyerrors.CoercionFailed):
+                raise AnalysisError(f"the parametric norm needs coefficients that are polynomials in {p.name} "
+                                    f"over the rationals, not {sp.sstr(c)}") from None
         deg = max((q.degree() for q in polys if not q.is_zero), default=0)
         d = lcm(*[int(sp.Rational(co).q) for q in polys for co in q.all_coeffs()])
         ints = [[int(co * d) for co in reversed(q.all_coeffs())] if not q.is_zero else [] for q in polys]
@@ -244,12 +248,15 @@ class ParametricNorm:
             P = self._poly(coeffs) - sp.Poly(sp.Rational(bnd.numerator, bnd.denominator) * self.scale, self.p)
             if P.is_zero or P.eval(wq) >= 0 or e.sign_of(P) > 0:
                 return None
-            for r in RealAlgebraic.roots_of(P):
+            roots = RealAlgebraic.roots_of(P)
+            for r in roots:
                 inside = (r.compare(e) > 0 and r.compare(W) < 0) if side > 0 else \
                          (r.compare(W) > 0 and r.compare(e) < 0)
                 if inside:
                     return None
             touching.append({"residue": self.residues[lo],
                              "sum": sp.sstr(sp.expand(P.as_expr() / self.scale + sp.Rational(bnd.numerator, bnd.denominator))),
-                             "at_end": "= bound" if e.sign_of(P) == 0 else "< bound"})
+                             "at_end": "= bound" if e.sign_of(P) == 0 else "< bound",
+                             # the root isolation: every real root of sum - bound, none strictly inside the piece
+                             "roots_of_sum_minus_bound": [f"[{sp.sstr(r.a)}, {sp.sstr(r.b)}]" for r in roots]})
         return {"touching": touching}

@@ -209,7 +209,7 @@ class SmoothnessProfile(Kind):
         max_j = self.get("max_j", max(max([k, *exc.values()]) - 1, 0))
         rows, ev, nums, all_cert, sets, points = [], [], [], True, {}, {}
         for j in range(0, max_j + 1):
-            r = ck_parameter_set(a, j, p, within=(lo, hi), grid=grid, tol=tol)
+            r = ck_parameter_set(a, j, p, within=(lo, hi), grid=grid, tol=tol, interior_L_max=10)
             # a grid point at an exceptional value (more smoothing factors) gives a run that bisection
             # shrinks onto it: that run is the isolated point
             degenerate = [q for q in exc for x in r.value if "bracket" in x["left"] and "bracket" in x["right"]
