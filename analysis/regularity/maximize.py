@@ -340,6 +340,20 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     tstar = _rational_near(tstar_f, lo, hi)
     # 2. certified alpha at t*
     h = holder_exponent(a.subs({p: tstar}), budget_seconds=min(20.0, budget_seconds / 2))
+    # exceptional parameters (more factors (1+z)): exact Hölder exponent there; the maximum is often
+    # attained at one of them (a kink of alpha), so they are candidates for t* as well
+    exc, exc_unbounded = [], []
+    for e in F.exceptional:
+        v = e["condition"].get(p)
+        if v is None or not v.is_real or not (lo <= v <= hi) or not v.is_Rational:
+            if v is not None and v.is_real and lo <= v <= hi:
+                exc_unbounded.append((v, v))
+            continue
+        he = holder_exponent(a.subs({p: v}), budget_seconds=20.0)
+        exc.append({"t": v, "alpha": (he.lower, he.upper), "status": he.status})
+        if he.status == CERTIFIED and he.lower is not None and (
+                h.status != CERTIFIED or sp.Rational(he.lower) > sp.Rational(h.lower)):
+            tstar, h = v, he
     alpha_lo = sp.Rational(h.lower)
     target = alpha_lo + gap
     words = sorted(words | {(0,), (1,), (0, 1)}, key=lambda w: (len(w), w))
@@ -376,20 +390,12 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     unbounded = [(I0, I1) for I0, I1, ub in leaves if ub is None]
     ubs = [ub for _I0, _I1, ub in leaves if ub is not None]
     upper = max(ubs) if ubs else None
-    # exceptional parameters (more factors (1+z)): exact Hölder exponent there
-    exc = []
-    for e in F.exceptional:
-        v = e["condition"].get(p)
-        if v is None or not v.is_real or not (lo <= v <= hi) or not v.is_Rational:
-            if v is not None and v.is_real and lo <= v <= hi:
-                unbounded.append((v, v))
-            continue
-        he = holder_exponent(a.subs({p: v}), budget_seconds=20.0)
-        exc.append({"t": v, "alpha": (he.lower, he.upper), "status": he.status})
-        if he.upper is None or he.status != CERTIFIED:
-            unbounded.append((v, v))
+    for e in exc:
+        if e["status"] != CERTIFIED:
+            unbounded.append((e["t"], e["t"]))
         else:
-            upper = max(upper, sp.Rational(he.upper)) if upper is not None else sp.Rational(he.upper)
+            upper = max(upper, sp.Rational(e["alpha"][1])) if upper is not None else sp.Rational(e["alpha"][1])
+    unbounded += exc_unbounded
     certified = h.status == CERTIFIED and not unbounded and upper is not None
     witness = {"parameter": p.name, "alpha_at": h, "gap": (upper - alpha_lo) if upper is not None else None,
                "intervals": count, "words": words, "k": F.k, "exceptional": exc,

@@ -330,6 +330,49 @@ class Kind:
         raise NotImplementedError
 
 
+#: time budget of the certified maximisation of alpha in a smoothness profile (seconds)
+ALPHA_MAX_BUDGET = 10.0
+
+
+def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, note: str = ""):
+    """The largest Hölder exponent of the one-parameter family ``a`` over ``[lo, hi]`` and where it is
+    attained, certified: :func:`analysis.regularity.maximize_box.maximize_holder_box` (float search, the
+    certified alpha at the maximiser t*, a certified upper bound of alpha over the whole interval from
+    products of the transition matrices on sub-intervals) within :data:`ALPHA_MAX_BUDGET` seconds.
+    Returns the text line, its key numbers and the evidence (with the sampled alpha curve as a table).
+    When the maximisation is not certified, the maximum among the samples is reported and called sampled.
+
+    Algorithm: branch and bound (see :mod:`analysis.regularity.maximize`); the gap target is 1/100.
+    References: DESIGN.md (Hölder exponent); issue 11 item 5 ("the largest Hölder exponent and where it
+    is attained").
+    """
+    from ...regularity.maximize_box import maximize_holder_box
+
+    r = maximize_holder_box(a, {p.name: (lo, hi)}, arity=arity, gap=sp.Rational(1, 100),
+                            budget_seconds=ALPHA_MAX_BUDGET)
+    line, nums, ev = sampled_alpha_maximum(p, curve, note)
+    if r.status != "certified" or r.value is None or r.upper is None:
+        why = r.provenance.get("message", "not certified")
+        return line + f" (certified maximisation: {why})", nums, ev
+    t = r.value[p.name]
+    alo, aup = sp.Rational(r.lower), sp.Rational(r.upper)
+    h = r.witness.get("alpha_at")
+    hup = sp.Rational(h.upper) if h is not None and h.upper is not None else alo
+    exact = alo == aup
+    line = (f"largest alpha over [{sp.sstr(lo)}, {sp.sstr(hi)}]: " +
+            (f"exactly {float(alo):.10f} at {p.name} = {sp.sstr(t)}" if exact else
+             f"in [{float(alo):.10f}, {float(aup):.10f}] (certified gap {float(aup - alo):.2g}), attained up to "
+             f"the gap at {p.name} = {sp.sstr(t)} where alpha in [{float(alo):.10f}, {float(hup):.10f}]"))
+    nums = [Number("alpha max at", t),
+            Number("alpha max lower", alo, lower=alo, upper=hup) if alo == hup else
+            Number("alpha max lower", float(alo), tol=1e-9, lower=alo, upper=hup),
+            Number("alpha max upper", aup, lower=aup, upper=aup) if aup.q < 10 ** 6 else
+            Number("alpha max upper", float(aup), tol=1e-9, lower=aup, upper=aup)]
+    ev = evidence("Hölder exponent over the parameter", text=line + f"; {r.witness.get('intervals')} sub-intervals",
+                  table=ev.table)
+    return line, nums, ev
+
+
 def sampled_alpha_maximum(p, curve: list, note: str = ""):
     """The largest certified Hölder exponent among the sample points of an alpha curve: the text
     line, its key numbers and the evidence table (the maximum is *sampled*, and says so).

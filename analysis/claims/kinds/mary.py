@@ -50,7 +50,7 @@ import sympy as sp
 from ...algebra.mary import smoothing_factor_mary
 from ...regularity.mary import alpha_curve_mary, ck_range_mary
 from ..model import Number, Verdict
-from .base import Kind, evidence, interval_text, parse_interval, sampled_alpha_maximum
+from .base import Kind, evidence, interval_text, parse_interval, alpha_maximum
 
 __all__ = ["ck_range_verdict", "profile_verdict", "set_text", "point_in"]
 
@@ -150,7 +150,7 @@ def profile_verdict(kind) -> Verdict:
     ev = [evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)} ({m}-ary)", table=(("j", "set", "status"), *rows),
                    text=f"{N} generic factors (1+...+z^{m - 1})/{m}; largest j with a non-empty C^j set: {largest}")]
     curve = alpha_curve_mary(a, m, p, within=(lo, hi), samples=kind.get("samples", 8), budget_seconds=ALPHA_BUDGET).value
-    alpha_line, alpha_nums, alpha_ev = sampled_alpha_maximum(p, curve)
+    alpha_line, alpha_nums, alpha_ev = alpha_maximum(a, p, lo, hi, curve, arity=m)
     nums += alpha_nums
     ev.append(alpha_ev)
     nums.insert(0, Number("largest j", largest))

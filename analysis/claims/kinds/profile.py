@@ -54,7 +54,7 @@ from ...regularity.holder import holder_exponent, smoothness
 from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
 from ...result import CERTIFIED, REFUTED, AnalysisError
 from ..model import Number, Verdict
-from .base import Kind, evidence, interval_text, parse_interval, sampled_alpha_maximum
+from .base import Kind, evidence, interval_text, parse_interval, alpha_maximum
 
 __all__ = ["SmoothnessProfile", "boundary_text", "run_matches", "which_set"]
 
@@ -250,8 +250,8 @@ class SmoothnessProfile(Kind):
             for q in sorted({q for v in points.values() for q in v} - {x["p"] for x in curve.value}):
                 h = holder_exponent(a.subs({p: q}))
                 curve.value.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
-        alpha_line, alpha_nums, alpha_ev = sampled_alpha_maximum(
-            p, curve.value, " (with the isolated C^j points)" if any(points.values()) else "")
+        alpha_line, alpha_nums, alpha_ev = alpha_maximum(
+            a, p, lo, hi, curve.value, note=" (with the isolated C^j points)" if any(points.values()) else "")
         nums += alpha_nums
         ev.append(alpha_ev)
         nums.insert(0, Number("largest j", largest))
