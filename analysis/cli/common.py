@@ -67,26 +67,27 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
     return out
 
 
-def _catalogue_arity(name: str) -> int:
+def _catalogue_arity(name: str, level: bool = False) -> int:
     """The arity of a catalogue entry; the level-dependent catalogue (``schemes.level_dependent``,
-    issue 13) is binary. An unknown name keeps the stationary catalogue's error."""
+    issue 13) is binary. An unknown name keeps the stationary catalogue's error, or the level-dependent
+    catalogue's (``level=True``: a command that takes level-dependent schemes)."""
     import schemes
 
     try:
         return getattr(schemes.get(name), "arity", 2)
-    except AnalysisError:
+    except AnalysisError as stationary_error:
         from schemes import level_dependent
 
         try:
             level_dependent.get(name)
         except AnalysisError:
-            pass
-        else:
-            return 2
-        raise
+            if level:
+                raise
+            raise stationary_error from None
+        return 2
 
 
-def scheme_arity(args) -> int:
+def scheme_arity(args, level: bool = False) -> int:
     """The arity of the scheme input: ``--arity M`` (an integer >= 2), else the catalogue entry's
     arity, else 2. A ``--arity`` that contradicts the entry's is an error (issue 12)."""
     from ..algebra.mary import check_arity
@@ -100,7 +101,7 @@ def scheme_arity(args) -> int:
             raise AnalysisError(f"--arity must be an integer >= 2, not {text!r}") from None
     own = 2
     if getattr(args, "scheme", None) is not None:
-        own = _catalogue_arity(args.scheme)
+        own = _catalogue_arity(args.scheme, level)
         if given is not None and given != own:
             raise AnalysisError(f"scheme {args.scheme!r} has arity {own}; drop --arity or give --arity {own}")
     return own if given is None else given

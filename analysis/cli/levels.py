@@ -93,7 +93,7 @@ def cmd_series(args) -> None:
     from ..levels.series import weighted_series
     from .common import scheme_arity
 
-    if (arity := scheme_arity(args)) != 2:          # level-dependent m-ary scheme (issue 12)
+    if (arity := scheme_arity(args, level=True)) != 2:          # level-dependent m-ary scheme (issue 12)
         from .levels_mary import cmd_series as series_mary
 
         return series_mary(args, arity)
