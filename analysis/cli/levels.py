@@ -286,7 +286,12 @@ def holder_level_dependent(args, s) -> None:
              + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
     for v in r.witness["verdicts"]:
         name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
-        if v["status"] == "certified":
+        if v["status"] == "certified" and v.get("holds") is False:
+            fr = ", ".join(sp.sstr(x) for x in v["frequencies"])
+            lines.append(f"  {name}: no [certified] — {v['route']}, frequencies {fr}: it generates the "
+                         f"exponential B-spline B_Lambda, C^{v['k'] - 1} and not C^{v['k']} (pieces in "
+                         "ker prod(D - lambda_i) joined at integer knots; Unser-Blu 2005, Conti-Romani 2010)")
+        elif v["status"] == "certified":
             lines.append(f"  {name}: yes [certified] — {v['route']}")
         elif "reason" in v:
             lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
@@ -294,8 +299,13 @@ def holder_level_dependent(args, s) -> None:
             why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])}" for t in v["tried"])
             lines.append(f"  {name}: undecided [inconclusive] — {why}")
     best = r.value
-    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for level-dependent schemes)"
-                 if best >= 0 else "  => convergence not certified")
+    if r.witness.get("exact"):
+        lines.append(f"  => C^{best} exactly (certified: C^{best} and not C^{best + 1})")
+    elif best >= 0 and r.witness.get("not_C^k") is not None:
+        lines.append(f"  => C^{best} certified, not C^{r.witness['not_C^k']} certified")
+    else:
+        lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for this level-dependent scheme)"
+                     if best >= 0 else "  => convergence not certified")
     _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
 
 
