@@ -148,7 +148,7 @@ def _to_exponential_polynomial(s: LevelDependentScheme):
     lin = {a: _linear_in_h(a) for a in args}
     slopes = sorted({c1 for c1, _ in lin.values() if c1 != 0}, key=sp.default_sort_key)
     gens, where = _generators(slopes)
-    X = sp.symbols(f"X0:{len(gens)}", positive=True)
+    X = sp.symbols(f"X0:{len(gens)}")      # no assumptions: X_j = exp(g_j h) may be complex
 
     def sub(arg):
         if H not in arg.free_symbols:
