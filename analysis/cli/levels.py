@@ -97,9 +97,16 @@ def cmd_series(args) -> None:
         from .levels_mary import cmd_series as series_mary
 
         return series_mary(args, arity)
-    s = _level_scheme(args)
     if args.difference < 0:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
+    try:
+        s = _level_scheme(args)
+    except AnalysisError as exc:                 # the level enters through n itself (rational in n)
+        from .levels_rational import fallback, series_rational
+
+        if args.C is not None or args.box or args.pieces != 1 or args.depth:
+            raise
+        return series_rational(args, fallback(args, _values(args), exc), _ints(args.m, "--m"))
     if args.pieces < 1:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if not 0 <= args.depth <= 8:
