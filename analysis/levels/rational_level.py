@@ -124,7 +124,11 @@ def _split(c: sp.Expr, where: str) -> list[_Piece]:
             raise AnalysisError(f"{where}: 2^-n in a denominator ({sp.sstr(den.subs(H, 2 ** -N))}) is not supported")
         raise AnalysisError(f"{where} grows like a power of 2^n: no finite limit as n -> oo")
     dn = sp.Poly(den, N)
-    bad = [r for r in dn.real_roots() if r.is_Integer and r >= 0]
+    try:
+        bad = [r for r in dn.real_roots() if r.is_Integer and r >= 0]
+    except (sp.PolynomialError, NotImplementedError, sp.polys.polyerrors.DomainError):
+        raise AnalysisError(f"{where}: cannot certify that the denominator {sp.sstr(den)} never vanishes "
+                            "at a level n >= 0 (give rational coefficients)") from None
     if bad:
         raise AnalysisError(f"{where} is undefined at level n = {bad[0]} (its denominator vanishes)")
     pieces = []
