@@ -26,7 +26,7 @@ def rational_scheme_from_args(args, params):
 
 def fallback(args, params, exc: AnalysisError):
     """The rational-in-n scheme when ``exc`` is the 'cannot write ... as a function of h' error; else re-raise."""
-    if not str(exc).startswith("cannot write"):
+    if "as a function of h = 2^-n" not in str(exc):
         raise exc
     try:
         s = rational_scheme_from_args(args, params)
