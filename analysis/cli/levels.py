@@ -104,9 +104,11 @@ def cmd_series(args) -> None:
     except AnalysisError as exc:                 # the level enters through n itself (rational in n)
         from .levels_rational import fallback, series_rational
 
+        s = fallback(args, _parse_params(args.param), exc)
         if args.C is not None or args.box or args.pieces != 1 or args.depth:
-            raise
-        return series_rational(args, fallback(args, _values(args), exc), _ints(args.m, "--m"))
+            raise AnalysisError("--C, --box, --pieces and --depth are not available when the level enters "
+                                "through n itself (coefficients rational in n): give --param values") from None
+        return series_rational(args, s, _ints(args.m, "--m"))
     if args.pieces < 1:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if not 0 <= args.depth <= 8:

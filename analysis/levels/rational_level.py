@@ -31,7 +31,7 @@ Examples
 LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
 >>> r = weighted_series_rational(s, 0)
 >>> r.witness["verdict"], r.witness["decay"]
-('convergent', '1 * n^-3 * 2^(-0n)')
+('convergent', '1 * n^-3')
 >>> weighted_series_rational(s, 1).witness["verdict"]
 'divergent'
 >>> same_support_rational(s).witness["failed"]     # a_2 = 0, a^n_2 = 1/(n+2)^3: Dyn-Levin does not apply
@@ -247,7 +247,8 @@ def weighted_series_rational(s: RationalLevelScheme, m: int = 0, *, N_sum: int =
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
     worst = min(dom, key=lambda kp: (kp[1].j, kp[1].p))
     kw, pw = worst
-    decay = f"{sp.sstr(sp.Abs(pw.leading))} * n^-{pw.p} * 2^(-{pw.j}n)"
+    decay = " * ".join([sp.sstr(sp.Abs(pw.leading))] + ([f"n^{-pw.p}"] if pw.p else [])
+                       + ([f"2^(-{pw.j}n)"] if pw.j else []))
     prov = {"method": "exact decay orders of rational pieces + Arb partial sums + majorant tails", "m": m}
     ok = all(p.j > m or (p.j == m and p.p > 1) for _, p in dom)
     if not ok:
