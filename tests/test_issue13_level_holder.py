@@ -31,7 +31,9 @@ def test_exponential_bsplines_reach_their_true_smoothness(slug, d):
     assert r.status == "certified" and r.value == d - 1
     ks = {v["k"]: v for v in r.witness["verdicts"]}
     assert all(ks[k]["status"] == "certified" for k in range(d))
-    assert ks[d]["status"] == "inconclusive" and "not C^%d" % d in ks[d]["reason"]
+    # issue 13 (not C^k): recognised as an exponential B-spline scheme of order d + 1, certified not C^d
+    assert ks[d]["status"] == "certified" and ks[d]["verdict"] == "not C^%d" % d and ks[d]["holds"] is False
+    assert r.witness["exact"] is True
     # the direct Dyn-Levin series with weight 4^n diverges (a^n - a ~ 4^-n): the divided differences decide
     assert ks[d - 1]["route"] == "Dyn-Levin on the %s divided difference scheme" % {1: "1st", 2: "2nd", 3: "3rd", 4: "4th"}[d - 1]
 

@@ -97,9 +97,18 @@ def cmd_series(args) -> None:
         from .levels_mary import cmd_series as series_mary
 
         return series_mary(args, arity)
-    s = _level_scheme(args)
     if args.difference < 0:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
+    try:
+        s = _level_scheme(args)
+    except AnalysisError as exc:                 # the level enters through n itself (rational in n)
+        from .levels_rational import fallback, series_rational
+
+        s = fallback(args, _parse_params(args.param), exc)
+        if args.C is not None or args.box or args.pieces != 1 or args.depth:
+            raise AnalysisError("--C, --box, --pieces and --depth are not available when the level enters "
+                                "through n itself (coefficients rational in n): give --param values") from None
+        return series_rational(args, s, _ints(args.m, "--m"))
     if args.pieces < 1:
         raise AnalysisError(f"--pieces must be >= 1, not {args.pieces}")
     if not 0 <= args.depth <= 8:
@@ -286,7 +295,12 @@ def holder_level_dependent(args, s) -> None:
              + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
     for v in r.witness["verdicts"]:
         name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
-        if v["status"] == "certified":
+        if v["status"] == "certified" and v.get("holds") is False:
+            fr = ", ".join(sp.sstr(x) for x in v["frequencies"])
+            lines.append(f"  {name}: no [certified] — {v['route']}, frequencies {fr}: it generates the "
+                         f"exponential B-spline B_Lambda, C^{v['k'] - 1} and not C^{v['k']} (pieces in "
+                         "ker prod(D - lambda_i) joined at integer knots; Unser-Blu 2005, Conti-Romani 2010)")
+        elif v["status"] == "certified":
             lines.append(f"  {name}: yes [certified] — {v['route']}")
         elif "reason" in v:
             lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
@@ -294,8 +308,13 @@ def holder_level_dependent(args, s) -> None:
             why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])}" for t in v["tried"])
             lines.append(f"  {name}: undecided [inconclusive] — {why}")
     best = r.value
-    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for level-dependent schemes)"
-                 if best >= 0 else "  => convergence not certified")
+    if r.witness.get("exact"):
+        lines.append(f"  => C^{best} exactly (certified: C^{best} and not C^{best + 1})")
+    elif best >= 0 and r.witness.get("not_C^k") is not None:
+        lines.append(f"  => C^{best} certified, not C^{r.witness['not_C^k']} certified")
+    else:
+        lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for this level-dependent scheme)"
+                     if best >= 0 else "  => convergence not certified")
     _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
 
 

@@ -247,7 +247,9 @@ def cmd_holder(args) -> None:
     except AnalysisError as exc:
         if str(exc).startswith("the support of a^n grows"):
             return holder_growing_support(args, str(exc))
-        raise
+        from .levels_rational import fallback, holder_rational      # the level enters through n itself
+
+        return holder_rational(args, fallback(args, _parse_params(args.param), exc))
     if level is not None and not is_stationary(level):
         return holder_level_dependent(args, level)
     entry = _numeric_entry(args)

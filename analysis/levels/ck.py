@@ -19,11 +19,19 @@ in order
 
 Each hypothesis is checked with exact (sympy) or ball (Arb) arithmetic; a k for which every route
 fails is *inconclusive* and names, per route, the hypothesis that failed. Past the limit's
-smoothness (``S_a`` certified not C^k) the verdict stays inconclusive: no theorem implemented
-here transfers "not C^k" from ``S_a`` to ``{S_{a^n}}``. The theorem that would (an upper bound of
-the Hölder exponent of an asymptotically similar non-stationary scheme by that of its limit: the
-Hölder-exponent formula of Charina–Conti–Guglielmi–Protasov 2017 for dilation ``mI``) was not
-implemented because its exact hypotheses could not be quoted from the sources at hand (issue 13).
+smoothness (``S_a`` certified not C^k) one theorem decides "not C^k":
+
+4. **exponential B-spline schemes** (:mod:`.expbspline`): when ``a^n(z) = 2 z^s prod_{i<=d+1}
+   (1 + e^{lambda_i 2^-(n+1)} z)/(1 + e^{lambda_i 2^-(n+1)})`` for every n (recognised exactly),
+   the scheme generates the exponential B-spline of order d+1, which is not C^d: "C^d: no
+   [certified]", and with C^{d-1} certified by the routes above the smoothness is *exactly*
+   C^{d-1}.
+
+Otherwise the verdict stays inconclusive: no theorem implemented here transfers "not C^k" from
+``S_a`` to ``{S_{a^n}}`` in general. The theorem that would (an upper bound of the Hölder exponent
+of an asymptotically similar non-stationary scheme by that of its limit: the Hölder-exponent
+formula of Charina–Conti–Guglielmi–Protasov 2017 for dilation ``mI``) was not implemented because
+its exact hypotheses could not be quoted from the sources at hand (issue 13).
 
 Examples
 --------
@@ -31,6 +39,8 @@ Examples
 >>> r = level_smoothness(get("exp-cubic-trig").subs({"t": 1}))
 >>> r.value, r.status, [v["route"] for v in r.witness["verdicts"]][:3]
 (2, 'certified', ['Dyn-Levin direct', 'Dyn-Levin on the 1st divided difference scheme', 'Dyn-Levin on the 2nd divided difference scheme'])
+>>> r.witness["verdicts"][3]["verdict"], r.witness["verdicts"][3]["status"], r.witness["exact"]
+('not C^3', 'certified', True)
 
 Algorithm
 ---------
@@ -59,6 +69,7 @@ import flint
 import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
+from .expbspline import not_ck
 from .level_dependent import H, LevelDependentScheme, TaylorModel, taylor_models
 from .series import same_support, smoothness
 from ..jsonable import fmt_upper
@@ -224,7 +235,9 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
     ``value``: the largest k with C^k certified for every ``k' <= k`` (``-1``: not even
     convergence certified). ``witness["verdicts"]``: one dict per k with ``verdict``, ``status``,
     ``route`` and ``theorem`` (or ``tried``: the failed hypotheses of each route);
-    ``witness["limit"]``: the stationary limit and its certified smoothness.
+    ``witness["limit"]``: the stationary limit and its certified smoothness;
+    ``witness["not_C^k"]``: the k certified *not* C^k (exponential B-spline schemes) or ``None``,
+    and ``witness["exact"]``: True when that k is ``value + 1`` (the smoothness is exactly C^value).
     """
     from ..regularity import smoothness as stationary_smoothness
 
@@ -255,7 +268,19 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         verdicts.append(v)
         if v["status"] == CERTIFIED and best == k - 1:
             best = k
+    cert = None
     if not_k is not None and (k_max is None or not_k <= k_max):
+        cert = not_ck(s)
+        d = cert.witness.get("k")
+        if not (cert.is_certified and cert.value is False and d is not None and k_lim < d <= not_k):
+            cert = None
+    if cert is not None:
+        d = cert.witness["k"]
+        verdicts.append({"k": d, "verdict": f"not C^{d}", "holds": False, "status": CERTIFIED,
+                         "route": f"exponential B-spline of order {d + 1} (recognised exactly)",
+                         "theorem": cert.witness["theorem"], "hypotheses": cert.witness["hypotheses"],
+                         "frequencies": cert.witness["frequencies"]})
+    elif not_k is not None and (k_max is None or not_k <= k_max):
         verdicts.append({"k": not_k, "verdict": "undecided", "status": INCONCLUSIVE, "route": None,
                          "reason": (f"the limit S_a is certified not C^{not_k} "
                                     f"({a_smooth[not_k].witness.get('reason')}), but no implemented theorem "
@@ -264,9 +289,12 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
                                     "the Hoelder-exponent formula of Charina-Conti-Guglielmi-Protasov 2017, "
                                     "Numer. Math. 135; its exact hypotheses are not implemented)")})
     status = CERTIFIED if best >= 0 else INCONCLUSIVE
+    upper = ("none certified (lower bound only)" if cert is None else
+             f"not C^{cert.witness['k']} (certified: exponential B-spline of order {cert.witness['k'] + 1})")
     return Result(value=best, status=status,
                   witness={"verdicts": verdicts, "max_certified_k": best,
                            "limit": {"symbol": a, "C^k_certified_up_to": k_lim, "not_C^k": not_k},
-                           "upper_bound": "none certified (lower bound only)"},
+                           "upper_bound": upper, "not_C^k": None if cert is None else cert.witness["k"],
+                           "exact": cert is not None and best == cert.witness["k"] - 1},
                   provenance={"scheme": s.slug, "N": N,
                               "method": "Dyn-Levin 1995 (direct, divided differences); CDMM 2015 / CCGP 2017"})
