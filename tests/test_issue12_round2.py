@@ -272,3 +272,76 @@ def test_paper_file_level_forms_and_errors():
     b = _paper('level_symbol = "(1+z)*(1+2*c*z+z**2)/(2*(1+c))/z**2"\nwhere = { c = "cos(t/2**(n+1))" }',
                kind="exponential reproduction", fields='lambdas = ["I*t", "-I*t"]', arity=2)
     assert evaluate_paper(b)[0].verdict.status == "certified"
+
+
+# ------------------------------------------------------------------ item 3: refinement of polygons
+
+def test_refine_open_ternary_dd_reproduces_cubics():
+    """Ternary Dubuc-Deslauriers 4-point (cubic Lagrange at i + r/3) reproduces cubics (Deslauriers-Dubuc,
+    Constr. Approx. 5 (1989)): interior points are x^3 at the new parameters, with both end rules on the
+    part that does not see the ghosts."""
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.stationary.mary import refine_mary
+    from schemes import get
+
+    a = get("ternary-dd-4").symbol
+    cubes = [[sp.Integer(x) ** 3] for x in range(6)]
+    inner = [v[0] for v in refine_mary(a, cubes, 3, closed=False, exact=True)]
+    assert inner == [sp.Rational(k, 3) ** 3 for k in range(3, 13)]            # k/3 for k = 3..12
+    ext = [v[0] for v in refine_mary(a, cubes, 3, closed=False, exact=True, end_rule="extrapolate")]
+    assert len(ext) == 3 * 5 + 1 and ext[0] == 0 and ext[-1] == 125             # end points kept
+    assert ext[3:13] == inner
+    assert isinstance(a, LaurentSymbol)
+
+
+@pytest.mark.parametrize("closed,rule", [(True, "interior"), (False, "interior"), (False, "extrapolate")],
+                         ids=["closed", "open-interior", "open-extrapolate"])
+def test_refine_m2_equals_binary(closed, rule):
+    import random
+
+    import numpy as np
+
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.stationary.mary import refine_mary
+    from analysis.stationary.refinement import refine
+
+    rng = random.Random(12)
+    for _ in range(5):
+        mask = [Fraction(rng.randint(-4, 9), 8) for _ in range(rng.randint(3, 6))]
+        start = rng.randint(-4, 0)
+        a = LaurentSymbol.from_mask([sp.Rational(x.numerator, x.denominator) for x in mask], start=start)
+        pts = [[Fraction(rng.randint(-9, 9)), Fraction(rng.randint(-9, 9))] for _ in range(9)]
+        b = refine(a, np.array(pts, dtype=object), steps=2, closed=closed, end_rule=rule, exact=True)
+        m2 = refine_mary(a, [[sp.Rational(x.numerator, x.denominator) for x in p] for p in pts], 2, 2,
+                         closed=closed, exact=True, end_rule=rule)
+        assert [[sp.Rational(str(x)) for x in r] for r in b] == [list(r) for r in m2]
+
+
+def test_refine_closed_ternary_against_direct_periodic():
+    from analysis.stationary.mary import refine_mary
+    from schemes import get
+
+    a = get("ternary-four-point").symbol.subs({"mu": sp.Rational(1, 10)})
+    pts = [Fraction(x) for x in (0, 5, -2, 7, 3)]
+    n, m = len(pts), 3
+    periodic = {j: pts[j % n] for j in range(-3 * n, 4 * n)}
+    mask = [Fraction(str(c)) for c in a.mask]
+    direct = _refine(mask, a.start, periodic, m)
+    got = [v[0] for v in refine_mary(a, [[sp.Rational(str(x))] for x in pts], m, 1, exact=True)]
+    assert got == [sp.Rational(str(direct[i])) for i in range(m * n)]
+
+
+def test_cli_refine_mary_points_file_output_end_rule(tmp_path):
+    f = tmp_path / "p.csv"
+    f.write_text("0,0\n3,0\n3,3\n0,3\n")
+    out = tmp_path / "o.csv"
+    rc, text, err = _run("refine", "--scheme", "ternary-bspline-2", "--points-file", str(f), "--open",
+                         "--end-rule", "extrapolate", "--output", str(out))
+    assert rc == 0, err
+    import numpy as np
+
+    rows = np.loadtxt(out, delimiter=",")
+    assert rows.shape == (10, 2) and "end rule extrapolate" in text
+    assert np.allclose(rows[0], [0, 0]) and np.allclose(rows[-1], [0, 3])   # end points kept (primal, symmetric)
+    rc, text, err = _run("refine", "--scheme", "ternary-bspline-2", "--points", "0;1", "--points-file", str(f))
+    assert rc == 2 and err.startswith("subdiv: error: give the data with exactly one of")
