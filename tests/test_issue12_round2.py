@@ -345,3 +345,61 @@ def test_cli_refine_mary_points_file_output_end_rule(tmp_path):
     assert np.allclose(rows[0], [0, 0]) and np.allclose(rows[-1], [0, 3])   # end points kept (primal, symmetric)
     rc, text, err = _run("refine", "--scheme", "ternary-bspline-2", "--points", "0;1", "--points-file", str(f))
     assert rc == 2 and err.startswith("subdiv: error: give the data with exactly one of")
+
+
+# ------------------------------------------------------------------ item 4: m-ary blocking cycles
+
+@pytest.mark.parametrize("m,L", [(3, 1), (3, 2), (3, 4), (4, 3), (5, 2)], ids=lambda x: str(x))
+def test_box_functions_stability(m, L):
+    """chi_[0,L] is m-refinable with a(z) = 1 + z^L + ... + z^((m-1)L) (phi^(m xi)/phi^(xi)); its shifts are stable
+    iff L = 1: phi^(2 pi j/L + 2 pi k) = 0 for all k when 0 < j < L (closed form (1 - e^(-iL xi))/(iL xi))."""
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.regularity.stability_mary import stable_shifts_mary
+
+    z = sp.Symbol("z")
+    r = stable_shifts_mary(LaurentSymbol.from_expr(sum(z ** (L * i) for i in range(m))), m)
+    assert r.status == "certified" and r.value is (L == 1)
+    if L > 1:
+        assert r.witness["blocking_cycles"] and r.witness["reduced_mask"].expr() == sum(z ** i for i in range(m))
+        # the reduction phi_a = q(tau) phi_b / q(1): a(z) q(z) = b(z) q(z^m), exactly
+        q, b = r.witness["q"].expr(), r.witness["reduced_mask"].expr()
+        assert sp.expand(sum(z ** (L * i) for i in range(m)) * q - b * q.subs(z, z ** m)) == 0
+
+
+@mp.workdps(30)
+def test_unstable_ternary_spline_by_the_infinite_product():
+    """(box on [0, 2]/2) * (ternary hat): phi^(pi + 2 pi k) = prod_i A((pi + 2 pi k)/3^i) = 0 for every k
+    (one factor is an exact zero: the product is evaluated in mpmath, not through the engine)."""
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.regularity.stability_mary import stable_shifts_mary
+
+    z = sp.Symbol("z")
+    expr = (1 + z ** 2 + z ** 4) * (1 + z + z ** 2) ** 2 / 9
+    coeffs = sp.Poly(expr, z).all_coeffs()[::-1]
+
+    def phihat(x):
+        out = mp.mpc(1)
+        for i in range(1, 80):
+            y = x / mp.mpf(3) ** i
+            out *= sum(mp.mpf(sp.Rational(c).p) / sp.Rational(c).q * mp.exp(-1j * k * y)
+                       for k, c in enumerate(coeffs)) / 3
+        return out
+
+    assert max(abs(phihat(mp.pi + 2 * mp.pi * k)) for k in range(-3, 4)) < mp.mpf(10) ** -20
+    assert abs(phihat(mp.pi / 2)) > mp.mpf(10) ** -3          # not identically small
+    r = stable_shifts_mary(LaurentSymbol.from_expr(expr), 3)
+    assert r.value is False and r.witness["blocking_cycles"] == [2]
+
+
+def test_blocking_orders_m2_match_the_binary_criterion():
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.regularity.stability import stable_shifts
+    from analysis.regularity.stability_mary import _blocking_orders
+
+    z = sp.Symbol("z")
+    for e in [1 + z ** 3, (1 + z) * (1 + z ** 5) / 2, (1 + z) ** 3 / 4, (1 + z ** 3) * (1 + z ** 5) / 2,
+              (1 + z) * (1 - z + z ** 2) ** 2]:          # (masks without symmetric zeros)
+        p = sp.Poly(e, z, domain=sp.QQ)
+        mine = sorted(set(n for n, _ in _blocking_orders(p, 2)))
+        binary = stable_shifts(LaurentSymbol.from_expr(e)).witness.get("blocking_cycles", [])
+        assert mine == sorted(set(binary)), e
