@@ -105,7 +105,7 @@ class WeightedSeries(_LevelKind):
             s = difference_scheme_mary(self.level(), d) if d else self.level()
             r = weighted_series_mary(s, self.level_values(), m)
         what = f"sum_n {M}^({m}n) ||S_(a^n) - S_a||" if m else "sum_n ||S_(a^n) - S_a|| (asymptotic equivalence)"
-        if d:
+        if d and M != 2:            # (binary summaries unchanged)
             what += f" of the divided difference scheme of order {d}"
         verdict = r.witness.get("verdict")
         if r.status != CERTIFIED:
