@@ -403,3 +403,22 @@ def test_blocking_orders_m2_match_the_binary_criterion():
         mine = sorted(set(n for n, _ in _blocking_orders(p, 2)))
         binary = stable_shifts(LaurentSymbol.from_expr(e)).witness.get("blocking_cycles", [])
         assert mine == sorted(set(binary)), e
+
+
+def test_stable_with_zeros_on_the_circle_by_completeness():
+    """a = (1+z+z^2)(1+z^2)/2 (m = 3) has zeros +-i on the circle, neither symmetric nor on a blocking cycle: stable
+    by the complete criterion. Independent route: the autocorrelation symbol w(e^(i xi)) = sum_k |phi^(xi+2 pi k)|^2
+    (eigenvector of the transfer operator) is 3/5 + (2/5) cos xi >= 1/5 > 0."""
+    from analysis.algebra.symbol import LaurentSymbol
+    from analysis.regularity.sobolev_mary import autocorrelation_symbol
+    from analysis.regularity.stability_mary import stable_shifts_mary
+
+    a = LaurentSymbol.from_expr("(1+z+z**2)*(1+z**2)/2")
+    r = stable_shifts_mary(a, 3)
+    assert r.value is True and r.status == "certified" and "no blocking cycle" in r.witness["reason"]
+    w, dim = autocorrelation_symbol(a, 3)
+    assert dim == 1
+    vals = [sum(float(c) * mp.cos((w.start + k) * x) for k, c in enumerate(w.mask)) for x in mp.linspace(0, 2 * mp.pi, 400)]
+    assert min(vals) > 0.19
+    # and an unstable neighbour: (1+z+z^2)(1+z^2)(1+z^3+z^6)/6 has symmetric zeros (1+z^3+z^6 = H(z^3))
+    assert stable_shifts_mary(LaurentSymbol.from_expr("(1+z+z**2)*(1+z**2)*(1+z**3+z**6)/6"), 3).value is False

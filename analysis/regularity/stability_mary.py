@@ -4,8 +4,8 @@ For a mask with ``a(1) = m`` the refinable distribution ``phi = sum_k a_k phi(m 
 (``phi^(0) = 1``) has ``phi^(xi) = prod_{j>=1} A(xi/m^j)``, ``A(xi) = a(e^{-i xi})/m``. Its shifts are
 stable iff the *bad set* ``B = {xi : phi^(xi + 2 pi k) = 0 for all k}`` is empty.
 
-Criterion used (m >= 3; a sufficient condition and one exact reduction)
------------------------------------------------------------------------
+Criterion (m >= 3): symmetric zeros, blocking cycles, and why they are all
+-----------------------------------------------------------------------------
 Splitting ``k`` by its residue mod ``m``: ``xi`` is bad iff each of its ``m`` *children*
 ``(xi + 2 pi l)/m`` (``l = 0..m-1``, mod ``2 pi``) is a zero of ``A`` or bad.
 
@@ -32,12 +32,20 @@ Splitting ``k`` by its residue mod ``m``: ``xi`` is bad iff each of its ``m`` *c
   primitive n-th roots blocks; for ``m = 2``: ``Phi_{2n} | a``, the binary condition). Reduction:
   ``Phi_n(z^m) = prod_{d | m} Phi_{nd}(z)``, so ``b = a / prod_{d>1} Phi_{nd}`` satisfies
   ``a(z) Phi_n(z) = b(z) Phi_n(z^m)``, ``b(1) = m`` and ``phi_a = Phi_n(tau) phi_b / Phi_n(1)``.
-* Otherwise (a zero on the circle that is not an m-th root of unity and is explained neither by symmetric zeros
-  nor by a blocking cycle; or an algebraic, non-rational mask with such a zero): *inconclusive*. For ``m = 2``
-  symmetric zeros and blocking cycles are exactly the unstable cases (Jia–Wang; Cohen); for ``m >= 3`` a
-  bad point may have several bad children, and no proof was found (or made) that the two mechanisms exhaust
-  the bad sets, so the m-ary test is **necessary and sufficient only where it answers** (unstable: a certified
-  mechanism; stable: every circle zero an m-th root of unity) and says *inconclusive* in between.
+* **Completeness** (derived here; for ``m = 2`` it is the Jia–Wang / Cohen criterion). The shifts are unstable
+  iff there are symmetric zeros on the circle or a blocking cycle. Proof of "only if": ``B`` is finite
+  (``phi^`` is entire and ``phi^(0) = 1``, and ``B`` lies in its zero set on ``[0, 2 pi]``). Assume no point has
+  all its children in ``Z_A`` (no symmetric zeros). Every ``xi in B`` then has a child in ``B`` outside ``Z_A``; following
+  such children inside the finite ``B`` runs into a cycle ``x_i = m x_{i+1}``, whose points are roots of unity
+  of an order prime to ``m``. A sibling ``y`` of a cycle point that is not a zero of ``A`` lies in ``B`` and has
+  an order divisible by a prime ``p | m``; the children of such a point have a strictly larger ``p``-adic order
+  (``v_p(ord w) = v_p(ord y) + v_p(m)``), so the chain of ``B``-children from ``y`` would be infinite in the finite
+  ``B`` unless it reaches a point with all children in ``Z_A`` — excluded. Hence every sibling is a zero: a
+  blocking cycle. For a rational mask both conditions are decided exactly (polyphase gcd; cyclotomic
+  divisibility), so the test is **necessary and sufficient**; after removing both mechanisms
+  (``b``, repeatedly) the reduced mask is stable even when it keeps zeros on the circle.
+* Algebraic (non-rational) masks: the cycle condition is not Galois-invariant and is not searched; a zero on the
+  circle that is not an m-th root of unity (and not symmetric) gives *inconclusive*.
 
 For ``m = 2`` the complete binary criterion (:func:`analysis.regularity.stability.stable_shifts`:
 symmetric zeros and blocking cycles) is used unchanged.
@@ -156,54 +164,59 @@ def stable_shifts_mary(a: LaurentSymbol, m: int) -> Result:
     q = sp.Poly(1, Z, domain=dom)
     cur, symmetric, steps = p, [], []
     method = (f"polyphase gcd H (H(z^{m}) | a) with Cayley/Sturm zeros on |z| = 1; every other zero on the "
-              f"circle an {m}-th root of unity => stable")
-    for _ in range(p.degree() + 1):
-        H = polyphase_gcd(cur, m)
-        if H.degree() <= 0:
-            break
-        Hz = sp.Poly(H.as_expr().subs(H.gen, Z), Z, domain=dom)
-        on, how = unit_circle_zero(Hz)
-        if on is None:
-            return Result(value=None, status=INCONCLUSIVE,
-                          witness={"reason": f"cannot decide whether H = {sp.sstr(Hz.as_expr())} has a zero on the "
-                                             f"unit circle ({how})", "symmetric_zeros_on_circle": symmetric},
-                          provenance={"method": method, "arity": m})
-        if not on:
-            break
-        b, r = sp.div(cur * Hz, _upsample(Hz, m))
-        if not r.is_zero:  # pragma: no cover - H(z^m) | a
-            raise ArithmeticError("H(z^m) does not divide a(z) H(z)")
-        symmetric.append(Hz.as_expr())
-        steps.append(f"symmetric zeros on the unit circle: H = {sp.sstr(Hz.as_expr())} (H(z^{m}) | a; {how}); "
-                     f"b = a H(z)/H(z^{m})")
-        q, cur = q * Hz, b
+              f"circle an m-th root of unity (m = {m}) => stable")
+    rational = dom.is_QQ or dom.is_ZZ
     cycles: list[int] = []
-    if dom.is_QQ or dom.is_ZZ:
-        for n, factors in _blocking_orders(cur, m):
-            div = sp.prod([sp.Poly(sp.cyclotomic_poly(n * d, Z), Z, domain=dom) for d in factors])
-            cur = sp.div(cur, div)[0]
-            phin = sp.Poly(sp.cyclotomic_poly(n, Z), Z, domain=dom)
-            q = q * phin
-            cycles.append(n)
-            steps.append(f"blocking cycles among the primitive {n}-th roots of unity (xi -> {m} xi): "
-                         + ", ".join(f"Phi_{n * d}" for d in factors) + f" | a; b = a/({'*'.join(f'Phi_{n * d}' for d in factors)})")
+    for _ in range(p.degree() + 1):            # each round removes a factor of positive degree
+        H = polyphase_gcd(cur, m)
+        on = False
+        if H.degree() > 0:
+            Hz = sp.Poly(H.as_expr().subs(H.gen, Z), Z, domain=dom)
+            on, how = unit_circle_zero(Hz)
+            if on is None:
+                return Result(value=None, status=INCONCLUSIVE,
+                              witness={"reason": f"cannot decide whether H = {sp.sstr(Hz.as_expr())} has a zero on "
+                                                 f"the unit circle ({how})", "symmetric_zeros_on_circle": symmetric},
+                              provenance={"method": method, "arity": m})
+        if on:
+            b, r = sp.div(cur * Hz, _upsample(Hz, m))
+            if not r.is_zero:  # pragma: no cover - H(z^m) | a
+                raise ArithmeticError("H(z^m) does not divide a(z) H(z)")
+            symmetric.append(Hz.as_expr())
+            steps.append(f"symmetric zeros on the unit circle: H = {sp.sstr(Hz.as_expr())} (H(z^{m}) | a; {how}); "
+                         f"b = a H(z)/H(z^{m})")
+            q, cur = q * Hz, b
+            continue
+        found = next(iter(_blocking_orders(cur, m)), None) if rational else None
+        if found is None:
+            break
+        n, factors = found
+        names = [f"Phi_{n * d}" for d in factors]
+        cur = sp.div(cur, sp.prod([sp.Poly(sp.cyclotomic_poly(n * d, Z), Z, domain=dom) for d in factors]))[0]
+        q = q * sp.Poly(sp.cyclotomic_poly(n, Z), Z, domain=dom)
+        cycles.append(n)
+        steps.append(f"blocking cycles among the primitive {n}-th roots of unity (xi -> {m} xi): "
+                     f"{', '.join(names)} | a; b = a/({'*'.join(names)})")
     rest = _strip_roots_of_unity(cur, m)
     on, how = unit_circle_zero(rest)
     witness = {"symmetric_zeros_on_circle": symmetric, "blocking_cycles": cycles, "steps": steps}
     prov = {"method": method, "arity": m, "arithmetic": f"exact over {dom}"}
-    if on is not False:
-        witness["reason"] = ((f"a (after the reductions) has a zero on the unit circle that is not an {m}-th root "
-                              f"of unity ({how}) and is explained neither by symmetric zeros nor by a blocking "
-                              + ("cycle" if dom.is_QQ or dom.is_ZZ else "cycle (cycles are searched for rational "
-                                                                       "masks only)")
-                              + f": the {m}-ary criterion cannot decide")
+    if on is None or (on and not rational):
+        witness["reason"] = ((f"a (after the reductions) has a zero on the unit circle that is not an m-th root "
+                              f"of unity (m = {m}; {how}); blocking cycles are decided for rational masks only")
                              if on else f"cannot decide the zeros of a on the unit circle ({how})")
         if cycles or symmetric:      # unstable anyway (certified mechanism), the reduction is just incomplete
             witness["reason"] = "unstable (" + "; ".join(steps) + "); the reduced mask is undecided: " + witness["reason"]
             return Result(value=False, status=CERTIFIED, witness=witness, provenance=prov)
         return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=prov)
     stable = not symmetric and not cycles
+    if on:          # rational mask, zeros on the circle that no mechanism explains: stable by the criterion
+        prov["method"] += "; complete criterion for rational masks (module docstring): no symmetric zeros, no cycles"
+        why = (f"the zeros on the unit circle that are not m-th roots of unity (m = {m}) ({how}) lie on no blocking cycle and "
+               f"have no symmetric partners: the bad set is empty (module docstring)")
+    else:
+        why = f"every zero of a on the unit circle is an m-th root of unity (m = {m})"
     witness.update({"reduced_mask": LaurentSymbol(cur, a.start, a.params), "q": LaurentSymbol(q, 0, a.params),
-                    "reason": ("every zero of a on the unit circle is an m-th root of unity: stable" if stable else
-                               "unstable: " + "; ".join(steps))})
+                    "reason": (f"{why}: stable" if stable else
+                               "unstable: " + "; ".join(steps) + f"; the reduced mask is stable ({why})")})
     return Result(value=stable, status=CERTIFIED, witness=witness, provenance=prov)
