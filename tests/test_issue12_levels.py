@@ -135,7 +135,7 @@ def test_bad_input():
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1])
     assert rc != 0 and err.startswith("subdiv: error: undefined name(s) theta")
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1],
-                        "--param", "theta=1", "--difference", "1")
+                        "--param", "theta=1", "--C", "1")      # --difference works since round 2 (test_issue12_round2)
     assert rc != 0 and "not available for m-ary" in err
     rc, out, err = _run("series", "--arity", "1", "--symbol", SYM3)
     assert rc != 0 and "--arity must be an integer >= 2" in err

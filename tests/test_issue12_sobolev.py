@@ -87,7 +87,8 @@ def test_unstable_ternary_masks():
     assert sobolev_exponent_mary(a, 3).value == R(5, 2)
     # phi = (hat + hat(.-1))/2 (a zero at exp(i pi/3), not a cube root of unity): s_2 = 3/2
     a = LaurentSymbol.from_expr(_q(3) ** 2 * (1 - Z + Z ** 2) / 3)
-    assert stable_shifts_mary(a, 3).value is None                  # the sufficient criterion cannot decide
+    st_ = stable_shifts_mary(a, 3)                                 # since round 2: blocking cycle {pi} (Phi_6 | a)
+    assert st_.value is False and st_.witness["q"] == LaurentSymbol.from_mask([1, 1])
     assert sobolev_exponent_mary(a, 3).value == R(3, 2)           # the autocorrelation route needs no stability
 
 

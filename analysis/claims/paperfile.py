@@ -28,10 +28,14 @@ A scheme is given by exactly one of ``catalogue`` (a catalogue slug, resolved by
 ``catalogue`` callable the command line passes in: the engine does not import the catalogue),
 ``mask`` + ``start``, ``rules = { even = [...], odd = [...], first = p }``, ``symbol`` (an
 expression in ``z``) or ``level_mask`` + ``start`` (a level-dependent scheme, coefficients in
-``n`` or ``h = 2^-n``). ``arity = M`` (issue 12; default 2, or the catalogue entry's arity) makes
-the scheme m-ary, ``(S_a f)_i = sum_j a_{i-Mj} f_j``: the kinds of
-:data:`analysis.claims.kinds.base.MARY_KINDS` then use the m-ary analyses, the others refuse the
-claim when the file is loaded.
+``n`` or ``h = 2^-n``) or ``level_symbol`` (an expression in ``z`` and ``n``); the two level-dependent
+forms take helper definitions ``where = { c = "cos(theta/2**(n+1))" }``. ``arity = M`` (issue 12;
+default 2, or the catalogue entry's arity) makes the scheme m-ary, ``(S_a f)_i = sum_j a_{i-Mj} f_j``:
+the kinds of :data:`analysis.claims.kinds.base.MARY_KINDS` then use the m-ary analyses, the others
+refuse the claim when the file is loaded. A level-dependent m-ary scheme (``level_mask`` or
+``level_symbol`` with ``arity = M``) uses ``h = M^-n`` (the level enters only through ``M^n``); the
+kinds weighted series, asymptotic equivalence and exponential reproduction evaluate it with
+:mod:`analysis.levels.mary` and :mod:`analysis.levels.reproduction_mary`.
 
 Bad files are one-line :class:`~analysis.result.AnalysisError` messages: a TOML syntax error
 names the file and line; an unknown kind lists the kinds; an unknown scheme, parameter or field
@@ -103,10 +107,11 @@ from .model import Claim, Paper
 __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
 
 PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
-SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "parameters", "notes", "title", "arity"}
+SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "level_symbol", "where", "parameters",
+               "notes", "title", "arity"}
 #: the keys of a claim table that are not fields of its kind
 CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind", "command", "objects"}
-_DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask")
+_DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask", "level_symbol")
 
 Catalogue = Callable[[str], Any]
 
@@ -178,6 +183,8 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
         raise AnalysisError(f"{w}: start must be an integer")
     declared = tuple(syms.values()) if params else None
     arity = _arity(t, how, w)
+    if "where" in t and how not in ("level_mask", "level_symbol"):
+        raise AnalysisError(f"{w}: 'where' (helper definitions in the level n) needs level_mask or level_symbol")
     symbol, level, definition = None, None, ""
     try:
         if how == "catalogue":
@@ -212,6 +219,8 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
             expr = parse_coefficient(str(t["symbol"]), locals_={**syms, "z": sp.Symbol("z")})
             symbol = LaurentSymbol.from_expr(expr, params=declared)
             definition = f"a(z) = {t['symbol']}"
+        elif (arity or 2) != 2 or how == "level_symbol" or "where" in t:
+            level, definition = _level_scheme(t, how, arity or 2, name)
         else:
             coeffs = [to_h(parse_coefficient(str(c), locals_={**syms, "n": N, "h": H})) for c in t["level_mask"]]
             level = LevelDependentScheme(tuple(coeffs), start, tuple(syms.values()) if params else
@@ -236,15 +245,50 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level, arity=arity)
 
 
+def _level_scheme(t: Mapping, how: str, m: int, name: str):
+    """A level-dependent scheme from ``level_symbol`` (an expression in ``z`` and ``n``) or ``level_mask``
+    with the helper definitions ``where = { c = "cos(theta/3**(n+1))" }``: binary
+    (:class:`~analysis.levels.level_dependent.LevelDependentScheme`, ``h = 2^-n``) or m-ary
+    (:class:`~analysis.levels.mary.LevelDependentMary`, ``h = m^-n``; issue 12, second round)."""
+    from ..levels.mary import level_scheme_mary
+
+    where = t.get("where", {})
+    if not isinstance(where, Mapping) or not all(isinstance(v, (str, int, float)) for v in where.values()):
+        raise AnalysisError('where = { NAME = "EXPR" } (expressions in the level n and the parameters)')
+    where = {k: str(v) for k, v in where.items()}
+    start = t.get("start", 0)
+    if how == "level_symbol":
+        if not isinstance(t["level_symbol"], str):
+            raise AnalysisError("level_symbol must be a string: an expression in z and the level n")
+        if m == 2:
+            level = LevelDependentScheme.from_symbol(t["level_symbol"], where=where, slug=name)
+        else:
+            level = level_scheme_mary(t["level_symbol"], m, where=where, slug=name)
+        what = f"level-dependent symbol a^n(z) = {t['level_symbol']}"
+    else:
+        if not isinstance(t["level_mask"], list):
+            raise AnalysisError("level_mask must be a list of coefficients")
+        items = [str(c) for c in t["level_mask"]]
+        if m == 2:
+            level = LevelDependentScheme.from_mask(items, start, where=where, slug=name)
+        else:
+            level = level_scheme_mary(None, m, mask=items, start=start, where=where, slug=name)
+        what = f"level-dependent mask {items} from index {start}"
+    if where:
+        what += " where " + ", ".join(f"{k} = {v}" for k, v in where.items())
+    return level, what + f" (h = {m}^-n)"
+
+
 def _arity(t: Mapping, how: str, w: str) -> int | None:
-    """The scheme's ``arity`` (issue 12): an integer >= 2; m-ary schemes are given by mask, symbol or
-    catalogue (``rules`` are even/odd, i.e. binary; level-dependent schemes are binary)."""
+    """The scheme's ``arity`` (issue 12): an integer >= 2; m-ary schemes are given by mask, symbol,
+    catalogue, or (level-dependent, second round) ``level_mask`` / ``level_symbol`` (``rules`` are
+    even/odd, i.e. binary)."""
     if "arity" not in t:
         return None
     m = t["arity"]
     if isinstance(m, bool) or not isinstance(m, int) or m < 2:
         raise AnalysisError(f"{w}: arity must be an integer >= 2, not {m!r}")
-    if m != 2 and how in ("rules", "level_mask"):
+    if m != 2 and how == "rules":
         raise AnalysisError(f"{w}: arity {m} needs the scheme as mask, symbol or catalogue "
                             f"({how} describes binary schemes)")
     return m

@@ -2,7 +2,9 @@
 
 The scheme is inline: ``--symbol`` or ``--mask`` using the level ``n`` through ``M^n`` (e.g.
 ``cos(theta/3**(n+1))``) and repeatable ``--where NAME=EXPR``; parameters by ``--param NAME=VALUE``
-(``series`` also takes ``--box NAME=LOW,HIGH``).
+(``series`` also takes ``--box NAME=LOW,HIGH``, several boxes, ``--pieces P`` (sub-boxes per boxed parameter),
+``--depth D`` (adaptive bisection of undecided sub-boxes) and ``--difference J`` (the divided difference scheme
+``(M/(1+z+...+z^(M-1)))^J a^n``; issue 12, second round)).
 
 Examples
 --------
@@ -66,22 +68,34 @@ def _values(args, s) -> dict:
 
 
 def cmd_series(args, m: int) -> None:
-    from ..levels.mary import weighted_series_mary
+    from ..levels.mary import difference_scheme_mary, weighted_series_boxes_mary
 
-    if getattr(args, "difference", 0) or getattr(args, "pieces", 1) != 1 or getattr(args, "depth", 0):
-        raise AnalysisError("--difference, --pieces and --depth are not available for m-ary schemes yet")
+    if getattr(args, "C", None) is not None or getattr(args, "open", None):
+        raise AnalysisError("--C/--open (C^k on a parameter region) are not available for m-ary schemes; "
+                            "use subdiv holder --arity M at parameter values")
     s = level_scheme_mary_from_args(args, m)
     vals = _values(args, s)
+    d = getattr(args, "difference", 0) or 0
+    pieces, depth = getattr(args, "pieces", 1) or 1, getattr(args, "depth", 0) or 0
+    for name, v in (("--difference", d), ("--pieces", pieces), ("--depth", depth)):
+        if isinstance(v, bool) or not isinstance(v, int) or v < (1 if name == "--pieces" else 0):
+            raise AnalysisError(f"{name} must be an integer >= {1 if name == '--pieces' else 0}, not {v!r}")
+    if d:
+        s = difference_scheme_mary(s, d)
     rows, lines = [], []
     try:
         weights = [int(x) for x in str(args.m).split(",")]
     except ValueError:
         raise AnalysisError(f"--m must be integers like 0,1,2, not {args.m!r}") from None
     for k in weights:
-        r = weighted_series_mary(s, vals, k, N=args.N)
+        r = weighted_series_boxes_mary(s, vals, k, pieces=pieces, depth=depth, N=args.N)
         if not lines:
-            lines.append(f"scheme {s.slug} (arity {m}, h = {m}^-n): ||S_(a^n) - S_a|| ~ "
-                         f"{r.witness['leading_asymptotics']} (exact)")
+            lines.append(f"scheme {s.slug} (arity {m}, h = {m}^-n"
+                         + (f", divided difference scheme of order {d}" if d else "") + "): ||S_(a^n) - S_a|| ~ "
+                         + (f"{r.witness['leading_asymptotics']} (exact)" if "leading_asymptotics" in r.witness else
+                            "?"))
+            if r.witness.get("sub_boxes", 1) > 1 or pieces > 1:
+                lines.append(f"  ({r.witness['sub_boxes']} sub-boxes: --pieces {pieces}, --depth {depth})")
         rows.append({"m": k, **r.to_json()})
         v = r.witness.get("verdict")
         if v == "convergent":
@@ -94,7 +108,7 @@ def cmd_series(args, m: int) -> None:
                          f"{sp.sstr(r.witness['leading_constant'])}")
         else:
             lines.append(f"weight {m}^({k}n): {r.status} — {r.witness.get('reason')}")
-    _emit(args, {"scheme": s.slug, "arity": m, "series": rows}, "\n".join(lines))
+    _emit(args, {"scheme": s.slug, "arity": m, "difference": d, "series": rows}, "\n".join(lines))
 
 
 def cmd_holder(args, m: int) -> None:

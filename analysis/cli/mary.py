@@ -121,32 +121,64 @@ def cmd_norm(args, m: int) -> None:
 
 
 def cmd_refine(args, m: int) -> None:
+    """``subdiv refine --arity M``: closed polygons, open ones with the end rules ``interior`` / ``extrapolate``,
+    ``--points`` or ``--points-file``, ``--exact``, ``--output FILE`` (CSV) — as the binary command."""
     import numpy as np
 
-    from ..algebra.symbol import parse_coefficient
     from ..stationary.mary import refine_mary
+    from .common import check_writable
 
     if args.output:
-        raise AnalysisError("--output is not available with --arity yet; use --json")
-    if args.open and args.end_rule != "interior":
-        raise AnalysisError("m-ary open polygons keep interior points only (--end-rule interior)")
+        check_writable(args.output, "--output")
     a, label, _ = _input(args, m)
-    if args.points is None:
-        raise AnalysisError("give the polygon with --points \"x,y;x,y;...\" (--points-file: binary only)")
-    data = [[parse_coefficient(v) for v in r.split(",")] for r in args.points.split(";") if r.strip()]
-    if not data or len({len(r) for r in data}) != 1 or any(v.free_symbols for r in data for v in r):
-        raise AnalysisError("--points must be numbers, the same number of coordinates per point")
+    data = _read_points_mary(args)
     steps = _int_arg(args.steps, "--steps")
     if steps < 0 or steps > 12:
         raise AnalysisError("--steps must be between 0 and 12 with --arity")
-    pts = [[sp.Rational(v) if args.exact else float(v) for v in row] for row in data]
-    out = refine_mary(a, pts, m, steps, closed=not args.open, exact=args.exact)
+    if args.exact:
+        if any(not sp.sympify(v).is_Rational for row in data for v in np.atleast_1d(row)):
+            raise AnalysisError("--exact refinement needs rational data")
+        pts = [[sp.Rational(v) for v in np.atleast_1d(row)] for row in data]
+    else:
+        pts = [[float(v) for v in np.atleast_1d(row)] for row in data]
+    out = refine_mary(a, pts, m, steps, closed=not args.open, exact=args.exact,
+                      end_rule=args.end_rule if args.open else "interior")
+    if args.output:
+        try:
+            np.savetxt(args.output, np.asarray(out, dtype=float), delimiter=",")
+        except OSError as exc:
+            raise AnalysisError(f"cannot write {args.output}: {exc.strerror or exc}") from None
     rows = [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]
-    text = "\n".join([f"scheme: {label} (arity {m}); {len(data)} -> {len(out)} points after {steps} step(s)"
-                      + (" (open polygon, interior points)" if args.open else " (closed polygon)")]
-                     + [", ".join(str(v) for v in r) for r in rows])
-    _emit(args, {"scheme": label, "arity": m, "steps": steps, "closed": not args.open, "count": len(out),
-                 "points": rows}, text)
+    head = (f"scheme: {label} (arity {m}); {len(data)} -> {len(out)} points after {steps} step(s)"
+            + (f" (open polygon, end rule {args.end_rule})" if args.open else " (closed polygon)"))
+    text = "\n".join([head] + ([f"written to {args.output}"] if args.output else
+                               [", ".join(str(v) for v in r) for r in rows]))
+    _emit(args, {"scheme": label, "arity": m, "steps": steps, "closed": not args.open,
+                 "end_rule": args.end_rule if args.open else None, "count": len(out), "points": rows}, text)
+
+
+def _read_points_mary(args):
+    """``--points "x,y;x,y"`` (exact numbers) or ``--points-file FILE`` (whitespace or .csv; floats), as the
+    binary ``subdiv refine`` reads them."""
+    import numpy as np
+
+    from ..algebra.symbol import parse_coefficient
+
+    if (args.points is None) == (getattr(args, "points_file", None) is None):
+        raise AnalysisError("give the data with exactly one of --points \"x,y;x,y;...\" or --points-file FILE")
+    if args.points is not None:
+        rows = [r for r in args.points.split(";") if r.strip()]
+        try:
+            data = [[parse_coefficient(v) for v in r.split(",")] for r in rows]
+        except AnalysisError as exc:
+            raise AnalysisError(f"malformed --points: {exc}") from None
+        if not data or len({len(r) for r in data}) != 1 or any(v.free_symbols for r in data for v in r):
+            raise AnalysisError("--points must be numbers, the same number of coordinates per point")
+        return data
+    try:
+        return np.loadtxt(args.points_file, delimiter="," if args.points_file.endswith(".csv") else None, ndmin=2)
+    except (OSError, ValueError) as exc:
+        raise AnalysisError(f"cannot read {args.points_file}: {exc}") from None
 
 
 def cmd_matrices(args, m: int) -> None:

@@ -43,6 +43,16 @@ N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision sche
 193 (1995) 594-621.
 C. Conti, K. Hormann, *Polynomial reproduction for univariate subdivision schemes of any arity*, J. Approx.
 Theory 163 (2011) 413-437 (m-ary conventions).
+M. Charina, C. Conti, N. Guglielmi, V. Protasov, *Regularity of non-stationary subdivision: a matrix approach*,
+Numer. Math. 135 (2017) 639-678 (arXiv:1406.7131): non-stationary schemes with an integer dilation matrix ``M``
+(so ``M = m``), convergence and C^l criteria under asymptotic similarity and approximate sum rules, and the
+Hölder exponent for ``M = mI`` — a published m-ary non-stationary theory (its hypotheses differ from Dyn–Levin's;
+the route here is still the Dyn–Levin one with dilation m).
+C. Beccari, G. Casciola, L. Romani, *An interpolating 4-point C2 ternary non-stationary subdivision scheme with
+tension control*, Comput. Aided Geom. Design 24 (2007) 210-219: a ternary non-stationary scheme analysed by
+comparison with a stationary ternary scheme. (The stored copy, https://123dok.org/document/zlgj223o-an-interpolating-point-c.html,
+holds only the opening of the paper, so the exact statement of the ternary asymptotic-equivalence theorem it
+uses could not be checked; Dyn–Levin's proof with ``2 -> m`` is what the code relies on.)
 """
 
 from __future__ import annotations
@@ -58,10 +68,12 @@ from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import (H, N as LEVEL, LevelDependentScheme, _ball, _read, _to_ball, arb_abs, ball_to_interval,
                               entire_form, resolve_where, taylor_models, workprec)
-from .series import _parse_values
+from .bounds import _exact_zero
+from .series import _bisect, _parse_values, _split
 
 __all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
-           "same_support_mary", "smoothness_levels_mary", "level_smoothness_mary", "ternary_exponential_bspline_2"]
+           "weighted_series_boxes_mary", "difference_scheme_mary", "same_support_mary", "smoothness_levels_mary",
+           "level_smoothness_mary", "ternary_exponential_bspline_2"]
 
 _Z = sp.Symbol("z")
 
@@ -201,6 +213,49 @@ def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDepend
                               3)
 
 
+def difference_scheme_mary(s: LevelDependentMary, j: int = 1) -> LevelDependentMary:
+    """The j-th divided difference scheme ``b^n(z) = (m/(1+z+...+z^(m-1)))^j a^n(z)`` (issue 12, second round).
+
+    With ``f^{n+1} = S_{a^n} f^n`` the divided differences ``m^{n+1} Delta f^{n+1} = S_{z^(m-1) b^n} (m^n Delta f^n)``
+    for ``j = 1`` (``(1-z) a^n(z) = (1-z^m) a^n(z)/(1+...+z^(m-1))``, ``Delta f_j = f_(j+1) - f_j``); like the binary
+    "divided" spelling (:meth:`analysis.levels.level_dependent.LevelDependentScheme.difference`, which this is for
+    ``m = 2``) the lowest exponent is kept, i.e. the shift ``z^(m-1)`` is dropped (norms and smoothness do not see it). The remainder of each division by
+    ``1+...+z^(m-1)`` must simplify to 0 identically in ``h`` and the parameters (else an :class:`AnalysisError`).
+
+    >>> d = difference_scheme_mary(ternary_exponential_bspline_2(), 1)
+    >>> d.limit().expr().factor()                   # the ternary linear B-spline (shifted by one index)
+    (z**2 + z + 1)**2/(3*z**3)
+    >>> difference_scheme_mary(level_scheme_mary("(1+z+z**2)/z + 3**(-n)*z", 3), 1)
+    Traceback (most recent call last):
+    ...
+    analysis.result.AnalysisError: 1+z+z^2 does not divide a^n(z) identically in n (remainder coefficient -h)
+    """
+    if isinstance(j, bool) or not isinstance(j, int) or j < 0:
+        raise AnalysisError(f"difference must be a non-negative integer, not {j!r}")
+    m = s.arity
+    coeffs = list(s.mask)               # ascending powers from s.start
+    q = "1+" + "+".join(f"z^{i}" if i > 1 else "z" for i in range(1, m))
+    for _ in range(j):
+        if len(coeffs) < m:
+            raise AnalysisError(f"{q} does not divide a^n(z): the mask is too short")
+        r = list(coeffs)
+        quot = [sp.Integer(0)] * (len(r) - m + 1)
+        for k in range(len(r) - 1, m - 2, -1):          # synthetic division from the top power
+            c = r[k]
+            quot[k - m + 1] = c
+            for i in range(m):
+                r[k - m + 1 + i] = r[k - m + 1 + i] - c
+        for x in r[: m - 1]:
+            if not _exact_zero(sp.expand(x)):
+                raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
+                                    f"{sp.sstr(sp.simplify(x))})")
+        coeffs = [sp.cancel(m * c) if sp.sympify(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
+    sc = s.scheme
+    return LevelDependentMary(LevelDependentScheme(tuple(coeffs), sc.start, sc.params, slug=f"{sc.slug}-diff{j}",
+                                                   title=f"{j}-th divided difference of {sc.title or sc.slug}",
+                                                   source=sc.source), m)
+
+
 # --------------------------------------------------------------------------------------------
 # distances and the weighted series
 # --------------------------------------------------------------------------------------------
@@ -337,6 +392,63 @@ def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None
                         "statement": f"{m}^(k n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} (k = {k} >= q = {q})"})
         return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
     witness.update({"verdict": "unknown", "reason": "the leading constant is not certified nonzero"})
+    return Result(status=INCONCLUSIVE, witness=witness, provenance=prov)
+
+
+def weighted_series_boxes_mary(s: LevelDependentMary, values: Mapping[str, Any] | None, k: int, *,
+                               pieces: int = 1, depth: int = 0, N: int = 30) -> Result:
+    """:func:`weighted_series_mary` over parameter boxes split into ``pieces`` (per boxed parameter, product grid)
+    and bisected adaptively up to ``depth`` times where a sub-box is undecided (as
+    :func:`analysis.levels.series.weighted_series` does for ``m = 2``).
+
+    Convergent when every sub-box is (the sum lies in ``[min lower, max upper]``), divergent when every
+    sub-box is, inconclusive otherwise (``witness["per_box"]``).
+
+    >>> s = ternary_exponential_bspline_2()
+    >>> r = weighted_series_boxes_mary(s, {"theta": (sp.Rational(1, 2), 1)}, 1, pieces=2)
+    >>> r.status, r.witness["verdict"], r.witness["sub_boxes"]
+    ('certified', 'convergent', 2)
+    """
+    env = _parse_values(s.scheme, values)
+    todo = [(b, 0) for b in _split(env, pieces)]
+    done: list[tuple[dict, Result]] = []
+    while todo:
+        b, d = todo.pop(0)
+        boxed = any(isinstance(v, tuple) for v in b.values())
+        try:
+            r = weighted_series_mary(s, b, k, N=N)
+        except AnalysisError:
+            if d >= depth or not boxed:
+                raise
+            r = None
+        if (r is None or r.witness.get("verdict") not in ("convergent", "divergent")) and d < depth and boxed:
+            todo.extend((c, d + 1) for c in _bisect(b))
+            continue
+        done.append((b, r))
+    results = [r for _, r in done]
+    verdicts = {r.witness.get("verdict") for r in results}
+    first = results[0]
+    witness = {kk: v for kk, v in first.witness.items() if kk not in ("tail", "term_lower_bound", "statement")}
+    witness["sub_boxes"] = len(done)
+    prov = {**first.provenance, "parameters": {a: (tuple(v) if isinstance(v, tuple) else v) for a, v in env.items()},
+            "pieces": pieces, "depth": depth}
+    if verdicts == {"convergent"}:
+        lo = min(r.lower for r in results)
+        hi = max(r.upper for r in results)
+        tails = [r.witness["tail"] for r in results]
+        witness.update({"verdict": "convergent",
+                        "tail": {**tails[0], "K": max(x["K"] for x in tails), "bound": max(x["bound"] for x in tails)}})
+        return Result(lower=max(lo, sp.Integer(0)), upper=hi, status=CERTIFIED, witness=witness, provenance=prov)
+    if verdicts == {"divergent"}:
+        witness.update({"verdict": "divergent",
+                        "term_lower_bound": min(r.witness["term_lower_bound"] for r in results),
+                        "statement": first.witness["statement"]})
+        return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
+    witness.update({"verdict": "unknown", "per_box": [(
+        {a: (tuple(v) if isinstance(v, tuple) else v) for a, v in b.items()}, r.witness.get("verdict"))
+        for b, r in done],
+        "reason": "the sub-boxes are not all decided the same way: split further (--pieces, --depth) or exclude "
+                  "the parameter values where the leading constant vanishes"})
     return Result(status=INCONCLUSIVE, witness=witness, provenance=prov)
 
 

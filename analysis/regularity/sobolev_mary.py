@@ -235,8 +235,8 @@ def sobolev_exponent_mary(a: LaurentSymbol, m: int, *, max_extra_r: int = 4) -> 
         # route 2: the stability reduction phi_a = q(tau) phi_b/q(1), weight q q*
         stab = stable_shifts_mary(a, m)
         witness["stable_shifts"] = stab
-        if stab.value is None:
-            return inconclusive(f"{why}, and the stability of the shifts is undecided: {stab.witness['reason']}")
+        if stab.value is None or stab.witness.get("q") is None:
+            return inconclusive(f"{why}, and the stability reduction is incomplete: {stab.witness['reason']}")
         q = stab.witness["q"]
         w = q * q.reversed()
         witness["weight"] = "q q* with phi_a = q(tau) phi_b/q(1), phi_b stable"

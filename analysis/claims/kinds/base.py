@@ -214,7 +214,8 @@ class SchemeSpec:
 
 #: the kinds available for m-ary schemes (their ``mary = True``; issue 12)
 MARY_KINDS = ("mask identity", "sum rules", "symmetry", "support", "eigenvalues", "reproduction", "norm test", "ck range", "holder",
-              "smoothness profile", "sobolev", "support after steps", "limit symmetry")
+              "smoothness profile", "sobolev", "support after steps", "limit symmetry",
+              "weighted series", "asymptotic equivalence", "exponential reproduction")
 
 
 def evidence(title: str, result: Result | None = None, text: str = "", table=None) -> Evidence:
