@@ -1,8 +1,9 @@
 """Issue 10: the wheel works from any directory.
 
 The wheel (``pip wheel .``, not the editable checkout) is built offline, installed into a fresh
-virtual environment, and ``subdiv report 003`` and ``subdiv check 003`` run from an empty temporary
-directory (``check`` on two of its claims, to keep the suite fast): the report goes to ``./reports`` of that directory, and ``check`` finds the golden
+virtual environment, and ``subdiv report 000`` and ``subdiv check 003`` run from an empty temporary
+directory (the smallest paper's report and ``check`` on two claims of 003, to keep the suite fast: the full
+reports are reproduced by tests/test_report.py and tests/test_claims_003.py): the report goes to ``./reports`` of that directory, and ``check`` finds the golden
 verdicts shipped inside the installed ``papers`` package.
 
 The venv does not inherit the editable install: its only link to the dependencies (sympy,
@@ -78,9 +79,9 @@ def test_report_and_check_from_an_empty_directory(installed, tmp_path):
     for line in where.stdout.split():
         assert Path(line).resolve().is_relative_to(site.resolve()), f"imported from the checkout: {line}"
     subdiv = str(env_dir / "bin" / "subdiv")
-    _run([subdiv, "report", "003"], cwd=work, env=env)
-    assert (work / "reports" / "003.md").is_file()
-    assert "003" in json.loads((work / "reports" / "verdicts.json").read_text())["papers"]
+    _run([subdiv, "report", "000"], cwd=work, env=env)
+    assert (work / "reports" / "000.md").is_file()
+    assert "000" in json.loads((work / "reports" / "verdicts.json").read_text())["papers"]
     # the comparison itself is what is tested here (the full recomputation against the golden files
     # is tests/test_report.py::test_committed_verdicts_are_reproduced): two fast claims suffice
     check = _run([subdiv, "check", "003", "--claim", "003:Sec4(*^n)"], cwd=work, env=env)
