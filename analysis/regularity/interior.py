@@ -206,7 +206,7 @@ def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget):
         if r["closed"]:
             kind = {(False, False): "strip", (True, False): "strip-left-end", (False, True): "strip-right-end",
                     (True, True): "strip-both"}[(lo_o, hi_o)]
-            wit = {"product": "".join(map(str, r["word"])), "pieces": len(r["pieces"]),
+            wit = {"product": "".join(map(str, reversed(r["word"]))), "pieces": len(r["pieces"]),
                    "max image norm <=": max(x["max image norm <="] for x in r["pieces"]),
                    "mu": r["mu"], "seconds": r["seconds"]}
             closed.append((u, v, kind, wit))

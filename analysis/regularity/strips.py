@@ -13,9 +13,14 @@ Examples
 >>> t = sp.Symbol("t1")
 >>> a = LaurentSymbol.from_mask(sp.sympify("t1,0,-3*t1-1/16,0,2*t1+9/16,1,2*t1+9/16,0,-3*t1-1/16,0,t1".split(",")), start=-5)
 >>> ts = sp.CRootOf(524288*t**5 - 65536*t**4 + 12800*t**3 - 352*t**2 + 61*t - 3, 0)
->>> r = close_strip(difference_symbol(a, 3), t, sp.Rational(22607, 524288), ts, hi_open=True)
->>> r["closed"], r["word"], r["pieces"][-1]["to"] == sp.sstr(ts)
-(True, (1, 0), True)
+>>> r = close_strip(difference_symbol(a, 3), t, sp.Rational(5860, 131072), ts, hi_open=True)   # C^2 up to t*
+>>> r["closed"], r["word"], r["mu"], r["pieces"][-1]["to"] == sp.sstr(ts)
+(True, (0, 1), '1/2', True)
+
+``word`` is in the order of application: ``Pi = T_1 T_0``. Beyond the end there is no certificate:
+
+>>> close_strip(difference_symbol(a, 3), t, sp.Rational(5860, 131072), sp.Rational(1, 20), max_depth=8)["closed"]
+False
 
 Algorithm
 ---------
@@ -109,6 +114,22 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol):
     return list(T), None
 
 
+def _mirror(R, restricted: bool):
+    """The exact flip ``J`` (in the coordinates of ``R``) with ``J R_0 J = R_1``, or None: then
+    ``J v`` is the eigenvector of the mirrored product, with the same eigenvalue, for every t."""
+    n = R[0].rows + (1 if restricted else 0)
+    Jn = sp.Matrix(n, n, lambda i, j: 1 if i + j == n - 1 else 0)
+    if restricted:
+        E = sp.zeros(n, n - 1)
+        for i in range(n - 1):
+            E[i, i] = 1
+            E[n - 1, i] = -1
+        Jn = sp.eye(n)[: n - 1, :] * Jn * E
+    if sp.expand(Jn * R[0] * Jn - R[1]) != sp.zeros(*R[0].shape) or Jn * Jn != sp.eye(Jn.rows):
+        return None
+    return Jn
+
+
 def _word_matrix(mats, word):
     P = np.eye(mats[0].shape[0])
     for i in word:             # application order: first letter applied first
@@ -198,6 +219,10 @@ class _Strip:
         self.P = [_poly_entries(M, p) for M in R]
         self.dP = [_poly_entries(M.diff(p), p) for M in R]
         self.f = [sp.lambdify(p, M, "numpy") for M in R]
+        self._supp: dict = {}
+        J = _mirror(R, self.mu is not None)
+        self.J = None if J is None else arb_mat([[int(x) for x in J.row(i)] for i in range(J.rows)])
+        self.Jf = None if J is None else np.array(J.tolist(), dtype=float)
 
     def floats(self, t: float):
         return [np.array(f(t), dtype=float) for f in self.f]
@@ -211,20 +236,27 @@ class _Strip:
         lam, v, m = fe
         self.word, self.p_len, self.m = word, len(word), m
         r = lam ** (1.0 / len(word))
-        st = build_polytope(mats, r, [v], deadline=time.perf_counter() + 20, max_vertices=400, check_better=True)
+        mirrored = tuple(1 - x for x in word)
+        if self.J is not None and any(mirrored == tuple(word[k:] + word[:k]) for k in range(len(word))):
+            self.J = self.Jf = None          # J v is already on the orbit of v
+        roots = [v] if self.J is None else [v, self.Jf @ v]
+        st = build_polytope(mats, r, roots, deadline=time.perf_counter() + 20, max_vertices=400, check_better=True)
         if not st.closed:
             return f"the float invariant polytope at the end does not close ({st.stop_reason})"
-        if any(ro != 0 for ro in st.root_of):
+        if any(ro >= len(roots) for ro in st.root_of):
             return "the eigenvector orbit does not span the space (a further invariant subspace)"
         self.paths = st.path
-        index = {pa: k for k, pa in enumerate(st.path)}
+        self.roots = st.root_of
+        index = {(ro, pa): k for k, (ro, pa) in enumerate(zip(st.root_of, st.path))}
+        cycles = [tuple(word), tuple(1 - x for x in word)]    # the mirrored root's cycle
         self.identity, self.checks = {}, []
         for (i, k), (supp, lam_c) in st.reps.items():
-            w = st.path[k] + (i,)
-            while w[: self.p_len] == tuple(word) and len(w) >= self.p_len:
+            ro, w = st.root_of[k], st.path[k] + (i,)
+            cyc = cycles[ro]
+            while w[: self.p_len] == cyc and len(w) >= self.p_len:
                 w = w[self.p_len:]
-            if w in index:
-                self.identity[(i, k)] = index[w]
+            if (ro, w) in index:
+                self.identity[(i, k)] = index[(ro, w)]
             else:
                 slack = 1 - float(np.sum(np.abs(lam_c)))
                 if slack <= 1e-9:
@@ -239,7 +271,8 @@ class _Strip:
             return None
         lam, v, _ = fe
         s = lam ** (1.0 / self.p_len)
-        V = [_word_matrix(mats, pa) @ v / s ** len(pa) for pa in self.paths]
+        rv = [v] if self.J is None else [v, self.Jf @ v]
+        V = [_word_matrix(mats, pa) @ rv[ro] / s ** len(pa) for ro, pa in zip(self.roots, self.paths)]
         return mats, lam, v, V
 
     def certify(self, u: Fraction, w: Fraction):
@@ -322,8 +355,10 @@ class _Strip:
             return zm, zi, dz
 
         verts = []
-        for pa in self.paths:
-            x = (col(vM), _tighter(col(vI), col(vM) + col(dv) * H), col(dv))
+        x0 = (col(vM), _tighter(col(vI), col(vM) + col(dv) * H), col(dv))
+        starts = [x0] if self.J is None else [x0, tuple(self.J * y for y in x0)]
+        for ro, pa in zip(self.roots, self.paths):
+            x = starts[ro]
             for i in pa:
                 x = step(i, *x)
             verts.append(x)
@@ -340,23 +375,39 @@ class _Strip:
         worst = 0.0
         for i, k, supp in self.checks:
             xf = mats[i] @ Vf[k] / lam_f ** (1.0 / self.p_len)
-            lp = _l1_coefficients(Vm, xf)
-            if lp is None:
-                return None
-            supp, cf = lp
-            cq = [arb(fmpq(int(round(x * 2 ** 50)), 2 ** 50)) for x in cf]
-            rm, ri, dr = step(i, *verts[k])
-            for j, cj in zip(supp, cq):
-                rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
-            res = rm + dr * H
-            # ||res||_P <= ||G^-1 res||_1 (res is a combination of the basis vertices)
-            gres = Gi * res
-            bound = sum((abs(cj) for cj in cq), arb(0)) + sum((abs(gres[r, 0]) for r in range(d)), arb(0))
+            bound = None
+            # the support of the previous interval first (a least-squares solve), then a fresh LP
+            for fresh in ((False, True) if (i, k) in self._supp else (True,)):
+                if fresh:
+                    lp = _l1_coefficients(Vm, xf)
+                    if lp is None:
+                        return None
+                    supp, cf = lp
+                else:
+                    supp = self._supp[(i, k)]
+                    cf = np.linalg.lstsq(Vm[:, supp], xf, rcond=None)[0]
+                bound = self._image_bound(step, verts, Gi, H, i, k, supp, cf)
+                if bound < 1:
+                    self._supp[(i, k)] = supp
+                    break
             worst = max(worst, float(bound.upper()))
             if not bound < 1:
                 return None
         return (vI, lI), {"from": u, "to": w, "lambda": lI, "max_image_norm_upper": worst,
                           "basis_inverse_norm_upper": float(gi_norm.upper())}
+
+    @staticmethod
+    def _image_bound(step, verts, Gi, H, i, k, supp, cf) -> arb:
+        """Upper bound (a ball) of ``||R_i v_k / lambda^(1/p)||_P`` over the interval: ``||c||_1 +
+        ||G^-1 res||_1`` with the residual ``res = x - V c`` in its centred form (``res`` is a
+        combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
+        d = Gi.nrows()
+        cq = [arb(fmpq(int(round(x * 2 ** 50)), 2 ** 50)) for x in cf]
+        rm, _, dr = step(i, *verts[k])
+        for j, cj in zip(supp, cq):
+            rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
+        gres = Gi * (rm + dr * H)
+        return sum((abs(cj) for cj in cq), arb(0)) + sum((abs(gres[r, 0]) for r in range(d)), arb(0))
 
 
 def _l1_coefficients(Vm: np.ndarray, x: np.ndarray):
@@ -387,7 +438,7 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                max_depth: int = 16, budget_seconds: float = 120.0) -> dict:
+                max_depth: int = 20, budget_seconds: float = 120.0) -> dict:
     """Certify ``JSR((1/2) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
     where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` (binary).
 
@@ -406,14 +457,17 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     out["word"] = tuple(S.word)
     # rational cover of the closed hull
     ql, qh = _dyadic_cover(A, below=True), _dyadic_cover(B, below=False)
-    stack = [(ql, qh, 0)]
+    # march from left to right with step (qh - ql) / 2^k: halve after a failure, double after two
+    # successes (the steps stay dyadic, the pieces tile [ql, qh] exactly)
     chi = None
     pieces = []
-    while stack:
+    cur, k, wins, tries = ql, 0, 0, 0
+    while cur < qh:
         if time.time() - t0 > budget_seconds:
-            out["reason"] = f"time budget ({budget_seconds} s) exhausted"
+            out["reason"] = f"time budget ({budget_seconds} s) exhausted at t = {float(cur):.12g}"
             return out
-        u, w, depth = stack.pop()
+        u, w = cur, min(qh, cur + (qh - ql) / 2 ** k)
+        tries += 1
         r = S.certify(u, w)
         ok = r is not None
         if ok:
@@ -423,13 +477,16 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
                 ok = _below_one_exact(S, chi, u, w, A, B, lo_open, hi_open, va, la)
         if ok:
             pieces.append(wit)
+            cur, wins = w, wins + 1
+            if wins >= 2 and k > 0:
+                k, wins = k - 1, 0
             continue
-        if depth >= max_depth:
-            out["reason"] = (f"no certificate on [{float(u):.12g}, {float(w):.12g}] after {max_depth} bisections "
+        wins, k = 0, k + 1
+        if k > max_depth:
+            out["reason"] = (f"no certificate on an interval of width 2^-{max_depth} of the strip at t = {float(u):.12g} "
                              "(the slack of the polytope is exhausted or the eigenpair enclosure fails)")
             return out
-        mid = (u + w) / 2
-        stack += [(mid, w, depth + 1), (u, mid, depth + 1)]
+    out["tries"] = tries
     pieces.sort(key=lambda x: x["from"])
     out["closed"] = True
     out["pieces"] = [{"from": sp.sstr(sp.Rational(x["from"].numerator, x["from"].denominator)),
