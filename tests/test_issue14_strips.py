@@ -72,3 +72,16 @@ def test_refuses_beyond_the_end():
                     max_depth=12)
     assert not r["closed"]
     assert "no certificate" in r["reason"]
+
+
+def test_four_point_c1_set_is_the_published_open_interval():
+    # Hechler, Mößner, Reif, CAGD 26 (2009): the 4-point scheme is C^1 exactly for 0 < w < w*,
+    # w* the real root of 32 w^3 + 4 w - 1 (~0.19273)
+    w = sp.Symbol("w")
+    a = LaurentSymbol.from_mask([-w, 0, w + sp.Rational(1, 2), 1, w + sp.Rational(1, 2), 0, -w], start=-3)
+    w_star = sp.CRootOf(32 * w**3 + 4 * w - 1, 0)
+    r = ck_interior(a, 1, 0, w_star)
+    assert r.status == "certified", r.provenance
+    (lo, hi, lc, hc), = r.value["certified"].parts
+    assert lo.compare(RealAlgebraic.rational(0)) == 0 and hi.compare(RealAlgebraic.from_expr(w_star)) == 0
+    assert not lc and not hc

@@ -99,7 +99,8 @@ class _Norms:
 
 def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool = True, hi_open: bool = True,
                 arity: int = 2, L_max: int = 12, min_width=None, max_pieces: int = 4000,
-                budget_seconds: float = 120.0, close_strips: bool = True) -> Result:
+                budget_seconds: float = 120.0, close_strips: bool = True,
+                strip_seconds: float = 30.0) -> Result:
     """Certify ``C^j`` on the interval from ``lo`` to ``hi`` (exact ends) by parametric norm tests.
 
     ``value``: ``{"certified": IntervalSet, "strips": [(lo, hi), ...]}`` (exact sympy ends of the
@@ -169,7 +170,7 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     closed, reasons = [], []
     if close_strips and strips and arity == 2:
         strips, closed, reasons = _close_strips(am, p, strips, A, B, lo_open, hi_open,
-                                       max(10.0, budget_seconds - (time.time() - t0)))
+                                       max(10.0, min(strip_seconds, budget_seconds - (time.time() - t0))))
         certified += [(u, v, kind, {"polytope": wit}) for u, v, kind, wit in closed]
     res = _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces,
                     time.time() - t0)

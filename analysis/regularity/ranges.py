@@ -200,7 +200,8 @@ def _run_interior(a, p, j, run, L_max, budget) -> bool:
                        "proven": r.status == CERTIFIED, "certified": r.value["certified"],
                        "strips": r.value["strips"], "status": r.status,
                        "route": _route(r, L_max),
-                       "pieces": r.witness["pieces"]}
+                       "pieces": r.witness["pieces"],
+                       "strips_not_closed": r.provenance.get("strips not closed by the invariant polytope", [])}
     return r.status == CERTIFIED
 
 
