@@ -202,8 +202,11 @@ def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget):
         lo_o = lo_open and u.compare(A) == 0
         hi_o = hi_open and v.compare(B) == 0
         rest = budget - (time.time() - t0)
-        r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0)) \
-            if rest > 1.0 else {"closed": False, "reason": "time budget exhausted"}
+        try:
+            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0)) \
+                if rest > 1.0 else {"closed": False, "reason": "time budget exhausted"}
+        except (AnalysisError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:   # no certificate, say why
+            r = {"closed": False, "reason": f"the polytope construction failed: {type(exc).__name__}: {exc}"}
         if r["closed"]:
             kind = {(False, False): "strip", (True, False): "strip-left-end", (False, True): "strip-right-end",
                     (True, True): "strip-both"}[(lo_o, hi_o)]
