@@ -61,9 +61,11 @@ def test_seed003_true_c2_range():
     """The paper's (0, (sqrt6-1)/80) is only sufficient: the true C^2 set is (0, omega*), omega* ~ 0.021464."""
     a = schemes.get("dfh-chaikin-perturbation").symbol
     r = ck_parameter_set(a, 2, within=(Q(-1, 20), Q(1, 20)), grid=10)
-    # boundaries certified on both sides; the interior near omega* is beyond the norm tests
-    assert r.witness["boundaries_certified"] and r.status == "inconclusive"
-    assert r.value[0]["interior"]["proven"] is False
+    # boundaries certified on both sides; the interior near omega* is beyond the norm tests but
+    # closed by the parametric invariant polytope (issue 14, analysis.regularity.strips)
+    assert r.witness["boundaries_certified"] and r.status == "certified"
+    assert r.value[0]["interior"]["proven"] is True
+    assert "invariant polytope" in r.value[0]["interior"]["route"]
     (run,) = r.value
     left, right = run["left"], run["right"]
     assert left["exact"] == 0

@@ -99,11 +99,15 @@ class _Norms:
 
 def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool = True, hi_open: bool = True,
                 arity: int = 2, L_max: int = 12, min_width=None, max_pieces: int = 4000,
-                budget_seconds: float = 120.0) -> Result:
+                budget_seconds: float = 120.0, close_strips: bool = True,
+                strip_seconds: float = 30.0) -> Result:
     """Certify ``C^j`` on the interval from ``lo`` to ``hi`` (exact ends) by parametric norm tests.
 
     ``value``: ``{"certified": IntervalSet, "strips": [(lo, hi), ...]}`` (exact sympy ends of the
-    inconclusive strips). Status certified when no strip remains. ``witness["pieces"]``: each
+    inconclusive strips). Status certified when no strip remains. With ``close_strips`` (binary
+    only) each strip the norm tests leave is then tried with a parametric invariant polytope
+    (:func:`analysis.regularity.strips.close_strip`: ``JSR(t) = rho(Pi(t))^(1/|Pi|) < 1`` up to an
+    end of eigenvalue type). ``witness["pieces"]``: each
     certified piece with its L and exact Bernstein bound, or the end test and the residue sums
     that reach 1 at the end.
     """
@@ -163,8 +167,57 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
         # the larger piece is processed first (stack: push it last)
         stack += [(M, v, right_kind), (u, M, left_kind)] if kind == "right-end" else \
                  [(u, M, left_kind), (M, v, right_kind)]
-    return _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces,
-                     time.time() - t0)
+    closed, reasons = [], []
+    if close_strips and strips and arity == 2:
+        strips, closed, reasons = _close_strips(am, p, strips, A, B, lo_open, hi_open,
+                                       max(10.0, min(strip_seconds, budget_seconds - (time.time() - t0))))
+        certified += [(u, v, kind, {"polytope": wit}) for u, v, kind, wit in closed]
+    res = _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces,
+                    time.time() - t0)
+    if closed:
+        res.provenance["method"] += ("; the strips next to ends of eigenvalue type closed by a parametric invariant "
+                                     "polytope (analysis.regularity.strips.close_strip)")
+    if reasons:
+        res.provenance["strips not closed by the invariant polytope"] = reasons
+    return res
+
+
+def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget):
+    """Try :func:`analysis.regularity.strips.close_strip` on each merged strip; returns the strips
+    left, the closed ones as ``(u, v, kind, witness)`` and why each strip left was not closed."""
+    import functools
+
+    from .strips import close_strip
+
+    key = functools.cmp_to_key(lambda x, y: x[0].compare(y[0]))
+    merged = []
+    for u, v in sorted(strips, key=key):
+        if merged and merged[-1][1].compare(u) == 0:
+            merged[-1] = (merged[-1][0], v)
+        else:
+            merged.append((u, v))
+    left, closed, reasons = [], [], []
+    t0 = time.time()
+    for u, v in merged:
+        lo_o = lo_open and u.compare(A) == 0
+        hi_o = hi_open and v.compare(B) == 0
+        rest = budget - (time.time() - t0)
+        try:
+            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0)) \
+                if rest > 1.0 else {"closed": False, "reason": "time budget exhausted"}
+        except (AnalysisError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:   # no certificate, say why
+            r = {"closed": False, "reason": f"the polytope construction failed: {type(exc).__name__}: {exc}"}
+        if r["closed"]:
+            kind = {(False, False): "strip", (True, False): "strip-left-end", (False, True): "strip-right-end",
+                    (True, True): "strip-both"}[(lo_o, hi_o)]
+            wit = {"product": "".join(map(str, reversed(r["word"]))), "pieces": len(r["pieces"]),
+                   "max image norm <=": max(x["max image norm <="] for x in r["pieces"]),
+                   "mu": r["mu"], "seconds": r["seconds"]}
+            closed.append((u, v, kind, wit))
+        else:
+            left.append((u, v))
+            reasons.append(f"[{sp.sstr(u.expr)}, {sp.sstr(v.expr)}]: {r['reason']}")
+    return left, closed, reasons
 
 
 def _try_piece(norms: _Norms, u: RealAlgebraic, v: RealAlgebraic, kind: str, L_max: int):
@@ -196,8 +249,8 @@ def _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min
     strips.sort(key=key)
     parts = []
     for u, v, kind, wit in certified:
-        lc = kind == "box" or (kind == "right-end")
-        hc = kind == "box" or (kind == "left-end")
+        lc = kind in ("box", "right-end", "strip", "strip-right-end")
+        hc = kind in ("box", "left-end", "strip", "strip-left-end")
         if parts and parts[-1][1].compare(u) == 0:
             lo0, _, lc0, _ = parts[-1]
             parts[-1] = (lo0, v, lc0, hc)

@@ -199,9 +199,21 @@ def _run_interior(a, p, j, run, L_max, budget) -> bool:
     run["interior"] = {"from": lo, "to": hi, "from_open": lo_open, "to_open": hi_open,
                        "proven": r.status == CERTIFIED, "certified": r.value["certified"],
                        "strips": r.value["strips"], "status": r.status,
-                       "route": "exact parametric norm tests (L <= %d, %d pieces)" % (L_max, len(r.witness["pieces"])),
-                       "pieces": r.witness["pieces"]}
+                       "route": _route(r, L_max),
+                       "pieces": r.witness["pieces"],
+                       "strips_not_closed": r.provenance.get("strips not closed by the invariant polytope", [])}
     return r.status == CERTIFIED
+
+
+def _route(r, L_max) -> str:
+    """How the interior was covered: norm-test pieces, and the strips closed by the polytope."""
+    norm = [x for x in r.witness["pieces"] if "polytope" not in x]
+    poly = [x["polytope"] for x in r.witness["pieces"] if "polytope" in x]
+    route = "exact parametric norm tests (L <= %d, %d pieces)" % (L_max, len(norm))
+    if poly:
+        route += "; %d strip(s) closed by a parametric invariant polytope (s.m.p. T_%s, %d sub-intervals)" % (
+            len(poly), "/".join(x["product"] for x in poly), sum(x["pieces"] for x in poly))
+    return route
 
 
 def _locate(a, p, j, s0, s1, tol, budget):
