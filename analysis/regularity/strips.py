@@ -318,6 +318,13 @@ class _Strip:
         return mats, lam, v, V
 
     def certify(self, u: Fraction, w: Fraction):
+        old = ctx.prec
+        try:
+            return self._certify(u, w)
+        finally:
+            ctx.prec = old              # the global precision is restored (other code and doctests rely on it)
+
+    def _certify(self, u: Fraction, w: Fraction):
         """Certify invariance on ``[u, w]`` (rationals); ``((v, lambda) enclosures over the interval,
         witness)`` or None.
 
@@ -487,6 +494,15 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ...}``; each piece
     records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image norm.
     """
+    old = ctx.prec
+    try:
+        return _close_strip(am, p, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
+                            budget_seconds=budget_seconds)
+    finally:
+        ctx.prec = old
+
+
+def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds) -> dict:
     t0 = time.time()
     A, B = RealAlgebraic.from_expr(sp.sympify(lo)), RealAlgebraic.from_expr(sp.sympify(hi))
     S = _Strip(am, p)
