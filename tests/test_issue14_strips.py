@@ -85,3 +85,15 @@ def test_four_point_c1_set_is_the_published_open_interval():
     (lo, hi, lc, hc), = r.value["certified"].parts
     assert lo.compare(RealAlgebraic.rational(0)) == 0 and hi.compare(RealAlgebraic.from_expr(w_star)) == 0
     assert not lc and not hc
+
+
+@pytest.mark.parametrize("value, message", [("abc", "--strip-seconds must be a number"),
+                                            ("-1", "--strip-seconds must be between 0 and 86400")])
+def test_strip_seconds_bad_input_is_one_line(value, message, capsys):
+    from analysis.cli.main import main
+
+    argv = ["range", "--mask", "-w,0,w+1/2,1,w+1/2,0,-w", "--start", "-3", "--C", "1", "--within=0,1/4",
+            "--strip-seconds", value]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1

@@ -321,8 +321,14 @@ def cmd_range(args) -> None:
         raise AnalysisError(f"--tol must be a number, not {args.tol!r}") from None
     if not (1e-30 <= tol <= 1):
         raise AnalysisError("--tol must be between 1e-30 and 1")
+    try:
+        strip_seconds = float(args.strip_seconds)
+    except ValueError:
+        raise AnalysisError(f"--strip-seconds must be a number, not {args.strip_seconds!r}") from None
+    if not 0 <= strip_seconds <= 86400:
+        raise AnalysisError("--strip-seconds must be between 0 and 86400")
     r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
-                         budget_seconds=float(args.budget), interior_L_max=12)
+                         budget_seconds=float(args.budget), interior_L_max=12, strip_seconds=strip_seconds)
     p = r.witness["parameter"]
     lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
              f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
@@ -387,6 +393,9 @@ def register(sub) -> None:
     s.add_argument("--grid", default="16", help="number of grid cells (default 16)")
     s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
     s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
+    s.add_argument("--strip-seconds", default="30", metavar="S",
+                   help="seconds for closing the strips next to ends of eigenvalue type by the parametric "
+                        "invariant polytope (default 30; the 6-point family's C^1 set needs about 300)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.add_argument("--maximize", choices=("holder",), help="also the smoothest member on --within (certified gap)")

@@ -96,7 +96,8 @@ def _verdict_at(a, p, value, j, budget):
 
 
 def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), grid: int = 16,
-                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 10) -> Result:
+                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 10,
+                     strip_seconds: float = 30.0) -> Result:
     """Where is the one-parameter family ``a(p)`` C^j?  Boundaries to ``tol``, bracketed by certified points.
 
     A grid of ``grid + 1`` rational points in ``within`` gets certified verdicts; between two
@@ -148,7 +149,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
 
     interiors = []
     for run in runs:
-        interiors.append(_run_interior(a, p, j, run, interior_L_max, budget_seconds))
+        interiors.append(_run_interior(a, p, j, run, interior_L_max, budget_seconds, strip_seconds))
     if boundaries_certified and runs and all(interiors):
         status = CERTIFIED
         message = None
@@ -175,8 +176,10 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
                   provenance=prov)
 
 
-def _run_interior(a, p, j, run, L_max, budget) -> bool:
-    """Cover one run by the exact parametric norm tests; records ``run["interior"]``."""
+def _run_interior(a, p, j, run, L_max, budget, strip_seconds: float = 30.0) -> bool:
+    """Cover one run by the exact parametric norm tests (and the strips they leave next to ends of
+    eigenvalue type by the parametric invariant polytope, ``strip_seconds`` in all); records
+    ``run["interior"]``."""
     from .interior import ck_interior
 
     ends = []
@@ -191,7 +194,7 @@ def _run_interior(a, p, j, run, L_max, budget) -> bool:
         return False
     try:
         r = ck_interior(a, j, lo, hi, p, lo_open=lo_open, hi_open=hi_open, L_max=L_max,
-                        budget_seconds=max(30.0, budget))
+                        budget_seconds=max(30.0, budget) + max(0.0, strip_seconds - 30.0), strip_seconds=strip_seconds)
     except AnalysisError as exc:     # e.g. (1+z)^{j+1} divides a only at exceptional values
         run["interior"] = {"from": lo, "to": hi, "proven": False, "route": f"no norm test: {exc}",
                            "strips": [], "status": INCONCLUSIVE}
