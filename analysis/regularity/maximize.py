@@ -149,6 +149,29 @@ def _float_alpha(F: _Family, t: float, L: int) -> tuple[float, tuple]:
     return F.k - best, word
 
 
+def word_product(M, w):
+    """The ball (``acb_mat``) product ``M[w[-1]] ... M[w[0]]`` of a word of transition matrices."""
+    P = M[w[0]]
+    for e in w[1:]:
+        P = M[e] * P
+    return P
+
+
+def rho_lower(P, r0=0):
+    """A certified lower bound of the spectral radius of every matrix in the ball matrix ``P``: the
+    largest of ``r0``, the trace bound and the lower moduli of Arb's eigenvalue enclosures (Rump's
+    algorithm, else the multiple-eigenvalue one). Shared by the one-parameter and the box maximisation."""
+    import flint
+
+    r_lo = max(flint.arb(r0).lower(), _trace_bound(P))
+    for kw in ({"algorithm": "rump"}, {"multiple": True}):
+        try:
+            return max([r_lo] + [abs(z).lower() for z in P.eig(**kw)])
+        except (ValueError, ZeroDivisionError):
+            continue
+    return r_lo
+
+
 def _ball_bound(F: _Family, lo, hi, words, prec=128):
     """A certified upper bound of ``alpha`` on ``[lo, hi]`` (or None) and the word giving it."""
     import flint
@@ -161,21 +184,12 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     flint.ctx.prec = prec
     try:
         for w in words:
-            P = M[w[0]]
-            for e in w[1:]:
-                P = M[e] * P
+            P = word_product(M, w)
             Pm = np.eye(len(Tf[0]))
             for e in w:
                 Pm = Tf[e] @ Pm
             rr = _real_root_bound(F, w, lo, hi, Pm)
-            r_lo = max(flint.arb(flint.fmpq(int(rr.p), int(rr.q))).lower(), _trace_bound(P))
-            for kw in ({"algorithm": "rump"}, {"multiple": True}):
-                try:
-                    eig = P.eig(**kw)
-                    r_lo = max([r_lo] + [abs(z).lower() for z in eig])
-                    break
-                except (ValueError, ZeroDivisionError):
-                    continue
+            r_lo = rho_lower(P, flint.arb(flint.fmpq(int(rr.p), int(rr.q))).lower())
             if not r_lo > 0:
                 continue
             ub = F.k - flint.arb(r_lo).log() / (flint.arb(2).log() * len(w))

@@ -140,7 +140,7 @@ def _ball_bound(F: _BoxFamily, box, words, prec=128):
     """A certified upper bound of alpha on the closed box (a Fraction) or None."""
     import flint
 
-    from .maximize import _trace_bound
+    from .maximize import rho_lower, word_product
 
     M = F.balls(box, prec)
     best = None
@@ -148,16 +148,7 @@ def _ball_bound(F: _BoxFamily, box, words, prec=128):
     flint.ctx.prec = prec
     try:
         for w in words:
-            P = M[w[0]]
-            for e in w[1:]:
-                P = M[e] * P
-            r_lo = _trace_bound(P)
-            for kw in ({"algorithm": "rump"}, {"multiple": True}):
-                try:
-                    r_lo = max([r_lo] + [abs(z).lower() for z in P.eig(**kw)])
-                    break
-                except (ValueError, ZeroDivisionError):
-                    continue
+            r_lo = rho_lower(word_product(M, w))
             if not r_lo > 0:
                 continue
             ub = _upper_fraction(F.k - flint.arb(r_lo).log() / (flint.arb(F.m).log() * len(w)))
