@@ -331,15 +331,18 @@ class Kind:
         raise NotImplementedError
 
 
-#: time budget of the certified maximisation of alpha in a smoothness profile (seconds)
-ALPHA_MAX_BUDGET = 10.0
+#: work budget of the certified maximisation of alpha in a smoothness profile: a number of
+#: sub-intervals (deterministic, so a golden file does not depend on the machine's speed), with a
+#: generous time limit as a safeguard only
+ALPHA_MAX_INTERVALS = 800
+ALPHA_MAX_SECONDS = 300.0
 
 
 def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, note: str = ""):
     """The largest Hölder exponent of the one-parameter family ``a`` over ``[lo, hi]`` and where it is
     attained, certified: :func:`analysis.regularity.maximize_box.maximize_holder_box` (float search, the
     certified alpha at the maximiser t*, a certified upper bound of alpha over the whole interval from
-    products of the transition matrices on sub-intervals) within :data:`ALPHA_MAX_BUDGET` seconds.
+    products of the transition matrices on sub-intervals) within :data:`ALPHA_MAX_INTERVALS` sub-intervals.
     Returns the text line, its key numbers and the evidence (with the sampled alpha curve as a table).
     When the maximisation is not certified, the maximum among the samples is reported and called sampled.
 
@@ -349,8 +352,16 @@ def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, n
     """
     from ...regularity.maximize_box import maximize_holder_box
 
-    r = maximize_holder_box(a, {p.name: (lo, hi)}, arity=arity, gap=sp.Rational(1, 100),
-                            budget_seconds=ALPHA_MAX_BUDGET)
+    if arity == 2:
+        from ...regularity.maximize import maximize_holder
+
+        r1 = maximize_holder(a, p, within=(lo, hi), gap=sp.Rational(1, 100), max_intervals=ALPHA_MAX_INTERVALS,
+                             budget_seconds=ALPHA_MAX_SECONDS)
+        r = r1.__class__(value=None if r1.value is None else {p.name: r1.value}, lower=r1.lower, upper=r1.upper,
+                         status=r1.status, witness=r1.witness, provenance=r1.provenance)
+    else:
+        r = maximize_holder_box(a, {p.name: (lo, hi)}, arity=arity, gap=sp.Rational(1, 100),
+                                max_boxes=ALPHA_MAX_INTERVALS, budget_seconds=ALPHA_MAX_SECONDS)
     line, nums, ev = sampled_alpha_maximum(p, curve, note)
     if r.status != "certified" or r.value is None or r.upper is None:
         why = r.provenance.get("message", "not certified")
