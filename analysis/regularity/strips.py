@@ -81,6 +81,8 @@ from flint import arb, arb_mat, ctx, fmpq
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
+from ..algebra.mary import check_arity
+from ..stationary.mary import transition_matrices_mary
 from ..stationary.transition import transition_matrices
 
 PREC = 128
@@ -105,14 +107,15 @@ def _eval_arb(P, t: arb) -> arb_mat:
     return arb_mat(rows)
 
 
-def _restricted(c: LaurentSymbol, p: sp.Symbol):
-    """``(R, mus, J)``: the transition matrices of ``c`` restricted to the common kernel of the
-    constant common left eigenvectors ``y`` (``y^T T_eps(t) = mu y^T`` for every ``t``, rational
+def _restricted(c: LaurentSymbol, p: sp.Symbol, arity: int = 2):
+    """``(R, mus, J)``: the ``m = arity`` transition matrices of ``c`` restricted to the common kernel
+    of the constant common left eigenvectors ``y`` (``y^T T_eps(t) = mu y^T`` for every ``t``, rational
     ``|mu| < 1``; the sum rules give them), the eigenvalues ``mus`` split off, and the exact flip
-    ``J`` of the restricted coordinates with ``J R_0 J = R_1``, ``J^2 = I`` (or None).
+    ``J`` of the restricted coordinates with ``J R_eps J = R_{m-1-eps}`` for every ``eps``, ``J^2 = I``
+    (or None).
 
     The family is block triangular with the 1x1 blocks ``mus``, so ``JSR(T) = max(JSR(R), |mus|)``."""
-    T = [sp.Matrix(M) for M in transition_matrices(c)]
+    T = [sp.Matrix(M) for M in (transition_matrices(c) if arity == 2 else transition_matrices_mary(c, arity))]
     n0 = T[0].rows
     R, mus = list(T), []
     E_tot, P_tot = sp.eye(n0), sp.eye(n0)     # x_full = E_tot y, y = P_tot x_full on the subspace
@@ -150,7 +153,8 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol):
         mus.append(mu)
     Jn = sp.Matrix(n0, n0, lambda i_, j_: 1 if i_ + j_ == n0 - 1 else 0)
     J = P_tot * Jn * E_tot
-    if sp.expand(J * R[0] * J - R[1]) != sp.zeros(*R[0].shape) or J * J != sp.eye(J.rows):
+    if J * J != sp.eye(J.rows) or any(sp.expand(J * R[e] * J - R[arity - 1 - e]) != sp.zeros(*R[0].shape)
+                                      for e in range(arity // 2 + arity % 2)):
         J = None
     return R, mus, J
 
@@ -236,10 +240,10 @@ def _krawczyk(PiA, xt: np.ndarray, lam: float, m: int):
 
 
 class _Strip:
-    def __init__(self, am: LaurentSymbol, p: sp.Symbol):
-        c = LaurentSymbol.from_mask([sp.expand(sp.sympify(x) / 2) for x in am.mask], start=am.start)
-        self.p = p
-        R, self.mus, J = _restricted(c, p)
+    def __init__(self, am: LaurentSymbol, p: sp.Symbol, arity: int = 2):
+        c = LaurentSymbol.from_mask([sp.expand(sp.sympify(x) / arity) for x in am.mask], start=am.start)
+        self.p, self.arity = p, arity
+        R, self.mus, J = _restricted(c, p, arity)
         self.mu = self.mus[0] if self.mus else None
         self.R = R
         self.P = [_poly_entries(M, p) for M in R]
@@ -254,14 +258,18 @@ class _Strip:
 
     def setup(self, t_end: float):
         mats = self.floats(t_end)
-        rho, word = _smp(mats)
+        flip = self.arity - 1                 # the flip maps the letter eps to flip - eps
+        rho, word = _smp(mats, 6 if self.arity <= 3 else max(2, int(np.log(2000) / np.log(self.arity))))
         fe = _float_eig(mats, word)
+        if fe is None and _float_eig(mats, word + word) is not None:
+            word = word + word                # a simple real negative leading eigenvalue: Pi^2
+            fe = _float_eig(mats, word)
         if fe is None:
             return f"the leading eigenvalue of the candidate product {word} is not simple, real and positive"
         lam, v, m = fe
         self.word, self.p_len, self.m = word, len(word), m
         r = lam ** (1.0 / len(word))
-        mirrored = tuple(1 - x for x in word)
+        mirrored = tuple(flip - x for x in word)
         if self.J is not None and any(mirrored == tuple(word[k:] + word[:k]) for k in range(len(word))):
             self.J = self.Jf = None          # J v is already on the orbit of v
         roots = [v] if self.J is None else [v, self.Jf @ v]
@@ -274,14 +282,14 @@ class _Strip:
         if self.J is not None:            # close the vertex set under the flip: J v_(r, w) = v_(1-r, mirror w)
             have = set(verts)
             for ro, pa in list(verts):
-                mate = (1 - ro, tuple(1 - x for x in pa))
+                mate = (1 - ro, tuple(flip - x for x in pa))
                 if mate not in have:
                     have.add(mate)
                     verts.append(mate)
         self.roots = [ro for ro, _ in verts]
         self.paths = [pa for _, pa in verts]
         index = {vp: k for k, vp in enumerate(verts)}
-        cycles = [tuple(word), tuple(1 - x for x in word)]    # the mirrored root's cycle
+        cycles = [tuple(word), mirrored]    # the mirrored root's cycle
         self.identity, self.checks = {}, []
         fl = self.vertices_float(t_end)
         if fl is None:
@@ -487,9 +495,11 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                max_depth: int = 20, budget_seconds: float = 120.0) -> dict:
-    """Certify ``JSR((1/2) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
-    where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` (binary).
+                max_depth: int = 20, budget_seconds: float = 120.0, arity: int = 2) -> dict:
+    """Certify ``JSR((1/m) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
+    where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` of arity ``m``
+    (:func:`analysis.stationary.difference.difference_symbol` for ``m = 2``,
+    :func:`analysis.stationary.mary.difference_symbol_mary`), ``T`` its ``m`` transition matrices.
 
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ...}``; each piece
     records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image norm.
@@ -497,17 +507,19 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     old = ctx.prec
     try:
         return _close_strip(am, p, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
-                            budget_seconds=budget_seconds)
+                            budget_seconds=budget_seconds, arity=arity)
     finally:
         ctx.prec = old
 
 
-def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds) -> dict:
+def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, arity) -> dict:
     t0 = time.time()
     A, B = RealAlgebraic.from_expr(sp.sympify(lo)), RealAlgebraic.from_expr(sp.sympify(hi))
-    S = _Strip(am, p)
+    S = _Strip(am, p, check_arity(arity))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)
+    if lo_open and hi_open and _smp(S.floats(float(A)), 3)[0] > _smp(S.floats(float(B)), 3)[0]:
+        end = A                           # both ends open: set up at the one of eigenvalue type (larger rho)
     why = S.setup(float(end))
     if why:
         out["reason"] = why
@@ -598,8 +610,8 @@ def _below_one_exact(S, chi, u, w, A, B, lo_open, hi_open, va, la) -> bool:
         return False
     U, W = RealAlgebraic.rational(sp.Rational(u.numerator, u.denominator)), \
         RealAlgebraic.rational(sp.Rational(w.numerator, w.denominator))
-    lo_x = A if A.compare(U) > 0 else U
-    hi_x = B if B.compare(W) < 0 else W
+    lo_x = A if A.compare(U) >= 0 else U     # a rational end equal to u is the end itself (open or not)
+    hi_x = B if B.compare(W) <= 0 else W
     for r in RealAlgebraic.roots_of(chi):
         below_hi = r.compare(hi_x) < 0 or (r.compare(hi_x) == 0 and not (hi_x is B and hi_open))
         above_lo = r.compare(lo_x) > 0 or (r.compare(lo_x) == 0 and not (lo_x is A and lo_open))
