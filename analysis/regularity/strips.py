@@ -83,7 +83,6 @@ from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
 from ..algebra.mary import check_arity
 from ..stationary.mary import transition_matrices_mary
-from ..stationary.transition import transition_matrices
 
 PREC = 128
 
@@ -115,7 +114,7 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol, arity: int = 2):
     (or None).
 
     The family is block triangular with the 1x1 blocks ``mus``, so ``JSR(T) = max(JSR(R), |mus|)``."""
-    T = [sp.Matrix(M) for M in (transition_matrices(c) if arity == 2 else transition_matrices_mary(c, arity))]
+    T = [sp.Matrix(M) for M in transition_matrices_mary(c, arity)]      # m = 2: transition_matrices(c)
     n0 = T[0].rows
     R, mus = list(T), []
     E_tot, P_tot = sp.eye(n0), sp.eye(n0)     # x_full = E_tot y, y = P_tot x_full on the subspace
