@@ -299,9 +299,11 @@ def cmd_range(args, m: int) -> None:
     extra = " and parametric norm tests, L <= 8" if tests else ""
     polytopes = [x for t in tests for x in t.get("polytope", [])]
     if polytopes:
-        extra += ", the strip" + ("s " if len(polytopes) > 1 else " ") + ", ".join(
-            f"[{x['from']}, {x['to']}]" for x in polytopes) + " by a parametric invariant polytope (product " \
-            + ", ".join(f"T_{x['product']}" for x in polytopes) + ")"
+        def strip(x):
+            lo_open, hi_open = x["kind"] in ("strip-left-end", "strip-both"), x["kind"] in ("strip-right-end", "strip-both")
+            return f"{'(' if lo_open else '['}{x['from']}, {x['to']}{')' if hi_open else ']'}"
+        extra += ", the strip" + ("s " if len(polytopes) > 1 else " ") + ", ".join(map(strip, polytopes)) \
+            + " by a parametric invariant polytope (product " + ", ".join(f"T_{x['product']}" for x in polytopes) + ")"
     lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}{extra}): {p} in {_fmt_set(r.value)}",
              f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
              f"{_fmt_set(r.witness['not_Cj'])}",

@@ -303,7 +303,8 @@ def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_s
         r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max,
                         budget_seconds=30.0 + max(0.0, strip_seconds - 30.0), strip_seconds=strip_seconds)
         C = r.value["certified"].to_sympy()
-        polytopes = [{"from": x["from"], "to": x["to"], **x["polytope"]} for x in r.witness["pieces"] if "polytope" in x]
+        polytopes = [{"from": x["from"], "to": x["to"], "kind": x["kind"], **x["polytope"]}
+                     for x in r.witness["pieces"] if "polytope" in x]
         if C != sp.EmptySet:
             S = S.union(C)
             covered.append({"interval": str(part), "certified": str(r.value["certified"]),

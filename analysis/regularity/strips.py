@@ -1,9 +1,19 @@
 """Closing the strips next to eigenvalue-type ends of a C^j set: a parametric invariant polytope.
 
 Next to an end ``t*`` where the spectral radius of a product ``Pi(t)`` of the transition matrices
-of ``c = (1/2) a_{j+1}`` reaches 1, no norm test reaches ``t*`` (the norms stay above the joint
+of ``c = (1/m) a_{j+1}`` reaches 1, no norm test reaches ``t*`` (the norms stay above the joint
 spectral radius). :func:`close_strip` certifies ``JSR(t) = rho(Pi(t))^(1/p) < 1`` on a strip
 ``[u, t*)`` instead, with a Guglielmi–Protasov invariant polytope whose vertices move with ``t``.
+
+Arity ``m >= 2`` (normalisation). ``a_{j+1} = (m z^{m-1}/q_m)^{j+1} a`` is the m-ary difference symbol
+(:func:`analysis.stationary.mary.difference_symbol_mary`; ``q_m = 1 + ... + z^{m-1}``), so
+``c = (1/m) a_{j+1} = z^{(m-1)(j+1)} m^j a / q_m^{j+1}``: a shift of the mask whose joint spectral radius
+gives ``alpha = j - log_m rho(c)`` (:mod:`analysis.regularity.mary`). ``JSR(T_0, ..., T_{m-1}) < 1`` of its
+``m`` transition matrices (:func:`analysis.stationary.mary.transition_matrices_mary`, which are
+:func:`analysis.stationary.transition.transition_matrices` for ``m = 2``) is therefore ``alpha > j``:
+``C^j``, the condition of the m-ary Dyn–Levin test ``||(1/m S_{a_{j+1}})^L|| < 1`` with the norm replaced
+by the extremal one. Words are over ``{0, ..., m-1}``; the flip of a symmetric family maps the letter
+``eps`` to ``m - 1 - eps``. Binary (``m = 2``) is the same code.
 
 Examples
 --------
@@ -22,15 +32,27 @@ Examples
 >>> close_strip(difference_symbol(a, 3), t, sp.Rational(5860, 131072), sp.Rational(1, 20), max_depth=8)["closed"]
 False
 
+Ternary: the interpolatory 4-point family with tension ``mu`` (catalogue ``ternary-four-point``) is C^1
+up to ``mu = -1/5``, where ``T_1`` of ``(1/3) a_2`` has the eigenvalue ``1/2 - 5 mu/2 = 1``:
+
+>>> from analysis.stationary.mary import difference_symbol_mary
+>>> mu = sp.Symbol("mu")
+>>> a0, a1, a2, a3 = -sp.Rational(1, 18) - mu/6, sp.Rational(13, 18) + mu/2, sp.Rational(7, 18) - mu/2, -sp.Rational(1, 18) + mu/6
+>>> t4 = LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
+>>> r = close_strip(difference_symbol_mary(t4, 2, 3), mu, sp.Rational(-1, 5), sp.Rational(-11455, 65536), lo_open=True, arity=3)
+>>> r["closed"], r["word"], r["mu"], r["pieces"][0]["from"]
+(True, (1,), '1/3', '-1/5')
+
 Algorithm
 ---------
-1. The transition matrices ``T_0(t), T_1(t)`` of ``c`` (exact polynomials in ``t``). Every constant
+1. The transition matrices ``T_0(t), ..., T_{m-1}(t)`` of ``c`` (exact polynomials in ``t``). Every constant
    common left eigenvector ``y^T T_eps(t) = mu y^T`` (all t; rational ``|mu| < 1``; the sum rules give
    them) is split off exactly: the family is block triangular and ``JSR = max(JSR(R), |mu|, ...)``
    with ``R_eps`` the restriction to the common kernel (rational basis). For a symmetric family the
-   exact flip ``J`` of the restricted coordinates with ``J R_0 J = R_1`` is found too.
-2. At the end point (float), the s.m.p. candidate ``Pi`` (best ``rho^(1/|w|)``, ``|w| <= 6``) with a
-   simple real positive leading eigenvalue and its eigenvector ``v``; the float invariant polytope
+   exact flip ``J`` of the restricted coordinates with ``J R_eps J = R_{m-1-eps}`` is found too.
+2. At the end point (float), the s.m.p. candidate ``Pi`` (best ``rho^(1/|w|)``, ``|w| <= 6`` for
+   ``m <= 3``, ``m^|w| <= 2000`` beyond) with a simple real positive leading eigenvalue (a simple real
+   negative one: ``Pi^2``) and its eigenvector ``v``; the float invariant polytope
    (:func:`analysis.jsr._polytope.build_polytope`, roots ``v`` and, when the mirrored product is
    not a rotation of ``Pi``, ``J v``; the vertex set closed under ``J``) gives vertex *words*:
    ``v_k(t) = R_{w_k}(t) r_k(t) / lambda(t)^(|w_k|/p)``. An image ``R_i v_k / lambda^(1/p)`` whose
@@ -259,7 +281,7 @@ class _Strip:
         mats = self.floats(t_end)
         flip = self.arity - 1                 # the flip maps the letter eps to flip - eps
         rho, word = _smp(mats, 6 if self.arity <= 3 else max(2, int(np.log(2000) / np.log(self.arity))))
-        fe = _float_eig(mats, word)
+        fe, base = _float_eig(mats, word), word
         if fe is None and _float_eig(mats, word + word) is not None:
             word = word + word                # a simple real negative leading eigenvalue: Pi^2
             fe = _float_eig(mats, word)
@@ -288,7 +310,10 @@ class _Strip:
         self.roots = [ro for ro, _ in verts]
         self.paths = [pa for _, pa in verts]
         index = {vp: k for k, vp in enumerate(verts)}
-        cycles = [tuple(word), mirrored]    # the mirrored root's cycle
+        # the cycles of the roots' products (the mirrored root's: mirrored). With Pi = B^2 (B with a simple
+        # negative leading eigenvalue) B v = -lambda^(1/2) v exactly: stripping B maps an image to minus a
+        # vertex, of polytope norm 1 as well (the polytope is symmetric)
+        cycles = [tuple(base), tuple(flip - x for x in base)]
         self.identity, self.checks = {}, []
         fl = self.vertices_float(t_end)
         if fl is None:
@@ -301,8 +326,8 @@ class _Strip:
             for i in range(len(mats)):
                 w = pa + (i,)
                 cyc = cycles[ro]
-                while w[: self.p_len] == cyc and len(w) >= self.p_len:
-                    w = w[self.p_len:]
+                while w[: len(cyc)] == cyc and len(w) >= len(cyc):
+                    w = w[len(cyc):]
                 if (ro, w) in index:
                     self.identity[(i, k)] = index[(ro, w)]
                     continue
