@@ -52,7 +52,8 @@ Algorithm
    exact flip ``J`` of the restricted coordinates with ``J R_eps J = R_{m-1-eps}`` is found too.
 2. At the end point (float), the s.m.p. candidate ``Pi`` (best ``rho^(1/|w|)``, ``|w| <= 6`` for
    ``m <= 3``, ``m^|w| <= 2000`` beyond) with a simple real positive leading eigenvalue (a simple real
-   negative one: ``Pi^2``) and its eigenvector ``v``; the float invariant polytope
+   negative one of ``B``: ``Pi = B^2``, and the cycle stripped below is ``B``, ``B v = -lambda^(1/2) v``,
+   minus a vertex, of the same norm) and its eigenvector ``v``; the float invariant polytope
    (:func:`analysis.jsr._polytope.build_polytope`, roots ``v`` and, when the mirrored product is
    not a rotation of ``Pi``, ``J v``; the vertex set closed under ``J``) gives vertex *words*:
    ``v_k(t) = R_{w_k}(t) r_k(t) / lambda(t)^(|w_k|/p)``. An image ``R_i v_k / lambda^(1/p)`` whose
@@ -71,7 +72,8 @@ Algorithm
    lambda(t)^(1/p)`` on ``I``.
 4. ``lambda(t) < 1`` on ``I`` (minus the open end): from the enclosure when its upper end is below 1;
    otherwise exactly: ``det(Pi(t) - I)`` has no real root in ``I`` before the end (exact root
-   isolation) and ``lambda < 1`` at the left end of ``I`` (continuity).
+   isolation; a rational open end that is an end of ``I`` is excluded) and ``lambda < 1`` at an
+   end of ``I`` that is not the open end (continuity).
 
 Precision and conditioning: Arb at 128 bits. The enclosure widths are ``~ |f'| h``, so the step
 ``h`` is about (slack at the end) / (||G^-1|| |residual'|): 4.4e-6 for the C^2 end of the 6-point
