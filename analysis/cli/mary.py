@@ -286,10 +286,24 @@ def cmd_range(args, m: int) -> None:
     within = _parse_within(args.within)
     if args.figure and not all(w.is_finite for w in within):
         raise AnalysisError("--figure needs finite bounds in --within, e.g. --within=-1,1")
+    try:
+        strip_seconds = float(getattr(args, "strip_seconds", 30))
+    except ValueError:
+        raise AnalysisError(f"--strip-seconds must be a number, not {args.strip_seconds!r}") from None
+    if not 0 <= strip_seconds <= 86400:
+        raise AnalysisError("--strip-seconds must be between 0 and 86400")
     Ls = [1, 2]
-    r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within)
+    r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within, strip_seconds=strip_seconds)
     p = r.witness["parameter"]
-    extra = " and parametric norm tests, L <= 8" if r.witness.get("interior_tests") else ""
+    tests = r.witness.get("interior_tests") or []
+    extra = " and parametric norm tests, L <= 8" if tests else ""
+    polytopes = [x for t in tests for x in t.get("polytope", [])]
+    if polytopes:
+        def strip(x):
+            lo_open, hi_open = x["kind"] in ("strip-left-end", "strip-both"), x["kind"] in ("strip-right-end", "strip-both")
+            return f"{'(' if lo_open else '['}{x['from']}, {x['to']}{')' if hi_open else ']'}"
+        extra += ", the strip" + ("s " if len(polytopes) > 1 else " ") + ", ".join(map(strip, polytopes)) \
+            + " by a parametric invariant polytope (product " + ", ".join(f"T_{x['product']}" for x in polytopes) + ")"
     lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}{extra}): {p} in {_fmt_set(r.value)}",
              f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
              f"{_fmt_set(r.witness['not_Cj'])}",
@@ -299,6 +313,11 @@ def cmd_range(args, m: int) -> None:
     data = {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
             "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
             "status": r.status}
+    if polytopes:
+        data["strips_closed"] = polytopes
+    for why in (w for t in tests for w in t.get("strips not closed by the invariant polytope", [])):
+        lines.append(f"  strip not closed by the parametric invariant polytope: {why}")
+        data.setdefault("strips_not_closed", []).append(why)
     if getattr(args, "maximize", None):          # issue 14: the smoothest member on --within
         from .common import parse_coefficient
         from .maximize import maximize_part

@@ -104,10 +104,10 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     """Certify ``C^j`` on the interval from ``lo`` to ``hi`` (exact ends) by parametric norm tests.
 
     ``value``: ``{"certified": IntervalSet, "strips": [(lo, hi), ...]}`` (exact sympy ends of the
-    inconclusive strips). Status certified when no strip remains. With ``close_strips`` (binary
-    only) each strip the norm tests leave is then tried with a parametric invariant polytope
-    (:func:`analysis.regularity.strips.close_strip`: ``JSR(t) = rho(Pi(t))^(1/|Pi|) < 1`` up to an
-    end of eigenvalue type). ``witness["pieces"]``: each
+    inconclusive strips). Status certified when no strip remains. With ``close_strips`` (any
+    arity) each strip the norm tests leave is then tried with a parametric invariant polytope
+    (:func:`analysis.regularity.strips.close_strip`: ``JSR(t) = rho(Pi(t))^(1/|Pi|) < 1`` for the
+    ``m`` transition matrices of ``(1/m) a_{j+1}``, up to an end of eigenvalue type). ``witness["pieces"]``: each
     certified piece with its L and exact Bernstein bound, or the end test and the residue sums
     that reach 1 at the end.
     """
@@ -168,9 +168,10 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
         stack += [(M, v, right_kind), (u, M, left_kind)] if kind == "right-end" else \
                  [(u, M, left_kind), (M, v, right_kind)]
     closed, reasons = [], []
-    if close_strips and strips and arity == 2:
+    if close_strips and strips:
         strips, closed, reasons = _close_strips(am, p, strips, A, B, lo_open, hi_open,
-                                       max(10.0, min(strip_seconds, budget_seconds - (time.time() - t0))))
+                                                max(10.0, min(strip_seconds, budget_seconds - (time.time() - t0))),
+                                                arity)
         certified += [(u, v, kind, {"polytope": wit}) for u, v, kind, wit in closed]
     res = _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces,
                     time.time() - t0)
@@ -182,7 +183,7 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     return res
 
 
-def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget):
+def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget, arity=2):
     """Try :func:`analysis.regularity.strips.close_strip` on each merged strip; returns the strips
     left, the closed ones as ``(u, v, kind, witness)`` and why each strip left was not closed."""
     import functools
@@ -203,7 +204,8 @@ def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget):
         hi_o = hi_open and v.compare(B) == 0
         rest = budget - (time.time() - t0)
         try:
-            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0)) \
+            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0),
+                            arity=arity) \
                 if rest > 1.0 else {"closed": False, "reason": "time budget exhausted"}
         except (AnalysisError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:   # no certificate, say why
             r = {"closed": False, "reason": f"the polytope construction failed: {type(exc).__name__}: {exc}"}

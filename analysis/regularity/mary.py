@@ -277,8 +277,10 @@ def _norm_below_at(a, m, j, p, x, L_max):
     return None
 
 
-def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False):
-    """Shrink the undecided part with the exact parametric norm tests on each of its intervals."""
+def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_seconds: float = 30.0):
+    """Shrink the undecided part with the exact parametric norm tests on each of its intervals, and the
+    strips they leave next to ends of eigenvalue type with the parametric invariant polytope
+    (:func:`analysis.regularity.strips.close_strip`, ``strip_seconds`` per interval)."""
     from .interior import ck_interior
 
     parts = undecided.args if isinstance(undecided, sp.Union) else (undecided,)
@@ -298,17 +300,23 @@ def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False):
             continue
         if points_only or not isinstance(part, sp.Interval) or not (part.start.is_finite and part.end.is_finite):
             continue
-        r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max, budget_seconds=30.0)
+        r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max,
+                        budget_seconds=30.0 + max(0.0, strip_seconds - 30.0), strip_seconds=strip_seconds)
         C = r.value["certified"].to_sympy()
+        polytopes = [{"from": x["from"], "to": x["to"], "kind": x["kind"], **x["polytope"]}
+                     for x in r.witness["pieces"] if "polytope" in x]
         if C != sp.EmptySet:
             S = S.union(C)
             covered.append({"interval": str(part), "certified": str(r.value["certified"]),
-                            "pieces": len(r.witness["pieces"])})
+                            "pieces": len(r.witness["pieces"]), **({"polytope": polytopes} if polytopes else {})})
+        if r.provenance.get("strips not closed by the invariant polytope"):
+            covered.append({"interval": str(part), "strips not closed by the invariant polytope":
+                            r.provenance["strips not closed by the invariant polytope"]})
     return S, covered
 
 
 def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence = (1, 2, 3),
-                  within=(-sp.oo, sp.oo), interior_L_max: int = 8) -> Result:
+                  within=(-sp.oo, sp.oo), interior_L_max: int = 8, strip_seconds: float = 30.0) -> Result:
     """Where is the one-parameter m-ary family ``C^j``?  Both sides certified where possible.
 
     * **C^j** (sufficient): the union over ``L in Ls`` of the exact sets where the m-ary Dyn–Levin test
@@ -321,7 +329,9 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     on both sides; otherwise points there can be decided one by one with :func:`smoothness_mary`).
     What the norm sets leave undecided is first covered, where possible, by the exact parametric
     norm tests with L <= ``interior_L_max`` (:func:`analysis.regularity.interior.ck_interior`;
-    ``witness["interior_tests"]``; 0 turns this off).
+    ``witness["interior_tests"]``; 0 turns this off), and the strips they leave next to ends of
+    eigenvalue type by the parametric invariant polytope (:func:`analysis.regularity.strips.close_strip`,
+    ``strip_seconds`` per interval; ``interior_tests[...]["polytope"]``, or why a strip was not closed).
     Uses the generic ``k`` (``N - 1`` identically in the parameter).
     """
     from ..stationary.normset import _parameter, norm_solution_set
@@ -344,7 +354,7 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     undecided = box - S.union(V)
     covered = []
     if interior_L_max and undecided != sp.EmptySet:
-        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max)
+        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, strip_seconds=strip_seconds)
         undecided = box - S.union(V)
         if undecided != sp.EmptySet:     # isolated points left (e.g. closed ends of the intervals)
             S, more = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, points_only=True)

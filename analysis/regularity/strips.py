@@ -1,9 +1,19 @@
 """Closing the strips next to eigenvalue-type ends of a C^j set: a parametric invariant polytope.
 
 Next to an end ``t*`` where the spectral radius of a product ``Pi(t)`` of the transition matrices
-of ``c = (1/2) a_{j+1}`` reaches 1, no norm test reaches ``t*`` (the norms stay above the joint
+of ``c = (1/m) a_{j+1}`` reaches 1, no norm test reaches ``t*`` (the norms stay above the joint
 spectral radius). :func:`close_strip` certifies ``JSR(t) = rho(Pi(t))^(1/p) < 1`` on a strip
 ``[u, t*)`` instead, with a Guglielmi–Protasov invariant polytope whose vertices move with ``t``.
+
+Arity ``m >= 2`` (normalisation). ``a_{j+1} = (m z^{m-1}/q_m)^{j+1} a`` is the m-ary difference symbol
+(:func:`analysis.stationary.mary.difference_symbol_mary`; ``q_m = 1 + ... + z^{m-1}``), so
+``c = (1/m) a_{j+1} = z^{(m-1)(j+1)} m^j a / q_m^{j+1}``: a shift of the mask whose joint spectral radius
+gives ``alpha = j - log_m rho(c)`` (:mod:`analysis.regularity.mary`). ``JSR(T_0, ..., T_{m-1}) < 1`` of its
+``m`` transition matrices (:func:`analysis.stationary.mary.transition_matrices_mary`, which are
+:func:`analysis.stationary.transition.transition_matrices` for ``m = 2``) is therefore ``alpha > j``:
+``C^j``, the condition of the m-ary Dyn–Levin test ``||(1/m S_{a_{j+1}})^L|| < 1`` with the norm replaced
+by the extremal one. Words are over ``{0, ..., m-1}``; the flip of a symmetric family maps the letter
+``eps`` to ``m - 1 - eps``. Binary (``m = 2``) is the same code.
 
 Examples
 --------
@@ -22,15 +32,28 @@ Examples
 >>> close_strip(difference_symbol(a, 3), t, sp.Rational(5860, 131072), sp.Rational(1, 20), max_depth=8)["closed"]
 False
 
+Ternary: the interpolatory 4-point family with tension ``mu`` (catalogue ``ternary-four-point``) is C^1
+up to ``mu = -1/5``, where ``T_1`` of ``(1/3) a_2`` has the eigenvalue ``1/2 - 5 mu/2 = 1``:
+
+>>> from analysis.stationary.mary import difference_symbol_mary
+>>> mu = sp.Symbol("mu")
+>>> a0, a1, a2, a3 = -sp.Rational(1, 18) - mu/6, sp.Rational(13, 18) + mu/2, sp.Rational(7, 18) - mu/2, -sp.Rational(1, 18) + mu/6
+>>> t4 = LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
+>>> r = close_strip(difference_symbol_mary(t4, 2, 3), mu, sp.Rational(-1, 5), sp.Rational(-11455, 65536), lo_open=True, arity=3)
+>>> r["closed"], r["word"], r["mu"], r["pieces"][0]["from"]
+(True, (1,), '1/3', '-1/5')
+
 Algorithm
 ---------
-1. The transition matrices ``T_0(t), T_1(t)`` of ``c`` (exact polynomials in ``t``). Every constant
+1. The transition matrices ``T_0(t), ..., T_{m-1}(t)`` of ``c`` (exact polynomials in ``t``). Every constant
    common left eigenvector ``y^T T_eps(t) = mu y^T`` (all t; rational ``|mu| < 1``; the sum rules give
    them) is split off exactly: the family is block triangular and ``JSR = max(JSR(R), |mu|, ...)``
    with ``R_eps`` the restriction to the common kernel (rational basis). For a symmetric family the
-   exact flip ``J`` of the restricted coordinates with ``J R_0 J = R_1`` is found too.
-2. At the end point (float), the s.m.p. candidate ``Pi`` (best ``rho^(1/|w|)``, ``|w| <= 6``) with a
-   simple real positive leading eigenvalue and its eigenvector ``v``; the float invariant polytope
+   exact flip ``J`` of the restricted coordinates with ``J R_eps J = R_{m-1-eps}`` is found too.
+2. At the end point (float), the s.m.p. candidate ``Pi`` (best ``rho^(1/|w|)``, ``|w| <= 6`` for
+   ``m <= 3``, ``m^|w| <= 2000`` beyond) with a simple real positive leading eigenvalue (a simple real
+   negative one of ``B``: ``Pi = B^2``, and the cycle stripped below is ``B``, ``B v = -lambda^(1/2) v``,
+   minus a vertex, of the same norm) and its eigenvector ``v``; the float invariant polytope
    (:func:`analysis.jsr._polytope.build_polytope`, roots ``v`` and, when the mirrored product is
    not a rotation of ``Pi``, ``J v``; the vertex set closed under ``J``) gives vertex *words*:
    ``v_k(t) = R_{w_k}(t) r_k(t) / lambda(t)^(|w_k|/p)``. An image ``R_i v_k / lambda^(1/p)`` whose
@@ -49,7 +72,8 @@ Algorithm
    lambda(t)^(1/p)`` on ``I``.
 4. ``lambda(t) < 1`` on ``I`` (minus the open end): from the enclosure when its upper end is below 1;
    otherwise exactly: ``det(Pi(t) - I)`` has no real root in ``I`` before the end (exact root
-   isolation) and ``lambda < 1`` at the left end of ``I`` (continuity).
+   isolation; a rational open end that is an end of ``I`` is excluded) and ``lambda < 1`` at an
+   end of ``I`` that is not the open end (continuity).
 
 Precision and conditioning: Arb at 128 bits. The enclosure widths are ``~ |f'| h``, so the step
 ``h`` is about (slack at the end) / (||G^-1|| |residual'|): 4.4e-6 for the C^2 end of the 6-point
@@ -81,7 +105,8 @@ from flint import arb, arb_mat, ctx, fmpq
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
-from ..stationary.transition import transition_matrices
+from ..algebra.mary import check_arity
+from ..stationary.mary import transition_matrices_mary
 
 PREC = 128
 
@@ -105,14 +130,15 @@ def _eval_arb(P, t: arb) -> arb_mat:
     return arb_mat(rows)
 
 
-def _restricted(c: LaurentSymbol, p: sp.Symbol):
-    """``(R, mus, J)``: the transition matrices of ``c`` restricted to the common kernel of the
-    constant common left eigenvectors ``y`` (``y^T T_eps(t) = mu y^T`` for every ``t``, rational
+def _restricted(c: LaurentSymbol, p: sp.Symbol, arity: int = 2):
+    """``(R, mus, J)``: the ``m = arity`` transition matrices of ``c`` restricted to the common kernel
+    of the constant common left eigenvectors ``y`` (``y^T T_eps(t) = mu y^T`` for every ``t``, rational
     ``|mu| < 1``; the sum rules give them), the eigenvalues ``mus`` split off, and the exact flip
-    ``J`` of the restricted coordinates with ``J R_0 J = R_1``, ``J^2 = I`` (or None).
+    ``J`` of the restricted coordinates with ``J R_eps J = R_{m-1-eps}`` for every ``eps``, ``J^2 = I``
+    (or None).
 
     The family is block triangular with the 1x1 blocks ``mus``, so ``JSR(T) = max(JSR(R), |mus|)``."""
-    T = [sp.Matrix(M) for M in transition_matrices(c)]
+    T = [sp.Matrix(M) for M in transition_matrices_mary(c, arity)]      # m = 2: transition_matrices(c)
     n0 = T[0].rows
     R, mus = list(T), []
     E_tot, P_tot = sp.eye(n0), sp.eye(n0)     # x_full = E_tot y, y = P_tot x_full on the subspace
@@ -150,7 +176,8 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol):
         mus.append(mu)
     Jn = sp.Matrix(n0, n0, lambda i_, j_: 1 if i_ + j_ == n0 - 1 else 0)
     J = P_tot * Jn * E_tot
-    if sp.expand(J * R[0] * J - R[1]) != sp.zeros(*R[0].shape) or J * J != sp.eye(J.rows):
+    if J * J != sp.eye(J.rows) or any(sp.expand(J * R[e] * J - R[arity - 1 - e]) != sp.zeros(*R[0].shape)
+                                      for e in range(arity // 2 + arity % 2)):
         J = None
     return R, mus, J
 
@@ -236,10 +263,10 @@ def _krawczyk(PiA, xt: np.ndarray, lam: float, m: int):
 
 
 class _Strip:
-    def __init__(self, am: LaurentSymbol, p: sp.Symbol):
-        c = LaurentSymbol.from_mask([sp.expand(sp.sympify(x) / 2) for x in am.mask], start=am.start)
-        self.p = p
-        R, self.mus, J = _restricted(c, p)
+    def __init__(self, am: LaurentSymbol, p: sp.Symbol, arity: int = 2):
+        c = LaurentSymbol.from_mask([sp.expand(sp.sympify(x) / arity) for x in am.mask], start=am.start)
+        self.p, self.arity = p, arity
+        R, self.mus, J = _restricted(c, p, arity)
         self.mu = self.mus[0] if self.mus else None
         self.R = R
         self.P = [_poly_entries(M, p) for M in R]
@@ -254,14 +281,18 @@ class _Strip:
 
     def setup(self, t_end: float):
         mats = self.floats(t_end)
-        rho, word = _smp(mats)
-        fe = _float_eig(mats, word)
+        flip = self.arity - 1                 # the flip maps the letter eps to flip - eps
+        rho, word = _smp(mats, 6 if self.arity <= 3 else max(2, int(np.log(2000) / np.log(self.arity))))
+        fe, base = _float_eig(mats, word), word
+        if fe is None and _float_eig(mats, word + word) is not None:
+            word = word + word                # a simple real negative leading eigenvalue: Pi^2
+            fe = _float_eig(mats, word)
         if fe is None:
             return f"the leading eigenvalue of the candidate product {word} is not simple, real and positive"
         lam, v, m = fe
         self.word, self.p_len, self.m = word, len(word), m
         r = lam ** (1.0 / len(word))
-        mirrored = tuple(1 - x for x in word)
+        mirrored = tuple(flip - x for x in word)
         if self.J is not None and any(mirrored == tuple(word[k:] + word[:k]) for k in range(len(word))):
             self.J = self.Jf = None          # J v is already on the orbit of v
         roots = [v] if self.J is None else [v, self.Jf @ v]
@@ -274,14 +305,17 @@ class _Strip:
         if self.J is not None:            # close the vertex set under the flip: J v_(r, w) = v_(1-r, mirror w)
             have = set(verts)
             for ro, pa in list(verts):
-                mate = (1 - ro, tuple(1 - x for x in pa))
+                mate = (1 - ro, tuple(flip - x for x in pa))
                 if mate not in have:
                     have.add(mate)
                     verts.append(mate)
         self.roots = [ro for ro, _ in verts]
         self.paths = [pa for _, pa in verts]
         index = {vp: k for k, vp in enumerate(verts)}
-        cycles = [tuple(word), tuple(1 - x for x in word)]    # the mirrored root's cycle
+        # the cycles of the roots' products (the mirrored root's: mirrored). With Pi = B^2 (B with a simple
+        # negative leading eigenvalue) B v = -lambda^(1/2) v exactly: stripping B maps an image to minus a
+        # vertex, of polytope norm 1 as well (the polytope is symmetric)
+        cycles = [tuple(base), tuple(flip - x for x in base)]
         self.identity, self.checks = {}, []
         fl = self.vertices_float(t_end)
         if fl is None:
@@ -294,8 +328,8 @@ class _Strip:
             for i in range(len(mats)):
                 w = pa + (i,)
                 cyc = cycles[ro]
-                while w[: self.p_len] == cyc and len(w) >= self.p_len:
-                    w = w[self.p_len:]
+                while w[: len(cyc)] == cyc and len(w) >= len(cyc):
+                    w = w[len(cyc):]
                 if (ro, w) in index:
                     self.identity[(i, k)] = index[(ro, w)]
                     continue
@@ -487,9 +521,11 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                max_depth: int = 20, budget_seconds: float = 120.0) -> dict:
-    """Certify ``JSR((1/2) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
-    where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` (binary).
+                max_depth: int = 20, budget_seconds: float = 120.0, arity: int = 2) -> dict:
+    """Certify ``JSR((1/m) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
+    where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` of arity ``m``
+    (:func:`analysis.stationary.difference.difference_symbol` for ``m = 2``,
+    :func:`analysis.stationary.mary.difference_symbol_mary`), ``T`` its ``m`` transition matrices.
 
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ...}``; each piece
     records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image norm.
@@ -497,17 +533,19 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     old = ctx.prec
     try:
         return _close_strip(am, p, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
-                            budget_seconds=budget_seconds)
+                            budget_seconds=budget_seconds, arity=arity)
     finally:
         ctx.prec = old
 
 
-def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds) -> dict:
+def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, arity) -> dict:
     t0 = time.time()
     A, B = RealAlgebraic.from_expr(sp.sympify(lo)), RealAlgebraic.from_expr(sp.sympify(hi))
-    S = _Strip(am, p)
+    S = _Strip(am, p, check_arity(arity))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)
+    if lo_open and hi_open and _smp(S.floats(float(A)), 3)[0] > _smp(S.floats(float(B)), 3)[0]:
+        end = A                           # both ends open: set up at the one of eigenvalue type (larger rho)
     why = S.setup(float(end))
     if why:
         out["reason"] = why
@@ -598,8 +636,8 @@ def _below_one_exact(S, chi, u, w, A, B, lo_open, hi_open, va, la) -> bool:
         return False
     U, W = RealAlgebraic.rational(sp.Rational(u.numerator, u.denominator)), \
         RealAlgebraic.rational(sp.Rational(w.numerator, w.denominator))
-    lo_x = A if A.compare(U) > 0 else U
-    hi_x = B if B.compare(W) < 0 else W
+    lo_x = A if A.compare(U) >= 0 else U     # a rational end equal to u is the end itself (open or not)
+    hi_x = B if B.compare(W) <= 0 else W
     for r in RealAlgebraic.roots_of(chi):
         below_hi = r.compare(hi_x) < 0 or (r.compare(hi_x) == 0 and not (hi_x is B and hi_open))
         above_lo = r.compare(lo_x) > 0 or (r.compare(lo_x) == 0 and not (lo_x is A and lo_open))
