@@ -70,6 +70,7 @@ import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
 from .expbspline import not_ck
+from .gendiff import GeneralizedDifferences, gendiff_smoothness
 from .level_dependent import H, LevelDependentScheme, TaylorModel, taylor_models
 from .series import same_support, smoothness
 from ..jsonable import fmt_upper
@@ -191,7 +192,8 @@ def _ok(r: Result) -> bool:
     return r.is_certified and r.value is True
 
 
-def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: int, diffs: _Differences) -> dict:
+def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: int, diffs: _Differences,
+               gd: GeneralizedDifferences | None = None, converges: Result | None = None) -> dict:
     tried = []
     # all (1+z)^k divide a^n: the k-th divided difference route first (weight 2^0: the likeliest to
     # converge), then the direct series, then the intermediate differences
@@ -213,6 +215,18 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
                                 f"+ the divided-difference argument: S_(a^n) C^{k}"),
                     "hypotheses": r.witness["hypotheses"]}
         tried.append({"route": route, "failed": r.witness["failed"]})
+    if gd is not None and k > 0:
+        g = gendiff_smoothness(s, k, converges=converges, N=N, cache=gd)
+        if _ok(g):
+            w = g.witness
+            names = ", ".join(sp.sstr(x) for x in w["subset"])
+            return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED,
+                    "route": (f"Dyn-Levin on the {_ordinal(w['j'])} generalized divided difference scheme "
+                              f"(exponential factors {names})"),
+                    "theorem": w["theorem"], "hypotheses": w["hypotheses"], "j": w["j"], "r": w["r"],
+                    "Lambda": [sp.sstr(x) for x in w["Lambda"]]}
+        tried.append({"route": "Dyn-Levin on a generalized divided difference scheme (exponential factors)",
+                      "failed": g.witness["failed"]})
     route = ("Conti-Dyn-Manni-Mazure 2015 (asymptotic similarity)" if k == 0 else
              "Charina-Conti-Guglielmi-Protasov 2017 (asymptotic similarity + approximate sum rules)")
     asr = approximate_sum_rules(s, k, N=N)
@@ -261,10 +275,17 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         break
     sup = same_support(s, None, N=N)
     diffs = _Differences(s)
+    gd = GeneralizedDifferences(s)
     verdicts = []
     best = -1
     for k in range(k_lim + 1):
-        v = _verdict_k(s, a_smooth, k, sup, N, diffs)
+        conv = None
+        if verdicts:
+            v0 = verdicts[0]
+            conv = Result(value=True if v0["status"] == CERTIFIED else None, status=v0["status"],
+                          witness={"statement": "{S_(a^n)} converges (C^0)", "route": v0["route"]},
+                          provenance={"method": "the C^0 verdict above"})
+        v = _verdict_k(s, a_smooth, k, sup, N, diffs, gd, conv)
         verdicts.append(v)
         if v["status"] == CERTIFIED and best == k - 1:
             best = k
