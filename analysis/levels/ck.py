@@ -71,6 +71,7 @@ import sympy as sp
 from .balls import _ball, arb_abs, ball_to_interval, workprec
 from .expbspline import not_ck
 from .gendiff import GeneralizedDifferences, gendiff_smoothness
+from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme, TaylorModel, taylor_models
 from .series import same_support, smoothness
 from ..jsonable import fmt_upper
@@ -259,6 +260,7 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         s = s.subs(values)
     check_real(s)
     a = s.limit()
+    prefill_taylor(s)          # the same exact Taylor coefficients as sympy.series, faster (or nothing)
     if all(H not in c.free_symbols for c in s.mask):
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
     a_smooth: dict[int, Result] = {}

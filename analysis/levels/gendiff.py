@@ -109,6 +109,7 @@ from itertools import product
 import sympy as sp
 
 from .expbspline import _NotOfForm, _generators, _linear_in_h
+from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .series import smoothness, stationary_smoothness
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
@@ -285,6 +286,7 @@ def generalized_difference(s: LevelDependentScheme, subset) -> tuple[LevelDepend
     c = LevelDependentScheme(tuple(2 ** j * x for x in coeffs), s.start, s.params,
                              slug=f"{s.slug}-gendiff{j}", title=f"generalized {j}-th difference of {s.title}",
                              source=s.source)
+    prefill_taylor(c)          # exact Taylor coefficients by series arithmetic (sympy.series is slow here)
     h1 = Result(value=True, status=CERTIFIED,
                 witness={"p_n": labels, "frequencies": [sp.sstr(x) for x in subset],
                          "identity": "a^n(z) = p_n(z) b^n(z) for every n >= 0, h = 2^-n (exact: rational "
@@ -313,9 +315,17 @@ def _subsets(lams, j: int) -> list[tuple]:
         sub = tuple(x for c, u in zip(counts, keys) for _ in range(c) for x in u)
         if any(x != 0 for x in sub):
             out.append(tuple(sorted(sub, key=sp.default_sort_key)))
-    # prefer removing real unpaired frequencies, then pairs, and as few 1+z as possible
-    return sorted(out, key=lambda t: (sum(1 for x in t if x == 0),
-                                      -sum(1 for x in t if x != 0 and _is_real(x))))
+    # prefer (1) as few 1+z as possible (route 2 covers those), (2) real frequencies removed in +-pairs
+    # (cosh factors: the remaining c^n - c = O(h^2), needed when r >= 1), (3) real unpaired ones removed
+    real = [x for x in lams if x != 0 and _is_real(x)]
+
+    def key(sub):
+        zeros = sum(1 for x in sub if x == 0)
+        split = sum(abs(sub.count(x) - sub.count(-x)) for x in set(real) if -x in real) // 2
+        lone = sum(1 for x in sub if x in real and -x not in real)
+        return zeros, split, -lone
+
+    return sorted(out, key=key)
 
 
 def _h3(c: LevelDependentScheme, r: int, N: int) -> Result:
