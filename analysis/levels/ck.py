@@ -11,6 +11,11 @@ in order
    ``(1+z)^j`` divides every ``a^n`` identically in n): same support, ``S_e`` C^{k-j} and
    ``sum_n 2^{(k-j)n} ||S_{e^n} - S_e|| < oo`` give ``S_{e^n}`` C^{k-j}, hence ``S_{a^n}`` C^k —
    this is what makes exponential B-splines reach their true smoothness;
+2′. **Dyn–Levin on a j-th generalized divided difference scheme** ``c^n = 2^j a^n / p_n``,
+   ``p_n = prod_{i<=j} (1 + e^{lambda_i 2^-(n+1)} z)`` (exponential factors, ``Lambda`` closed under
+   conjugation, ``0`` allowed, ``p_n | a^n`` proved exactly for every n; :mod:`.gendiff`, where the
+   theorem is proved): ``{S_(a^n)}`` convergent and ``S_{c^n}`` C^{k-j} give C^k — exponential
+   B-splines *without* the frequency 0 (``(1+z)`` does not divide ``a^n``);
 3. **asymptotic similarity + approximate sum rules** (Conti–Dyn–Manni–Mazure 2015 for k = 0;
    Charina–Conti–Guglielmi–Protasov 2017 for C^k): the masks have one common support, converge to
    ``a`` (asymptotic similarity), satisfy approximate sum rules of order ``k+1`` with
@@ -44,7 +49,10 @@ Examples
 
 Algorithm
 ---------
-Routes 1–2: :func:`analysis.levels.series.smoothness` (arb partial sums + Cauchy Taylor tails).
+Routes 1–2: :func:`analysis.levels.series.smoothness` (arb partial sums + Cauchy Taylor tails); route
+2′: :func:`analysis.levels.gendiff.gendiff_smoothness`. The exact Taylor coefficients in ``h`` are
+computed once per scheme by series arithmetic (:func:`analysis.levels.hseries.prefill_taylor`) where
+the mask allows it (``sympy.series`` otherwise).
 Route 3: ``a^n(1) - 2`` and ``D^j a^n(-1)`` are fixed linear combinations ``sum_i w_i g_i(h)`` of
 the coefficient differences ``g_i = a^n_i - a_i`` (``w_i`` exact, ``h = 2^-n``); their exact
 Taylor coefficients in h vanish below ``h^{k+1}`` (exact zero test), and the combined rigorous
@@ -55,6 +63,8 @@ References
 ----------
 N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*,
 J. Math. Anal. Appl. 193 (1995) 594-621.
+N. Dyn, D. Levin, A. Luzzatto, *Exponentials reproducing subdivision schemes*, Found. Comput.
+Math. 3 (2003) 187-206 (generalized differences: route 2′).
 C. Conti, N. Dyn, C. Manni, M.-L. Mazure, *Convergence of univariate non-stationary subdivision
 schemes via asymptotic similarity*, Comput. Aided Geom. Des. 37 (2015) 1-8.
 M. Charina, C. Conti, N. Guglielmi, V. Protasov, *Regularity of non-stationary subdivision: a
@@ -320,4 +330,5 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
                            "upper_bound": upper, "not_C^k": None if cert is None else cert.witness["k"],
                            "exact": cert is not None and best == cert.witness["k"] - 1},
                   provenance={"scheme": s.slug, "N": N,
-                              "method": "Dyn-Levin 1995 (direct, divided differences); CDMM 2015 / CCGP 2017"})
+                              "method": ("Dyn-Levin 1995 (direct, divided differences, generalized divided differences); "
+                                         "CDMM 2015 / CCGP 2017")})
