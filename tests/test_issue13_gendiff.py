@@ -169,11 +169,18 @@ def test_unpaired_complex_frequency_is_not_used():
     assert gendiff_smoothness(s, 1).witness["failed"][0].startswith("H1")
 
 
-@pytest.mark.parametrize("slug", ["exp-cubic-trig", "exp-quartic-hyp"])
-def test_series_arithmetic_gives_the_taylor_coefficients_of_sympy(slug):
-    s = get(slug).subs({"t": sp.Rational(3, 2)})
-    fresh = get(slug).subs({"t": sp.Rational(3, 2)})          # no cache: sympy.series
+@pytest.mark.parametrize("slug, t", [("exp-cubic-trig", sp.Rational(3, 2)), ("exp-cubic-trig", sp.pi / 2),
+                                     ("exp-quartic-hyp", sp.Rational(3, 2))], ids=["trig-3/2", "trig-pi/2", "hyp-3/2"])
+def test_series_arithmetic_gives_the_taylor_coefficients_of_sympy(slug, t):
+    s = get(slug).subs({"t": t})
+    fresh = get(slug).subs({"t": t})          # no cache: sympy.series
     assert taylor_rows(s, 6) == fresh.taylor(6)
+
+
+def test_series_arithmetic_on_exp_and_cos_together():
+    s, _, _, _ = _scheme(FAMILIES["trig-deg2"])            # cos(h/2), exp(h/2) in one mask
+    fresh, _, _, _ = _scheme(FAMILIES["trig-deg2"])
+    assert taylor_rows(s, 5) == fresh.taylor(5)
 
 
 def test_series_arithmetic_leaves_removable_singularities_to_sympy():
