@@ -183,6 +183,8 @@ class _Differences:
             prev = self.get(j - 1)
             try:
                 self.schemes[j] = None if prev is None else prev.difference(1)
+                if self.schemes[j] is not None:
+                    prefill_taylor(self.schemes[j])
             except AnalysisError:
                 self.schemes[j] = None
         return self.schemes[j]
