@@ -17,7 +17,8 @@ Theorem (what is certified; the proof is given here)
 ----------------------------------------------------
 Let ``Lambda`` be closed under conjugation and
 
-* **(H1)** ``p_n`` divides ``a^n`` for *every* ``n >= 0`` (``b^n = a^n / p_n``, ``c^n = 2^j b^n``);
+* **(H1)** ``p_n`` divides ``a^n`` for *every* ``n >= 0`` (``b^n = a^n / p_n``, ``c^n = 2^j b^n``; the
+  closure under conjugation makes ``p_n``, ``b^n`` and ``c^n`` real);
 * **(H2)** ``{S_{a^n}}`` converges;
 * **(H3)** ``{S_{c^n}}`` is C^r, ``r >= 0`` (here: Dyn–Levin 1995 — same support for every level,
   the stationary limit ``c = 2^j a/(1+z)^j`` certified C^r and ``sum_n 2^{rn} ||S_{c^n} - S_c|| < oo``).
@@ -29,16 +30,16 @@ Then the limit functions of ``{S_{a^n}}`` are C^{j+r}.
 ``prod_i (1 - e^{lambda_i h_{n+1}} z) a^n(z) F(z^2) = b^n(z) [prod_i (1 - e^{lambda_i h_n} z^2)] F(z^2)``.
 Hence ``g^n := 2^{jn} Delta_n f^n`` satisfies ``g^{n+1} = S_{c^n} g^n`` and, by (H3), converges
 uniformly on compacts to a function ``g`` in C^r.
-(2) Let ``L = prod_i (D - lambda_i)`` and ``H`` a C^{j+r} solution of ``L H = g`` (variation of
+(2) Let ``L = prod_i (D - lambda_i)`` and ``Phi`` a C^{j+r} solution of ``L Phi = g`` (variation of
 constants). For ``u`` in C^1, ``d/dt [e^{lambda (h-t)} u(x+t)] = e^{lambda (h-t)} (u' - lambda u)(x+t)``
 gives ``h^-1 (u(x+h) - e^{lambda h} u(x)) = int k_{lambda,h}(t) (u' - lambda u)(x+t) dt`` with
 ``k_{lambda,h} = h^-1 e^{lambda (h-t)}`` on ``[0, h]``; the operators commute, so by induction, for
 ``u`` in C^j, ``h^-j prod_i (E_h - e^{lambda_i h}) u(x) = int K_h(t) (L u)(x+t) dt`` with
 ``K_h = k_{lambda_1,h} * ... * k_{lambda_j,h}`` supported in ``[0, jh]``,
-``int K_h = prod_i (e^{lambda_i h} - 1)/(lambda_i h) -> 1`` and ``int |K_h| <= e^{h sum |Re lambda_i|}``.
-As ``g`` is uniformly continuous on compacts, the scaled generalized differences of ``H`` on the
+``int K_h = prod_i (e^{lambda_i h} - 1)/(lambda_i h) -> 1`` (a factor 1 for ``lambda_i = 0``) and ``int |K_h| <= e^{h sum |Re lambda_i|}``.
+As ``g`` is uniformly continuous on compacts, the scaled generalized differences of ``Phi`` on the
 level-n grid converge to ``g`` uniformly on compacts.
-(3) So ``e^n := f^n - H|_{grid n}`` converges to ``e := f - H`` (by (H2)) and
+(3) So ``e^n := f^n - Phi|_{grid n}`` converges to ``e := f - Phi`` (by (H2)) and
 ``2^{jn} Delta_n e^n -> 0``, uniformly on compacts. Fix a level ``N``; for ``n >= N`` and
 ``M = 2^{n-N}``, ``1 - e^{lambda h_N} z^M = (1 - e^{lambda h_n} z) q(z)`` with
 ``q(z) = sum_{k<M} e^{lambda k h_n} z^k``, ``||q||_1 <= M e^{|Re lambda| h_N}``: the operator
@@ -50,7 +51,7 @@ every ``x`` (continuity). For ``N >= N_0`` the numbers ``e^{lambda h_N}`` of dis
 distinct (and non-zero), so the restriction of ``ker L`` (spanned by ``x^m e^{lambda x}``) to
 ``x_0 + h_N Z`` is the whole solution space of this recurrence: ``e = u_N`` on ``h_N Z`` for a unique
 ``u_N`` in ``ker L``; ``u_{N+1}`` agrees with ``e = u_N`` on ``h_N Z``, so ``u_{N+1} = u_N =: u``.
-Thus ``e = u`` on all dyadic points, ``e`` is continuous, ``e = u`` and ``f = H + u`` is C^{j+r}. ∎
+Thus ``e = u`` on all dyadic points, ``e`` is continuous, ``e = u`` and ``f = Phi + u`` is C^{j+r}. ∎
 
 (The level-N uniqueness needs no hypothesis: it holds for all large N. (H2) is used to know that
 ``f^n`` converges; it is checked, not assumed.)

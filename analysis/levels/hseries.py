@@ -30,6 +30,13 @@ inversion ``v_k = -(1/u_0) sum_{i>=1} u_i v_{k-i}``), and ``exp``, ``cos``, ``si
 node (``sqrt``, ``acos``, a removable singularity ``sin(x h)/sin(y h)``...) is *unsupported*.
 Coefficients are exact sympy numbers or expressions, normalised as in ``taylor``
 (``factor(simplify(.))``).
+
+References
+----------
+D. E. Knuth, *The Art of Computer Programming*, Vol. 2, 3rd ed., Sec. 4.7 (manipulation of power
+series: reciprocals and exponentials by recurrences).
+R. P. Brent, H. T. Kung, *Fast algorithms for manipulating formal power series*, J. ACM 25 (1978)
+581-595.
 """
 
 from __future__ import annotations
