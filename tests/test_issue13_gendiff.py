@@ -152,6 +152,18 @@ def test_route_does_not_fire_without_an_exponential_factor_and_names_h1():
     assert all(t["failed"][0].startswith("H1") for t in tried if "generalized" in t["route"])
 
 
+def test_divisibility_at_some_levels_only_is_not_h1():
+    # the perturbation (h - 1/2) h^2 (1 - z^2)^2/(16 z^2) vanishes at level n = 1 only: there p_n | a^n,
+    # at every other level it does not; H1 needs every n, so the route must not fire
+    s, _, _, _ = _scheme(FAMILIES["trig-deg3"])
+    bump = [1, 0, -2, 0, 1]
+    p = LevelDependentScheme(tuple(c + (H - sp.Rational(1, 2)) * H ** 2 * sp.Rational(b, 16)
+                                   for c, b in zip(s.mask, bump)), s.start)
+    assert [sp.simplify(x - y) for x, y in zip(p.mask_at(1), s.mask_at(1))] == [0] * 5
+    g = gendiff_smoothness(p, 2)
+    assert g.status == "inconclusive" and g.witness["failed"] == ["H1: exponential factor p_n | a^n for every n"]
+
+
 def test_route_names_h1_when_the_level_enters_otherwise():
     # a polynomial perturbation in h: no exponential at all
     s = LevelDependentScheme.from_symbol("(1+z)**4/(8*z**2) + 2**(-n)*(1+z)**3*(1-z)/(16*z**2) + 2**(-3*n)/16")
