@@ -11,6 +11,11 @@ in order
    ``(1+z)^j`` divides every ``a^n`` identically in n): same support, ``S_e`` C^{k-j} and
    ``sum_n 2^{(k-j)n} ||S_{e^n} - S_e|| < oo`` give ``S_{e^n}`` C^{k-j}, hence ``S_{a^n}`` C^k —
    this is what makes exponential B-splines reach their true smoothness;
+2′. **Dyn–Levin on a j-th generalized divided difference scheme** ``c^n = 2^j a^n / p_n``,
+   ``p_n = prod_{i<=j} (1 + e^{lambda_i 2^-(n+1)} z)`` (exponential factors, ``Lambda`` closed under
+   conjugation, ``0`` allowed, ``p_n | a^n`` proved exactly for every n; :mod:`.gendiff`, where the
+   theorem is proved): ``{S_(a^n)}`` convergent and ``S_{c^n}`` C^{k-j} give C^k — exponential
+   B-splines *without* the frequency 0 (``(1+z)`` does not divide ``a^n``);
 3. **asymptotic similarity + approximate sum rules** (Conti–Dyn–Manni–Mazure 2015 for k = 0;
    Charina–Conti–Guglielmi–Protasov 2017 for C^k): the masks have one common support, converge to
    ``a`` (asymptotic similarity), satisfy approximate sum rules of order ``k+1`` with
@@ -44,7 +49,10 @@ Examples
 
 Algorithm
 ---------
-Routes 1–2: :func:`analysis.levels.series.smoothness` (arb partial sums + Cauchy Taylor tails).
+Routes 1–2: :func:`analysis.levels.series.smoothness` (arb partial sums + Cauchy Taylor tails); route
+2′: :func:`analysis.levels.gendiff.gendiff_smoothness`. The exact Taylor coefficients in ``h`` are
+computed once per scheme by series arithmetic (:func:`analysis.levels.hseries.prefill_taylor`) where
+the mask allows it (``sympy.series`` otherwise).
 Route 3: ``a^n(1) - 2`` and ``D^j a^n(-1)`` are fixed linear combinations ``sum_i w_i g_i(h)`` of
 the coefficient differences ``g_i = a^n_i - a_i`` (``w_i`` exact, ``h = 2^-n``); their exact
 Taylor coefficients in h vanish below ``h^{k+1}`` (exact zero test), and the combined rigorous
@@ -55,6 +63,8 @@ References
 ----------
 N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*,
 J. Math. Anal. Appl. 193 (1995) 594-621.
+N. Dyn, D. Levin, A. Luzzatto, *Exponentials reproducing subdivision schemes*, Found. Comput.
+Math. 3 (2003) 187-206 (generalized differences: route 2′).
 C. Conti, N. Dyn, C. Manni, M.-L. Mazure, *Convergence of univariate non-stationary subdivision
 schemes via asymptotic similarity*, Comput. Aided Geom. Des. 37 (2015) 1-8.
 M. Charina, C. Conti, N. Guglielmi, V. Protasov, *Regularity of non-stationary subdivision: a
@@ -70,6 +80,8 @@ import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
 from .expbspline import not_ck
+from .gendiff import GeneralizedDifferences, gendiff_smoothness
+from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme, TaylorModel, taylor_models
 from .series import same_support, smoothness
 from ..jsonable import fmt_upper
@@ -171,6 +183,8 @@ class _Differences:
             prev = self.get(j - 1)
             try:
                 self.schemes[j] = None if prev is None else prev.difference(1)
+                if self.schemes[j] is not None:
+                    prefill_taylor(self.schemes[j])
             except AnalysisError:
                 self.schemes[j] = None
         return self.schemes[j]
@@ -191,7 +205,8 @@ def _ok(r: Result) -> bool:
     return r.is_certified and r.value is True
 
 
-def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: int, diffs: _Differences) -> dict:
+def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: int, diffs: _Differences,
+               gd: GeneralizedDifferences | None = None, converges: Result | None = None) -> dict:
     tried = []
     # all (1+z)^k divide a^n: the k-th divided difference route first (weight 2^0: the likeliest to
     # converge), then the direct series, then the intermediate differences
@@ -213,6 +228,18 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
                                 f"+ the divided-difference argument: S_(a^n) C^{k}"),
                     "hypotheses": r.witness["hypotheses"]}
         tried.append({"route": route, "failed": r.witness["failed"]})
+    if gd is not None and k > 0:
+        g = gendiff_smoothness(s, k, converges=converges, N=N, cache=gd)
+        if _ok(g):
+            w = g.witness
+            names = ", ".join(sp.sstr(x) for x in w["subset"])
+            return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED,
+                    "route": (f"Dyn-Levin on the {_ordinal(w['j'])} generalized divided difference scheme "
+                              f"(exponential factors {names})"),
+                    "theorem": w["theorem"], "hypotheses": w["hypotheses"], "j": w["j"], "r": w["r"],
+                    "Lambda": [sp.sstr(x) for x in w["Lambda"]]}
+        tried.append({"route": "Dyn-Levin on a generalized divided difference scheme (exponential factors)",
+                      "failed": g.witness["failed"]})
     route = ("Conti-Dyn-Manni-Mazure 2015 (asymptotic similarity)" if k == 0 else
              "Charina-Conti-Guglielmi-Protasov 2017 (asymptotic similarity + approximate sum rules)")
     asr = approximate_sum_rules(s, k, N=N)
@@ -245,6 +272,7 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         s = s.subs(values)
     check_real(s)
     a = s.limit()
+    prefill_taylor(s)          # the same exact Taylor coefficients as sympy.series, faster (or nothing)
     if all(H not in c.free_symbols for c in s.mask):
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
     a_smooth: dict[int, Result] = {}
@@ -261,10 +289,17 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         break
     sup = same_support(s, None, N=N)
     diffs = _Differences(s)
+    gd = GeneralizedDifferences(s)
     verdicts = []
     best = -1
     for k in range(k_lim + 1):
-        v = _verdict_k(s, a_smooth, k, sup, N, diffs)
+        conv = None
+        if verdicts:
+            v0 = verdicts[0]
+            conv = Result(value=True if v0["status"] == CERTIFIED else None, status=v0["status"],
+                          witness={"statement": "{S_(a^n)} converges (C^0)", "route": v0["route"]},
+                          provenance={"method": "the C^0 verdict above"})
+        v = _verdict_k(s, a_smooth, k, sup, N, diffs, gd, conv)
         verdicts.append(v)
         if v["status"] == CERTIFIED and best == k - 1:
             best = k
@@ -297,4 +332,5 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
                            "upper_bound": upper, "not_C^k": None if cert is None else cert.witness["k"],
                            "exact": cert is not None and best == cert.witness["k"] - 1},
                   provenance={"scheme": s.slug, "N": N,
-                              "method": "Dyn-Levin 1995 (direct, divided differences); CDMM 2015 / CCGP 2017"})
+                              "method": ("Dyn-Levin 1995 (direct, divided differences, generalized divided differences); "
+                                         "CDMM 2015 / CCGP 2017")})

@@ -1,0 +1,157 @@
+"""Exact truncated power series in ``h`` of mask coefficients, without ``sympy.series``.
+
+``sympy.series`` on a rational function of several ``cos(b h)``, ``cosh(b h)``, ``exp(b h)`` (the
+masks of exponential B-spline schemes and of their generalized difference schemes,
+:mod:`.gendiff`) takes seconds per coefficient; the same exact coefficients come from truncated
+power-series arithmetic in a fraction of that. :func:`taylor_rows` computes
+``g_{k,j}``, ``j < J``, of ``g_k(h) = a^n_k - a_k`` exactly — what
+:meth:`~analysis.levels.level_dependent.LevelDependentScheme.taylor` returns — and
+:func:`prefill_taylor` stores them in the scheme's Taylor cache, so that every later request
+``taylor(J') , J' <= J`` (weighted series, Taylor models, approximate sum rules) is served from it.
+Expressions outside the supported class return ``None`` and the cache is left alone (then
+``sympy.series`` is used as before).
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.levels.level_dependent import H
+>>> _series(sp.cos(H / 2) / (1 + sp.exp(H)), 4)
+[1/2, -1/4, -1/16, 5/96]
+>>> sp.series(sp.cos(H / 2) / (1 + sp.exp(H)), H, 0, 4)
+1/2 - h/4 - h**2/16 + 5*h**3/96 + O(h**4)
+
+Algorithm
+---------
+Recursive evaluation on the expression tree with series truncated at ``h^J``: sums and products
+(Cauchy product), integer powers (a negative power needs a non-zero constant term: series
+inversion ``v_k = -(1/u_0) sum_{i>=1} u_i v_{k-i}``), and ``exp``, ``cos``, ``sin``, ``cosh``,
+``sinh`` of a series ``u = u_0 + w`` by the addition theorems and the recurrences
+``E' = w' E``, ``C' = -w' S``, ``S' = w' C`` (exact rational coefficients ``1/k``). Any other
+node (``sqrt``, ``acos``, a removable singularity ``sin(x h)/sin(y h)``...) is *unsupported*.
+Coefficients are exact sympy numbers or expressions, normalised as in ``taylor``
+(``factor(simplify(.))``).
+
+References
+----------
+D. E. Knuth, *The Art of Computer Programming*, Vol. 2, 3rd ed., Sec. 4.7 (manipulation of power
+series: reciprocals and exponentials by recurrences).
+R. P. Brent, H. T. Kung, *Fast algorithms for manipulating formal power series*, J. ACM 25 (1978)
+581-595.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .level_dependent import H, LevelDependentScheme
+
+__all__ = ["taylor_rows", "prefill_taylor"]
+
+
+class _Unsupported(Exception):
+    pass
+
+
+def _mul(a, b, J):
+    return [sp.expand(sum((a[i] * b[k - i] for i in range(k + 1)), sp.Integer(0))) for k in range(J)]
+
+
+def _inv(a, J):
+    a0 = a[0]
+    if a0 == 0 or sp.simplify(a0) == 0:
+        raise _Unsupported("division by a series without constant term")
+    v = [1 / a0]
+    for k in range(1, J):
+        v.append(sp.expand(-sum((a[i] * v[k - i] for i in range(1, k + 1)), sp.Integer(0)) / a0))
+    return v
+
+
+def _exp0(w, J):
+    """``exp(w)`` for ``w(0) = 0``."""
+    v = [sp.Integer(1)]
+    for k in range(1, J):
+        v.append(sp.expand(sum((i * w[i] * v[k - i] for i in range(1, k + 1)), sp.Integer(0)) / k))
+    return v
+
+
+def _cos_sin0(w, J, sign):
+    """``(cos w, sin w)`` (``sign = -1``) or ``(cosh w, sinh w)`` (``sign = +1``) for ``w(0) = 0``."""
+    c, s = [sp.Integer(1)], [sp.Integer(0)]
+    for k in range(1, J):
+        ck = sign * sum((i * w[i] * s[k - i] for i in range(1, k + 1)), sp.Integer(0)) / k
+        sk = sum((i * w[i] * c[k - i] for i in range(1, k + 1)), sp.Integer(0)) / k
+        c.append(sp.expand(ck))
+        s.append(sp.expand(sk))
+    return c, s
+
+
+def _series(e: sp.Expr, J: int) -> list:
+    """The first ``J`` Taylor coefficients of ``e`` in ``h`` at 0 (exact), or :class:`_Unsupported`."""
+    if H not in e.free_symbols:
+        return [e] + [sp.Integer(0)] * (J - 1)
+    if e == H:
+        return [sp.Integer(0), sp.Integer(1)] + [sp.Integer(0)] * (J - 2)
+    if e.is_Add:
+        out = [sp.Integer(0)] * J
+        for a in e.args:
+            s = _series(a, J)
+            out = [x + y for x, y in zip(out, s)]
+        return [sp.expand(x) for x in out]
+    if e.is_Mul:
+        out = None
+        for a in e.args:
+            s = _series(a, J)
+            out = s if out is None else _mul(out, s, J)
+        return out
+    if e.is_Pow:
+        base, ex = e.args
+        if H in ex.free_symbols or not ex.is_Integer:
+            raise _Unsupported(f"power {e}")
+        b = _series(base, J)
+        if ex < 0:
+            b, ex = _inv(b, J), -ex
+        out = [sp.Integer(1)] + [sp.Integer(0)] * (J - 1)
+        for _ in range(int(ex)):
+            out = _mul(out, b, J)
+        return out
+    if isinstance(e, (sp.exp, sp.cos, sp.sin, sp.cosh, sp.sinh)):
+        u = _series(e.args[0], J)
+        u0, w = u[0], [sp.Integer(0)] + u[1:]
+        if isinstance(e, sp.exp):
+            return [sp.expand(sp.exp(u0) * x) for x in _exp0(w, J)]
+        trig = isinstance(e, (sp.cos, sp.sin))
+        c, s = _cos_sin0(w, J, -1 if trig else 1)
+        C0, S0 = (sp.cos(u0), sp.sin(u0)) if trig else (sp.cosh(u0), sp.sinh(u0))
+        if isinstance(e, (sp.cos, sp.cosh)):       # cos(u0 + w) = cos u0 cos w - sin u0 sin w (cosh: +)
+            return [sp.expand(C0 * x + (-1 if trig else 1) * S0 * y) for x, y in zip(c, s)]
+        return [sp.expand(S0 * x + C0 * y) for x, y in zip(c, s)]
+    raise _Unsupported(f"{type(e).__name__}")
+
+
+def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
+    """``taylor(J)`` of the scheme computed by truncated series arithmetic, or ``None`` (unsupported)."""
+    rows = []
+    try:
+        for c, c0 in zip(s.mask, s._limits):
+            if H not in c.free_symbols:
+                rows.append(tuple(sp.Integer(0) for _ in range(J)))
+                continue
+            ser = _series(sp.sympify(c), J)
+            if sp.simplify(ser[0] - c0) != 0:
+                return None
+            rows.append((sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:]))
+    except (_Unsupported, ZeroDivisionError, TypeError, ValueError):
+        return None
+    return tuple(rows)
+
+
+def prefill_taylor(s: LevelDependentScheme, J: int = 12) -> bool:
+    """Store ``taylor(J)`` in the scheme's cache (see the module); False when unsupported."""
+    cache = s.__dict__.setdefault("_taylor_cache", {})
+    if any(Jc >= J for Jc in cache):
+        return True
+    rows = taylor_rows(s, J)
+    if rows is None:
+        return False
+    cache[J] = rows
+    return True
