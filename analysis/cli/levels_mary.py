@@ -31,9 +31,16 @@ def level_scheme_mary_from_args(args, m: int):
     from ..levels.mary import level_scheme_mary
     from .level_input import _int, _items
 
-    if getattr(args, "scheme", None):
-        raise AnalysisError(f"level-dependent {m}-ary schemes are given inline: --symbol or --mask using the level n")
     sym, mask = getattr(args, "symbol", None), getattr(args, "mask", None)
+    if getattr(args, "scheme", None):                   # the level-dependent m-ary catalogue (schemes.level_mary)
+        from schemes.level_mary import get_mary
+
+        if sym is not None or mask is not None or getattr(args, "where", None):
+            raise AnalysisError("give --scheme NAME or --symbol/--mask, not both")
+        s = get_mary(args.scheme)
+        if s.arity != m:
+            raise AnalysisError(f"scheme {args.scheme!r} has arity {s.arity}; drop --arity or give --arity {s.arity}")
+        return s
     if (sym is None) == (mask is None):
         raise AnalysisError("give exactly one of --symbol EXPR, --mask LIST (using the level n)")
     where = getattr(args, "where", None) or []

@@ -63,12 +63,13 @@ from __future__ import annotations
 
 from typing import Any, Mapping, Sequence
 
+import flint
 import sympy as sp
 
 from ..algebra.mary import check_arity
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
-from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, distance, resolve_where
+from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, ball_to_interval, distance, resolve_where
 from .bounds import _exact_zero
 from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes
 
@@ -319,7 +320,9 @@ def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None
                                  "statement": f"{m}^(k n)||S_(a^n) - S_a|| <= K r^n for n >= {N}"}})
         return Result(lower=o["lower"], upper=o["upper"], status=CERTIFIED, witness=witness, provenance=prov)
     if o["verdict"] == "divergent":
-        witness.update({"verdict": "divergent", "term_lower_bound": o["term_lower_bound"],
+        # the m-ary results carry this bound rounded at the caller's precision (as they always have)
+        witness.update({"verdict": "divergent",
+                        "term_lower_bound": ball_to_interval(flint.arb(o["term_lower_ball"].lower()))[0],
                         "statement": f"{m}^(k n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} (k = {k} >= q = {q})"})
         return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
     witness.update({"verdict": "unknown", "reason": "the leading constant is not certified nonzero"})

@@ -241,7 +241,7 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
         c = best.lower() if best > 0 else flint.arb(0)
     if c > 0:
         return {"verdict": "divergent", "N": N, "term_lower_bound": ball_to_interval(flint.arb(c))[0],
-                "rho": ball_to_interval(rho)[1]}
+                "rho": ball_to_interval(rho)[1], "term_lower_ball": best}
     return {"verdict": "unknown", "N": N}
 
 
