@@ -544,6 +544,34 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     return None
 
 
+def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int):
+    """``(target, m - difference, values, limit)``: the scheme Dyn–Levin's hypotheses are checked on (the
+    ``difference``-th divided difference scheme), the order left, the parsed values and the target's limit
+    with the exact values substituted (shared by :func:`smoothness` and
+    :func:`analysis.levels.region.smoothness_on_region`)."""
+    _check_difference(difference)
+    target = s.difference(difference) if difference else s
+    mm = m - difference
+    if mm < 0:
+        raise AnalysisError("difference order larger than m")
+    env = _parse_values(target, values)
+    a = target.limit()
+    point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
+    names_a = {p.name for p in a.params}
+    fix = {k: v for k, v in point.items() if k in names_a}
+    return target, mm, env, (a.subs(fix) if fix else a)
+
+
+def _dyn_levin_hypotheses(sup: Result, lim: Result, ser: Result, mm: int) -> tuple[dict, bool, list[str]]:
+    """Dyn–Levin's three hypotheses by name, whether all are certified, and the names of those that are not."""
+    hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
+    ok = bool(sup.is_certified and sup.value is True and lim.is_certified and lim.value is True
+              and ser.is_certified and ser.witness.get("verdict") == "convergent")
+    failed = [name for name, r in hyps.items()
+              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
+    return hyps, ok, failed
+
+
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,
                difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0) -> Result:
     """C^m of ``{S_{a^n}}`` by Dyn–Levin 1995 (Theorem 1.1 of seed 003), hypotheses checked.
@@ -556,18 +584,8 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     ``witness["hypotheses"]`` holds a Result for each hypothesis; the verdict is certified only
     when all are.
     """
-    _check_difference(difference)
-    target = s.difference(difference) if difference else s
-    mm = m - difference
-    if mm < 0:
-        raise AnalysisError("difference order larger than m")
-    env = _parse_values(target, values)
-    a = target.limit()
-    point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
+    target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
-    names_a = {p.name for p in a.params}
-    fix = {k: v for k, v in point.items() if k in names_a}
-    a_sub = a.subs(fix) if fix else a
     box = None
     if a_sub.params:
         names = [p.name for p in a_sub.params]
@@ -578,13 +596,9 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box)
     ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth)
     sup = same_support(target, env, N=N, depth=depth)
-    hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
-    ok = (sup.is_certified and sup.value and lim.is_certified and lim.value is True
-          and ser.is_certified and ser.witness.get("verdict") == "convergent")
+    hyps, ok, why = _dyn_levin_hypotheses(sup, lim, ser, mm)
     route = ("direct" if not difference else
              f"{difference}-th divided difference scheme e^n = (2/(1+z))^{difference} a^n")
-    why = [name for name, r in hyps.items()
-           if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
     return Result(value=ok or None, status=CERTIFIED if ok else INCONCLUSIVE,
                   witness={"claim": f"C^{m}", "route": route, "hypotheses": hyps,
                            "theorem": "Dyn-Levin 1995 (seed 003 Theorem 1.1): same support, "
