@@ -98,10 +98,14 @@ def names() -> list[str]:
 
 def get(slug: str) -> LevelDependentScheme:
     """The level-dependent scheme named ``slug`` (one-line AnalysisError when unknown)."""
-    reg = _registry()
+    return lookup(_registry(), slug, "level-dependent scheme")
+
+
+def lookup(reg: dict, slug: str, what: str):
+    """``reg[slug]`` (case and spaces ignored), or a one-line AnalysisError naming ``what`` and the close names."""
     key = str(slug).strip().lower()
     if key in reg:
         return reg[key]
     close = difflib.get_close_matches(key, list(reg), n=4, cutoff=0.5)
     hint = f"; did you mean: {', '.join(close)}?" if close else f"; known: {', '.join(reg)}"
-    raise AnalysisError(f"unknown level-dependent scheme {slug!r}{hint}")
+    raise AnalysisError(f"unknown {what} {slug!r}{hint}")

@@ -69,8 +69,9 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
 
 def _catalogue_arity(name: str, level: bool = False) -> int:
     """The arity of a catalogue entry; the level-dependent catalogue (``schemes.level_dependent``,
-    issue 13) is binary. An unknown name keeps the stationary catalogue's error, or the level-dependent
-    catalogue's (``level=True``: a command that takes level-dependent schemes)."""
+    issue 13) is binary, the level-dependent m-ary entries (``schemes.level_mary``) carry their arity.
+    An unknown name keeps the stationary catalogue's error, or the level-dependent catalogue's
+    (``level=True``: a command that takes level-dependent schemes)."""
     import schemes
 
     try:
@@ -78,6 +79,10 @@ def _catalogue_arity(name: str, level: bool = False) -> int:
     except AnalysisError as stationary_error:
         from schemes import level_dependent
 
+        from schemes.level_mary import MARY_ENTRIES
+
+        if str(name).strip().lower() in MARY_ENTRIES:
+            return MARY_ENTRIES[str(name).strip().lower()].arity
         try:
             level_dependent.get(name)
         except AnalysisError:

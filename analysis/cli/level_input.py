@@ -42,8 +42,9 @@ def uses_level(args) -> bool:
     name = getattr(args, "scheme", None)
     if name:
         from schemes.level_dependent import names
+        from schemes.level_mary import MARY_ENTRIES
 
-        return str(name).strip().lower() in names()
+        return str(name).strip().lower() in names() or str(name).strip().lower() in MARY_ENTRIES
     return False
 
 

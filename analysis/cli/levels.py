@@ -25,6 +25,8 @@ from __future__ import annotations
 import sympy as sp
 
 from .common import _emit, _parse_params, check_writable
+from .level_args import k_max_arg, param_box_values, parse_boxes, stationary_options_refused
+from .level_text import limit_line, series_line, verdict_lines
 from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient
@@ -56,29 +58,9 @@ def _add_inline(s) -> None:
     s.add_argument("--where", action="append", metavar="NAME=EXPR", help="helper definition (may use n), repeatable")
 
 
-def _box(items):
-    out = {}
-    for item in items or []:
-        if "=" not in item or "," not in item:
-            raise AnalysisError(f"malformed --box {item!r}: use NAME=LOW,HIGH, e.g. alpha=1/10,pi/3")
-        name, rng = (x.strip() for x in item.split("=", 1))
-        lo, hi = (parse_coefficient(x.strip()) for x in rng.split(",", 1))
-        if lo.free_symbols or hi.free_symbols:
-            raise AnalysisError(f"the box for {name} must have numeric ends")
-        if name in out:
-            raise AnalysisError(f"--box {name} is given twice: give it once")
-        out[name] = (lo, hi)
-    return out
-
-
-def _values(args):
-    v = _parse_params(args.param)
-    box = _box(args.box)
-    both = sorted(set(v) & set(box))
-    if both:
-        raise AnalysisError(f"{both[0]} is given both by --param and by --box: give one of them")
-    v.update(box)
-    return v
+#: the shared argument readers (:mod:`analysis.cli.level_args`) under their old names here
+_box = parse_boxes
+_values = param_box_values
 
 
 def _ints(text, what):
@@ -125,16 +107,11 @@ def cmd_series(args) -> None:
     for m in _ints(args.m, "--m"):
         r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces, depth=args.depth)
         rows.append({"m": m, **r.to_json()})
-        v = r.witness.get("verdict")
-        if v == "convergent":
-            lines.append(f"m = {m}: convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, {fmt_upper(r.upper, 15, 'g')}] "
-                         f"({r.status}; tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')})")
-        elif v == "divergent":
-            lines.append(f"m = {m}: divergent ({r.status}): terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')} "
-                         f"for n >= {r.witness['tail']['N'] if 'tail' in r.witness else args.N}; "
-                         f"leading constant {r.witness['leading_constant']}")
-        else:
-            lines.append(f"m = {m}: {r.status}")
+        lines.append(series_line(f"m = {m}", r, lambda v, r=r: (
+            f"tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')}" if v == "convergent" else
+            f": terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')} "
+            f"for n >= {r.witness['tail']['N'] if 'tail' in r.witness else args.N}; "
+            f"leading constant {r.witness['leading_constant']}" if v == "divergent" else "")))
     _emit(args, {"scheme": s.slug, "leading": lead.to_json(), "series": rows}, "\n".join(lines))
 
 
@@ -277,44 +254,13 @@ def holder_level_dependent(args, s) -> None:
     """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status)."""
     from ..levels.ck import level_smoothness
 
-    if getattr(args, "approx", False) or getattr(args, "sobolev", False):
-        raise AnalysisError("--approx and --sobolev are for stationary schemes; this scheme depends on the level n")
-    k_max = None
-    if args.C is not None:
-        try:
-            k_max = int(args.C)
-        except ValueError:
-            raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
-        if k_max < 0:
-            raise AnalysisError("--C must be >= 0")
+    stationary_options_refused(args)
+    k_max = k_max_arg(args)
     r = level_smoothness(s, k_max=k_max)
     lim = r.witness["limit"]
     lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n)",
              f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(sp.Symbol('h', positive=True), 2 ** (-sp.Symbol('n')))))}",
-             f"  limit a(z) = {lim['symbol'].pretty()}: C^{lim['C^k_certified_up_to']} certified"
-             + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
-    for v in r.witness["verdicts"]:
-        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
-        if v["status"] == "certified" and v.get("holds") is False:
-            fr = ", ".join(sp.sstr(x) for x in v["frequencies"])
-            lines.append(f"  {name}: no [certified] — {v['route']}, frequencies {fr}: it generates the "
-                         f"exponential B-spline B_Lambda, C^{v['k'] - 1} and not C^{v['k']} (pieces in "
-                         "ker prod(D - lambda_i) joined at integer knots; Unser-Blu 2005, Conti-Romani 2010)")
-        elif v["status"] == "certified":
-            lines.append(f"  {name}: yes [certified] — {v['route']}")
-        elif "reason" in v:
-            lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
-        else:
-            why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])}" for t in v["tried"])
-            lines.append(f"  {name}: undecided [inconclusive] — {why}")
-    best = r.value
-    if r.witness.get("exact"):
-        lines.append(f"  => C^{best} exactly (certified: C^{best} and not C^{best + 1})")
-    elif best >= 0 and r.witness.get("not_C^k") is not None:
-        lines.append(f"  => C^{best} certified, not C^{r.witness['not_C^k']} certified")
-    else:
-        lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for this level-dependent scheme)"
-                     if best >= 0 else "  => convergence not certified")
+             limit_line(lim)] + verdict_lines(r)
     _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
 
 

@@ -20,9 +20,10 @@ from __future__ import annotations
 import sympy as sp
 
 from ..jsonable import fmt_lower, fmt_upper
-from ..algebra.symbol import parse_coefficient
 from ..result import AnalysisError
-from .common import _emit, _parse_params
+from .common import _emit
+from .level_args import k_max_arg, param_box_values, stationary_options_refused
+from .level_text import series_line
 
 
 def level_scheme_mary_from_args(args, m: int):
@@ -30,9 +31,16 @@ def level_scheme_mary_from_args(args, m: int):
     from ..levels.mary import level_scheme_mary
     from .level_input import _int, _items
 
-    if getattr(args, "scheme", None):
-        raise AnalysisError(f"level-dependent {m}-ary schemes are given inline: --symbol or --mask using the level n")
     sym, mask = getattr(args, "symbol", None), getattr(args, "mask", None)
+    if getattr(args, "scheme", None):                   # the level-dependent m-ary catalogue (schemes.level_mary)
+        from schemes.level_mary import get_mary
+
+        if sym is not None or mask is not None or getattr(args, "where", None):
+            raise AnalysisError("give --scheme NAME or --symbol/--mask, not both")
+        s = get_mary(args.scheme)
+        if s.arity != m:
+            raise AnalysisError(f"scheme {args.scheme!r} has arity {s.arity}; drop --arity or give --arity {s.arity}")
+        return s
     if (sym is None) == (mask is None):
         raise AnalysisError("give exactly one of --symbol EXPR, --mask LIST (using the level n)")
     where = getattr(args, "where", None) or []
@@ -49,17 +57,8 @@ def level_scheme_mary_from_args(args, m: int):
 
 
 def _values(args, s) -> dict:
-    vals = dict(_parse_params(getattr(args, "param", None)))
-    for item in getattr(args, "box", None) or []:
-        if "=" not in item or "," not in item:
-            raise AnalysisError(f"malformed --box {item!r}: use NAME=LOW,HIGH, e.g. theta=1/2,2")
-        name, rng = (x.strip() for x in item.split("=", 1))
-        lo, hi = (parse_coefficient(x.strip()) for x in rng.split(",", 1))
-        if lo.free_symbols or hi.free_symbols:
-            raise AnalysisError(f"the box for {name} must have numeric ends")
-        if name in vals:
-            raise AnalysisError(f"{name} is given twice (--param/--box): give it once")
-        vals[name] = (lo, hi)
+    """``--param`` and ``--box`` (:func:`analysis.cli.level_args.param_box_values`); every parameter needs one."""
+    vals = param_box_values(args, "theta=1/2,2")
     missing = [p for p in s.scheme.param_names if p not in vals]
     if missing:
         raise AnalysisError(f"undefined name(s) {', '.join(missing)}: define them with --where NAME=EXPR "
@@ -97,17 +96,11 @@ def cmd_series(args, m: int) -> None:
             if r.witness.get("sub_boxes", 1) > 1 or pieces > 1:
                 lines.append(f"  ({r.witness['sub_boxes']} sub-boxes: --pieces {pieces}, --depth {depth})")
         rows.append({"m": k, **r.to_json()})
-        v = r.witness.get("verdict")
-        if v == "convergent":
-            lines.append(f"weight {m}^({k}n): convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, "
-                         f"{fmt_upper(r.upper, 15, 'g')}] ({r.status}; tail <= "
-                         f"{fmt_upper(r.witness['tail']['bound'], 3, 'g')}, ratio {r.witness['tail']['ratio']})")
-        elif v == "divergent":
-            lines.append(f"weight {m}^({k}n): divergent ({r.status}): terms >= "
-                         f"{fmt_lower(r.witness['term_lower_bound'], 6, 'g')}; leading constant "
-                         f"{sp.sstr(r.witness['leading_constant'])}")
-        else:
-            lines.append(f"weight {m}^({k}n): {r.status} — {r.witness.get('reason')}")
+        lines.append(series_line(f"weight {m}^({k}n)", r, lambda v, r=r: (
+            f"tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')}, ratio {r.witness['tail']['ratio']}"
+            if v == "convergent" else
+            f": terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')}; leading constant "
+            f"{sp.sstr(r.witness['leading_constant'])}" if v == "divergent" else f" — {r.witness.get('reason')}")))
     _emit(args, {"scheme": s.slug, "arity": m, "difference": d, "series": rows}, "\n".join(lines))
 
 
@@ -115,18 +108,10 @@ def cmd_holder(args, m: int) -> None:
     """``subdiv holder`` on a level-dependent m-ary scheme: C^k for each k, with the theorem and its hypotheses."""
     from ..levels.mary import level_smoothness_mary
 
-    if getattr(args, "approx", False) or getattr(args, "sobolev", False):
-        raise AnalysisError("--approx and --sobolev are for stationary schemes; this scheme depends on the level n")
+    stationary_options_refused(args)
     s = level_scheme_mary_from_args(args, m)
     vals = _values(args, s)
-    k_max = None
-    if args.C is not None:
-        try:
-            k_max = int(args.C)
-        except ValueError:
-            raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
-        if k_max < 0:
-            raise AnalysisError("--C must be >= 0")
+    k_max = k_max_arg(args)
     r = level_smoothness_mary(s, vals, k_max=k_max)
     lines = [f"scheme: {s.slug} (level-dependent, arity {m}, h = {m}^-n)",
              f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_in_n().subs({q: vals[q.name] for q in s.params if not isinstance(vals[q.name], tuple)})))}",

@@ -5,9 +5,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from .common import _emit
+from .level_args import k_max_arg, stationary_options_refused
+from .level_text import limit_line, series_line, verdict_lines
 
 
 def rational_scheme_from_args(args, params):
@@ -50,32 +51,9 @@ def _header(s) -> list[str]:
 def holder_rational(args, s) -> None:
     from ..levels.rational_level import level_smoothness_rational
 
-    if getattr(args, "approx", False) or getattr(args, "sobolev", False):
-        raise AnalysisError("--approx and --sobolev are for stationary schemes; this scheme depends on the level n")
-    k_max = None
-    if args.C is not None:
-        try:
-            k_max = int(args.C)
-        except ValueError:
-            raise AnalysisError(f"--C must be an integer, not {args.C!r}") from None
-        if k_max < 0:
-            raise AnalysisError("--C must be >= 0")
-    r = level_smoothness_rational(s, k_max=k_max)
-    lim = r.witness["limit"]
-    lines = _header(s) + [f"  limit a(z) = {lim['symbol'].pretty()}: C^{lim['C^k_certified_up_to']} certified"
-                          + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else "")]
-    for v in r.witness["verdicts"]:
-        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
-        if v["status"] == "certified":
-            lines.append(f"  {name}: yes [certified] — {v['route']}")
-        elif "reason" in v:
-            lines.append(f"  {name}: undecided [inconclusive] — {v['reason']}")
-        else:
-            why = "; ".join(f"{t['route']}: failed {', '.join(t['failed'])} ({t['why']})" for t in v["tried"])
-            lines.append(f"  {name}: undecided [inconclusive] — {why}")
-    best = r.value
-    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for this level-dependent scheme)"
-                 if best >= 0 else "  => convergence not certified")
+    stationary_options_refused(args)
+    r = level_smoothness_rational(s, k_max=k_max_arg(args))
+    lines = _header(s) + [limit_line(r.witness["limit"])] + verdict_lines(r, why=True)
     _emit(args, {"scheme": s.slug, "level_dependent": True, "level": "rational in n",
                  "smoothness": r.to_json()}, "\n".join(lines))
 
@@ -90,12 +68,7 @@ def series_rational(args, s, ms) -> None:
     for m in ms:
         r = weighted_series_rational(s, m, N_sum=args.N)
         rows.append({"m": m, **r.to_json()})
-        v = r.witness["verdict"]
-        if v == "convergent":
-            lines.append(f"m = {m}: convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, {fmt_upper(r.upper, 15, 'g')}] "
-                         f"({r.status}; {r.witness['tail']}; slowest |a^n_k - a_k| ~ {r.witness['decay']})")
-        elif v == "divergent":
-            lines.append(f"m = {m}: divergent ({r.status}): {r.witness['reason']}")
-        else:
-            lines.append(f"m = {m}: {r.status} — {r.witness.get('reason')}")
+        lines.append(series_line(f"m = {m}", r, lambda v, r=r: (
+            f"{r.witness['tail']}; slowest |a^n_k - a_k| ~ {r.witness['decay']}" if v == "convergent" else
+            f": {r.witness['reason']}" if v == "divergent" else f" — {r.witness.get('reason')}")))
     _emit(args, {"scheme": s.slug, "level": "rational in n", "series": rows}, "\n".join(lines))

@@ -61,6 +61,7 @@ IEEE Trans. Comput. 66 (2017) 1281-1292.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from functools import cached_property
 from typing import Any, Mapping, Sequence
@@ -449,10 +450,11 @@ class LevelDependentScheme:
 # leading asymptotics of ||S_{a^n} - S_a||
 # --------------------------------------------------------------------------------------------
 
-def _residue_groups(s: LevelDependentScheme) -> dict[int, list[int]]:
-    groups: dict[int, list[int]] = {0: [], 1: []}
+def _residue_groups(s: LevelDependentScheme, arity: int = 2) -> dict[int, list[int]]:
+    """The mask indices ``k`` by the residue class ``(start + k) mod arity`` (the rows of ``S_{a^n}``)."""
+    groups: dict[int, list[int]] = {r: [] for r in range(arity)}
     for k in range(len(s.mask)):
-        groups[(s.start + k) % 2].append(k)
+        groups[(s.start + k) % arity].append(k)
     return groups
 
 
@@ -481,13 +483,27 @@ def leading_asymptotics(s: LevelDependentScheme) -> Result:
 # ||S_{a^n} - S_a|| at a level
 # --------------------------------------------------------------------------------------------
 
-def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64) -> int:
-    """Working precision for level n: ``target + q n + 32`` bits (q = the leading order)."""
+def level_precision(q: int, n: int, arity: int = 2, target_bits: int = 64) -> int:
+    """Working precision for level n of an arity-m scheme with leading order q: ``target + q n log2(m) + 32``.
+
+    >>> level_precision(2, 10), level_precision(2, 10, 3)
+    (116, 127)
+    """
+    return int(target_bits + q * n + 32) if arity == 2 else int(target_bits + q * n * math.log2(arity) + 32)
+
+
+def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64, *, arity: int = 2) -> int:
+    """Working precision for level n: ``target + q n log2(m) + 32`` bits (q = the leading order, m the arity)."""
     try:
         q = s.order()
     except AnalysisError:
         q = 0
-    return int(target_bits + q * n + 32)
+    return level_precision(q, n, arity, target_bits)
+
+
+def level_h(n: int, arity: int = 2):
+    """``h_n = m^-n`` as an Arb ball (exact for m = 2; at the working precision otherwise)."""
+    return flint.arb(2) ** (-int(n)) if arity == 2 else flint.arb(1) / flint.arb(arity) ** int(n)
 
 
 def _env_values(s: LevelDependentScheme, values: Mapping[str, Any] | None) -> dict:
@@ -502,13 +518,14 @@ def _env_values(s: LevelDependentScheme, values: Mapping[str, Any] | None) -> di
     return out
 
 
-def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, prec: int | None = None):
-    """Arb enclosures of ``a^n_k - a_k`` for every k (exact h = 2^-n, params exact or boxes)."""
+def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, prec: int | None = None,
+                            arity: int = 2):
+    """Arb enclosures of ``a^n_k - a_k`` for every k (``h = m^-n``, m = ``arity``; params exact or boxes)."""
     env = _env_values(s, values)
-    prec = prec or default_precision(s, n)
+    prec = prec or default_precision(s, n, arity=arity)
     with workprec(prec):
         envb = {k: _to_ball(v, False) for k, v in env.items()}
-        envb["h"] = flint.arb(2) ** (-int(n))
+        envb["h"] = level_h(n, arity)
         out = []
         for c, c0 in zip(s.mask, s._limits):
             # the entire form (sinc) avoids the dependency problem of sin(u)/sin(v) over boxes
@@ -518,8 +535,8 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
 
 
 def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None = None, *,
-             arithmetic: str = "arb", prec: int | None = None) -> Result:
-    """``||S_{a^n} - S_a||_inf`` at level ``n``.
+             arithmetic: str = "arb", prec: int | None = None, arity: int = 2) -> Result:
+    """``||S_{a^n} - S_a||_inf`` at level ``n`` (``arity`` m: ``h = m^-n``, m residue classes).
 
     ``arithmetic="arb"``: a certified enclosure ``[lower, upper]`` (exact rationals) from ball
     arithmetic at ``prec`` bits (default :func:`default_precision`); parameter values may be
@@ -530,27 +547,29 @@ def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None =
         raise AnalysisError(f"unknown arithmetic {arithmetic!r}; use one of {', '.join(ARITHMETICS)}")
     if not isinstance(n, int) or n < 0:
         raise AnalysisError(f"the level must be a non-negative integer, not {n!r}")
-    groups = _residue_groups(s)
-    prec = prec or default_precision(s, n)
+    groups = _residue_groups(s, arity)
+    prec = prec or default_precision(s, n, arity=arity)
     prov = {"level": n, "scheme": s.slug, "arithmetic": arithmetic}
     if arithmetic == "arb":
-        diffs = coefficient_differences(s, n, values, prec=prec)
+        diffs = coefficient_differences(s, n, values, prec=prec, arity=arity)
         with workprec(prec):
             sums = [sum((arb_abs(diffs[k]) for k in ks), flint.arb(0)) for ks in groups.values()]
-            best = sums[0].max(sums[1])
+            best = sums[0]
+            for x in sums[1:]:
+                best = best.max(x)
         lo, hi = ball_to_interval(best)
         lo = max(lo, sp.Integer(0))
         return Result(lower=lo, upper=hi, status=CERTIFIED,
                       witness={"residue_sums": [ball_to_interval(x) for x in sums]},
                       provenance={**prov, "precision_bits": prec,
-                                  "method": "arb ball arithmetic, h = 2^-n exact"})
+                                  "method": f"arb ball arithmetic, h = {arity}^-n exact"})
     env = _env_values(s, values)
     syms = [H] + list(s.params)
     diffs_expr = [c - c0 for c, c0 in zip(s.mask, s._limits)]
     if arithmetic == "mp":
         with mpmath.workprec(prec):
             f = sp.lambdify(syms, diffs_expr, "mpmath")
-            args = [mpmath.mpf(2) ** (-n)] + [mpmath.mpmathify(sp.N(env[p.name], prec // 3 + 20))
+            args = [mpmath.mpf(arity) ** (-n)] + [mpmath.mpmathify(sp.N(env[p.name], prec // 3 + 20))
                                               for p in s.params]
             d = f(*args)
             val = max(sum(abs(d[k]) for k in ks) for ks in groups.values())
@@ -558,7 +577,7 @@ def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None =
         return Result(value=value, status=NUMERICAL,
                       provenance={**prov, "precision_bits": prec, "method": "mpmath"})
     f = sp.lambdify(syms, diffs_expr, "math")
-    d = f(2.0 ** (-n), *[float(env[p.name]) for p in s.params])
+    d = f(float(arity) ** (-n), *[float(env[p.name]) for p in s.params])
     val = max(sum(abs(d[k]) for k in ks) for ks in groups.values())
     return Result(value=float(val), status=NUMERICAL, provenance={**prov, "method": "float64"})
 

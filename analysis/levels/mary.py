@@ -32,7 +32,11 @@ Examples
 
 Algorithm
 ---------
-As :mod:`analysis.levels.series` with ``2`` replaced by ``m``: for weight ``k < q`` and ``n >= N``,
+One implementation for every arity: the distances, the weighted series (one box:
+:func:`analysis.levels.series._box_series`; adaptive boxes: :func:`analysis.levels.series.adaptive_boxes`) and
+the same-support test (:func:`analysis.levels.series.same_support`) are the binary code with ``arity = m``
+(``h_n = m^-n``, m residue classes); this module adds the m-ary scheme type, its constructors and the Dyn–Levin
+verdict with dilation m. For weight ``k < q`` and ``n >= N``,
 ``|g_j(h_n)| <= A_j h_n^q`` with ``A_j`` certified from the Taylor model on ``(0, m^-N]``, so the terms are
 ``<= K m^{(k-q) n}``; levels ``n < N`` are enclosed in Arb at ``64 + q n log2(m) + 32`` bits. For ``k >= q`` a
 certified positive lower bound of the ``h^q`` coefficient proves divergence.
@@ -57,7 +61,6 @@ uses could not be checked; Dyn–Levin's proof with ``2 -> m`` is what the code 
 
 from __future__ import annotations
 
-import math
 from typing import Any, Mapping, Sequence
 
 import flint
@@ -66,10 +69,9 @@ import sympy as sp
 from ..algebra.mary import check_arity
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
-from .level_dependent import (H, N as LEVEL, LevelDependentScheme, _ball, _read, _to_ball, arb_abs, ball_to_interval,
-                              entire_form, resolve_where, taylor_models, workprec)
+from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, ball_to_interval, distance, resolve_where
 from .bounds import _exact_zero
-from .series import _bisect, _parse_values, _split
+from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes
 
 __all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
            "weighted_series_boxes_mary", "difference_scheme_mary", "same_support_mary", "smoothness_levels_mary",
@@ -257,28 +259,12 @@ def difference_scheme_mary(s: LevelDependentMary, j: int = 1) -> LevelDependentM
 
 
 # --------------------------------------------------------------------------------------------
-# distances and the weighted series
+# distances and the weighted series: the binary code of analysis.levels.series with arity m
 # --------------------------------------------------------------------------------------------
 
-def _prec(q: int, n: int, m: int) -> int:
-    return int(64 + q * n * math.log2(m) + 32)
-
-
-def _differences(s: LevelDependentMary, n: int, env: dict, prec: int) -> list:
-    """Arb enclosures of ``a^n_k - a_k`` at ``h = m^-n`` (parameters exact or boxes)."""
-    sc = s.scheme
-    with workprec(prec):
-        envb = {k: _to_ball(v, False) for k, v in env.items()}
-        envb["h"] = flint.arb(1) / flint.arb(s.arity) ** int(n)
-        out = []
-        for c, c0 in zip(sc.mask, sc._limits):
-            out.append(_ball(entire_form(c), envb, False) - _ball(c0, envb, False)
-                       if H in c.free_symbols else _ball(sp.simplify(c - c0), envb, False))
-    return out
-
-
 def distance_mary(s: LevelDependentMary, n: int, values: Mapping[str, Any] | None = None) -> Result:
-    """``||S_{a^n} - S_a||_inf`` at level ``n`` (m residue classes), a certified enclosure.
+    """``||S_{a^n} - S_a||_inf`` at level ``n`` (m residue classes), a certified enclosure
+    (:func:`analysis.levels.level_dependent.distance` with ``arity = m``).
 
     >>> d = distance_mary(ternary_exponential_bspline_2(), 20, {"theta": 1})
     >>> d.status, 0 < float(d.lower) * 9**20 < 1
@@ -287,22 +273,10 @@ def distance_mary(s: LevelDependentMary, n: int, values: Mapping[str, Any] | Non
     if not isinstance(n, int) or n < 0:
         raise AnalysisError(f"the level must be a non-negative integer, not {n!r}")
     env = _parse_values(s.scheme, values)
-    try:
-        q = s.order()
-    except AnalysisError:
-        q = 0
-    prec = _prec(q, n, s.arity)
-    diffs = _differences(s, n, env, prec)
-    with workprec(prec):
-        sums = [sum((arb_abs(diffs[k]) for k in ks), flint.arb(0)) for ks in s.residue_groups()]
-        best = sums[0]
-        for x in sums[1:]:
-            best = best.max(x)
-    lo, hi = ball_to_interval(best)
-    return Result(lower=max(lo, sp.Integer(0)), upper=hi, status=CERTIFIED,
-                  witness={"residue_sums": [ball_to_interval(x) for x in sums]},
-                  provenance={"level": n, "arity": s.arity, "precision_bits": prec,
-                              "method": f"arb ball arithmetic, h = {s.arity}^-n exact"})
+    r = distance(s.scheme, n, env, arity=s.arity)
+    return Result(lower=r.lower, upper=r.upper, status=r.status, witness=r.witness,
+                  provenance={"level": n, "arity": s.arity, "precision_bits": r.provenance["precision_bits"],
+                              "method": r.provenance["method"]})
 
 
 def _leading(s: LevelDependentMary, env: dict):
@@ -321,6 +295,7 @@ def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None
 
     ``values``: parameter -> exact value or ``(lo, hi)`` box. Certified ``[lower, upper]`` with
     ``witness["verdict"] == "convergent"``, or ``value = oo`` ``"divergent"``, or inconclusive.
+    The computation is :func:`analysis.levels.series._box_series` with ``arity = m``.
     """
     if isinstance(k, bool) or not isinstance(k, int) or k < 0:
         raise AnalysisError(f"the weight exponent must be a non-negative integer, not {k!r}")
@@ -329,66 +304,25 @@ def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None
     m = s.arity
     env = _parse_values(s.scheme, values)
     q, C = _leading(s, env)
-    models = taylor_models(s.scheme, env)
-    rho = models[0].rho
-    groups = s.residue_groups()
     witness: dict[str, Any] = {"weight": k, "arity": m, "order": q, "leading_constant": C,
                                "leading_asymptotics": f"{sp.sstr(C)} * {m}^(-{q}n)"}
     prov = {"method": "arb partial sum + Cauchy-estimate Taylor tail", "scheme": s.slug, "arity": m,
             "parameters": {a: (tuple(v) if isinstance(v, tuple) else v) for a, v in env.items()}}
-    with workprec(128):
-        hN = flint.arb(1) / flint.arb(m) ** N
-        if not hN < rho / 2:
-            raise AnalysisError(f"N = {N} is too small for the Taylor model radius; raise N")
-    if k < q:
-        partial = flint.arb(0)
-        for n in range(N):
-            prec = _prec(q, n, m)
-            g = _differences(s, n, env, prec)
-            with workprec(prec):
-                h = flint.arb(1) / flint.arb(m) ** n
-                for j, mdl in enumerate(models):
-                    if h < mdl.rho / 2:
-                        t = mdl.enclose(h)
-                        g[j] = g[j].intersection(t) if (g[j].is_finite() and g[j].overlaps(t)) else t
-                T = None
-                for ks in groups:
-                    x = sum((arb_abs(g[j]) for j in ks), flint.arb(0))
-                    T = x if T is None else T.max(x)
-            if not T.is_finite():
-                return Result(status=INCONCLUSIVE, witness={**witness, "verdict": "unknown",
-                                                            "reason": f"level {n}: the enclosure is not finite"},
-                              provenance=prov)
-            with workprec(128):
-                partial = partial + flint.arb(m) ** (k * n) * T
-        with workprec(128):
-            K = flint.arb(0)
-            for ks in groups:
-                K = K.max(sum((models[j].abs_upper_over(q, hN) for j in ks), flint.arb(0)))
-            r = flint.arb(m) ** (k - q)
-            tail = flint.arb(K.upper()) * r ** N / (1 - r)
-            lo = partial.lower() if partial.lower() > 0 else flint.arb(0)
-            hi = partial.upper() + tail.upper()
+    try:
+        o = _box_series(s.scheme, env, k, N, None, arity=m)
+    except LevelNotFinite as exc:
+        return Result(status=INCONCLUSIVE, witness={**witness, "verdict": "unknown",
+                                                    "reason": f"level {exc.level}: the enclosure is not finite"},
+                      provenance=prov)
+    if o["verdict"] == "convergent":
         witness.update({"verdict": "convergent",
-                        "tail": {"N": N, "K": ball_to_interval(flint.arb(K.upper()))[1],
-                                 "ratio": sp.sstr(sp.Rational(m) ** (k - q)), "bound": ball_to_interval(tail)[1],
+                        "tail": {"N": N, "K": o["K"], "ratio": sp.sstr(o["ratio"]), "bound": o["tail_bound"],
                                  "statement": f"{m}^(k n)||S_(a^n) - S_a|| <= K r^n for n >= {N}"}})
-        return Result(lower=ball_to_interval(flint.arb(lo))[0], upper=ball_to_interval(flint.arb(hi))[1],
-                      status=CERTIFIED, witness=witness, provenance=prov)
-    with workprec(128):
-        best = flint.arb(0)
-        for ks in groups:
-            tot = flint.arb(0)
-            for j in ks:
-                mdl = models[j]
-                lead = arb_abs(mdl.coeffs[q]) if len(mdl.coeffs) > q else flint.arb(0)
-                E = mdl.abs_upper_over(q + 1, hN) * hN if q + 1 <= mdl.J else flint.arb(0)
-                low = flint.arb(lead.lower()) - flint.arb(E.upper())
-                if low > 0:
-                    tot = tot + low
-            best = best.max(tot)
-    if best > 0:
-        witness.update({"verdict": "divergent", "term_lower_bound": ball_to_interval(flint.arb(best.lower()))[0],
+        return Result(lower=o["lower"], upper=o["upper"], status=CERTIFIED, witness=witness, provenance=prov)
+    if o["verdict"] == "divergent":
+        # the m-ary results carry this bound rounded at the caller's precision (as they always have)
+        witness.update({"verdict": "divergent",
+                        "term_lower_bound": ball_to_interval(flint.arb(o["term_lower_ball"].lower()))[0],
                         "statement": f"{m}^(k n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} (k = {k} >= q = {q})"})
         return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
     witness.update({"verdict": "unknown", "reason": "the leading constant is not certified nonzero"})
@@ -398,8 +332,8 @@ def weighted_series_mary(s: LevelDependentMary, values: Mapping[str, Any] | None
 def weighted_series_boxes_mary(s: LevelDependentMary, values: Mapping[str, Any] | None, k: int, *,
                                pieces: int = 1, depth: int = 0, N: int = 30) -> Result:
     """:func:`weighted_series_mary` over parameter boxes split into ``pieces`` (per boxed parameter, product grid)
-    and bisected adaptively up to ``depth`` times where a sub-box is undecided (as
-    :func:`analysis.levels.series.weighted_series` does for ``m = 2``).
+    and bisected adaptively up to ``depth`` times where a sub-box is undecided
+    (:func:`analysis.levels.series.adaptive_boxes`, as :func:`analysis.levels.series.weighted_series` for ``m = 2``).
 
     Convergent when every sub-box is (the sum lies in ``[min lower, max upper]``), divergent when every
     sub-box is, inconclusive otherwise (``witness["per_box"]``).
@@ -410,21 +344,8 @@ def weighted_series_boxes_mary(s: LevelDependentMary, values: Mapping[str, Any] 
     ('certified', 'convergent', 2)
     """
     env = _parse_values(s.scheme, values)
-    todo = [(b, 0) for b in _split(env, pieces)]
-    done: list[tuple[dict, Result]] = []
-    while todo:
-        b, d = todo.pop(0)
-        boxed = any(isinstance(v, tuple) for v in b.values())
-        try:
-            r = weighted_series_mary(s, b, k, N=N)
-        except AnalysisError:
-            if d >= depth or not boxed:
-                raise
-            r = None
-        if (r is None or r.witness.get("verdict") not in ("convergent", "divergent")) and d < depth and boxed:
-            todo.extend((c, d + 1) for c in _bisect(b))
-            continue
-        done.append((b, r))
+    done = adaptive_boxes(_split(env, pieces), lambda b: weighted_series_mary(s, b, k, N=N),
+                          lambda r: r.witness.get("verdict") in ("convergent", "divergent"), depth, fifo=True)
     results = [r for _, r in done]
     verdicts = {r.witness.get("verdict") for r in results}
     first = results[0]
@@ -457,37 +378,14 @@ def weighted_series_boxes_mary(s: LevelDependentMary, values: Mapping[str, Any] 
 # --------------------------------------------------------------------------------------------
 
 def same_support_mary(s: LevelDependentMary, values, *, N: int = 30) -> Result:
-    """Certify that ``a^n`` and ``a`` have the same support at every level (Arb for ``n < N``, Taylor tail after)."""
-    env = _parse_values(s.scheme, values)
-    m = s.arity
-    q = s.order()
-    models = taylor_models(s.scheme, env)
-    bad = []
-    with workprec(128):
-        envb = {a: _to_ball(v, False) for a, v in env.items()}
-        hN = flint.arb(1) / flint.arb(m) ** N
-        lows = []
-        for j, (c, c0) in enumerate(zip(s.mask, s.scheme._limits)):
-            b0 = _ball(c0, envb, False)
-            lows.append(b0)
-            if b0.contains(0):
-                bad.append((s.start + j, "limit coefficient not certified nonzero"))
-            elif H in c.free_symbols and not abs(b0) > models[j].abs_upper_over(q, hN) * hN ** q:
-                bad.append((s.start + j, "tail"))
-    if not bad:
-        for n in range(N):
-            g = _differences(s, n, env, _prec(q, n, m))
-            for j, b0 in enumerate(lows):
-                if (b0 + g[j]).contains(0):
-                    bad.append((s.start + j, f"level {n}"))
-                    break
-            if bad:
-                break
-    if bad:
-        return Result(value=None, status=INCONCLUSIVE, witness={"same_support": None, "failed": bad},
-                      provenance={"method": "arb enclosures + Taylor tail"})
-    return Result(value=True, status=CERTIFIED, witness={"same_support": True, "support": (s.start, s.scheme.end)},
-                  provenance={"method": f"arb enclosures (n < {N}) + Taylor tail (n >= {N})", "arity": m})
+    """Certify that ``a^n`` and ``a`` have the same support at every level (Arb for ``n < N``, Taylor tail after):
+    :func:`analysis.levels.series.same_support` with ``arity = m`` (limit coefficients that vanish are treated
+    exactly there: level-independent ones, or ``a^n_k = r(h) a_k`` with ``r`` enclosed away from 0)."""
+    r = _same_support_box(s.scheme, values, N=N, arity=s.arity)
+    if not r.is_certified:
+        return r
+    return Result(value=True, status=CERTIFIED, witness=r.witness,
+                  provenance={"method": f"arb enclosures (n < {N}) + Taylor tail (n >= {N})", "arity": s.arity})
 
 
 def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30,

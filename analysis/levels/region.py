@@ -54,7 +54,7 @@ from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import LevelDependentScheme
-from .series import _check_difference, _parse_values, same_support, weighted_series
+from .series import _dyn_levin_hypotheses, _dyn_levin_target, same_support, weighted_series
 
 
 def _covers(part, lo, hi) -> bool:
@@ -146,17 +146,7 @@ def smoothness_on_region(s: LevelDependentScheme, values: Mapping[str, Any], m: 
     hypothesis (A) (the other hypotheses are certified on the closed box, which contains it).
     Certified ``value = True`` means: C^m at every point of the region in ``witness["region"]``.
     """
-    _check_difference(difference)
-    target = s.difference(difference) if difference else s
-    mm = m - difference
-    if mm < 0:
-        raise AnalysisError("difference order larger than m")
-    env = _parse_values(target, values)
-    a = target.limit()
-    point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
-    names_a = {p.name for p in a.params}
-    fix = {k: v for k, v in point.items() if k in names_a}
-    a_sub = a.subs(fix) if fix else a
+    target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference)
     free = [p.name for p in a_sub.params]
     if len(free) > 1:
         raise AnalysisError(f"the limit depends on several boxed parameters ({', '.join(free)}): fix all but one")
@@ -171,11 +161,7 @@ def smoothness_on_region(s: LevelDependentScheme, values: Mapping[str, Any], m: 
         lim = stationary_smoothness(a_sub, mm, L_max=L_max)
     ser = weighted_series(target, env, mm, N=N, depth=depth)
     sup = same_support(target, env, N=N, depth=depth)
-    hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
-    ok = (sup.is_certified and sup.value is True and lim.is_certified and lim.value is True
-          and ser.is_certified and ser.witness.get("verdict") == "convergent")
-    failed = [name for name, r in hyps.items()
-              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
+    hyps, ok, failed = _dyn_levin_hypotheses(sup, lim, ser, mm)
     route = ("direct" if not difference else
              f"divided differences of order {difference}: e^n = (2/(1+z))^{difference} a^n")
     return Result(value=True if ok else None, status=CERTIFIED if ok else INCONCLUSIVE,

@@ -82,19 +82,33 @@ def _box_points(boxes: dict, depth: int) -> list[dict]:
     return pts
 
 
-def _certify_nonzero_in(expr: sp.Expr, s: LevelDependentScheme, boxes: dict, depth: int = 2) -> dict | None:
-    """A level and a point of the box (``boxes``; none: the default point) where ``expr != 0`` is proven."""
+def _prepare(s: LevelDependentScheme, values) -> tuple[LevelDependentScheme, dict, dict]:
+    """``(s at the exact values, {parameter symbol: exact value}, boxes)``; every name must be a parameter of ``s``."""
+    exact, boxes = _exact_and_boxes(values)
+    rep = {}
+    if exact:
+        rep = {s._param(str(k)): sp.sympify(v) for k, v in exact.items()}
+        s = s.subs(exact)
+    for k in boxes:
+        s._param(k)
+    return s, rep, boxes
+
+
+def _certify_nonzero_in(expr: sp.Expr, s: LevelDependentScheme, boxes: dict, depth: int = 2, *,
+                        arity: int = 2) -> dict | None:
+    """A level ``n`` (``h = m^-n``, m = ``arity``) and a point of the box (``boxes``; none: the default point)
+    where ``expr != 0`` is proven (also for :mod:`analysis.levels.reproduction_mary`)."""
     if not boxes:
-        return _certify_nonzero(expr, s, None)
+        return _certify_nonzero(expr, s, None, arity=arity)
     for pt in _box_points(boxes, depth):
-        w = _certify_nonzero(expr, s, pt)
+        w = _certify_nonzero(expr, s, pt, arity=arity)
         if w:
             return w
     return None
 
 
-def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values) -> dict | None:
-    """A level and parameter point where ball arithmetic proves ``expr != 0``."""
+def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values, *, arity: int = 2) -> dict | None:
+    """A level (``h = m^-n``, ``n = 0..3``) and parameter point where ball arithmetic proves ``expr != 0``."""
     pts = dict(values or {})
     for name in s.param_names:
         pts.setdefault(name, sp.Rational(7, 10))
@@ -104,7 +118,7 @@ def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values) -> dict | N
         try:
             with workprec(128):
                 env = {k: _to_ball(v, True) for k, v in pts.items()}
-                env["h"] = _to_ball(sp.Rational(1, 2 ** n), True)
+                env["h"] = _to_ball(sp.Rational(1, arity ** n), True)
                 b = _ball(sp.sympify(expr), env, True)
         except (AnalysisError, ZeroDivisionError):
             continue
@@ -131,13 +145,7 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
     >>> r.status, r.witness["counterexample"]["point"]
     ('refuted', {'alpha': 1/2, 'omega': 1/100})
     """
-    values, boxes = _exact_and_boxes(values)
-    rep = {}
-    if values:
-        rep = {s._param(str(k)): sp.sympify(v) for k, v in dict(values).items()}
-        s = s.subs(values)
-    for k in boxes:
-        s._param(k)
+    s, rep, boxes = _prepare(s, values)
     out = {}
     for lam in lambdas:
         lam = sp.sympify(lam).subs(rep)
@@ -170,11 +178,7 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
     g = generation(s, lambdas, values, depth=depth)
     if g.status != CERTIFIED:
         return g
-    values, boxes = _exact_and_boxes(values)
-    rep = {}
-    if values:
-        rep = {s._param(str(k)): sp.sympify(v) for k, v in dict(values).items()}
-        s = s.subs(values)
+    s, rep, boxes = _prepare(s, values)
     a = s.limit()
     tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / 2)
     for lam in lambdas:

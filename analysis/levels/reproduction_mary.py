@@ -30,7 +30,9 @@ gives reproduction iff moreover ``A_r(w) = w^{sigma (m-1)}`` for every r, i.e. `
 The conditions ``A_r(w) - A_0(w) = 0`` (and ``A_0(w) - w^tau = 0``) are proven as exact identities in ``h``
 and the parameters (sympy simplification; no roots of unity are needed in this form) or refuted by a
 certified nonzero ball value (Arb, ``h = m^-n`` at levels ``n = 0..3``, parameters at the given values
-or at points of the given box).
+or at points of the given box). The exact/box reading of the values and the search for a certified nonzero
+value are those of :mod:`analysis.levels.reproduction` with ``arity = m`` (one implementation for every arity);
+this module adds the m sub-symbols and the m-ary statements.
 
 References
 ----------
@@ -48,9 +50,9 @@ import sympy as sp
 
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .bounds import _exact_zero
-from .level_dependent import H, _ball, _to_ball, workprec
+from .level_dependent import H
 from .mary import LevelDependentMary
-from .reproduction import _box_points, _exact_and_boxes
+from .reproduction import _certify_nonzero_in, _prepare as _prepare_binary
 
 __all__ = ["generation_mary", "reproduction_mary", "sub_symbols_mary"]
 
@@ -71,38 +73,17 @@ def sub_symbols_mary(s: LevelDependentMary, w: sp.Expr) -> list[sp.Expr]:
 
 
 def _prepare(s: LevelDependentMary, values):
+    """:func:`analysis.levels.reproduction._prepare` on the scheme of ``s`` (the arity kept)."""
     if not isinstance(s, LevelDependentMary):
         raise AnalysisError("generation_mary/reproduction_mary need a LevelDependentMary (level_scheme_mary)")
-    exact, boxes = _exact_and_boxes(values)
-    rep = {}
-    if exact:
-        rep = {s.scheme._param(str(k)): sp.sympify(v) for k, v in exact.items()}
-        s = s.subs(exact)
-    for k in boxes:
-        s.scheme._param(k)
-    return s, rep, boxes
+    sc, rep, boxes = _prepare_binary(s.scheme, values)
+    return LevelDependentMary(sc, s.arity), rep, boxes
 
 
 def _certify_nonzero(expr: sp.Expr, s: LevelDependentMary, boxes: dict, depth: int) -> dict | None:
-    """A level ``n`` (``h = m^-n``) and a parameter point (of the box, if any) where Arb proves ``expr != 0``."""
-    pts_list = _box_points(boxes, depth) if boxes else [{}]
-    for pts in pts_list:
-        pts = dict(pts)
-        for name in s.scheme.param_names:
-            pts.setdefault(name, sp.Rational(7, 10))
-        for extra in {str(x) for x in expr.free_symbols} - set(pts) - {"h"}:
-            pts[extra] = sp.Rational(7, 10)
-        for n in (0, 1, 2, 3):
-            try:
-                with workprec(128):
-                    env = {k: _to_ball(v, True) for k, v in pts.items()}
-                    env["h"] = _to_ball(sp.Rational(1, s.arity ** n), True)
-                    b = _ball(sp.sympify(expr), env, True)
-            except (AnalysisError, ZeroDivisionError):
-                continue
-            if b.is_finite() and not b.contains(0):
-                return {"n": n, "point": pts, "value": str(b)}
-    return None
+    """A level ``n`` (``h = m^-n``) and a parameter point (of the box, if any) where Arb proves ``expr != 0``
+    (:func:`analysis.levels.reproduction._certify_nonzero_in` with ``arity = m``)."""
+    return _certify_nonzero_in(expr, s.scheme, boxes, depth, arity=s.arity)
 
 
 def generation_mary(s: LevelDependentMary, lambdas: Sequence, values: Mapping[str, Any] | None = None, *,

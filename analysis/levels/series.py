@@ -42,6 +42,10 @@ and the rigorous Taylor models ``g_k(h) in P_k(h) +- M_k (h/rho)^J/(1-h/rho)`` o
 Over a box of one parameter the box is split into ``pieces`` sub-boxes and each is certified
 separately (interval arithmetic over the sub-box).
 
+The same code serves every arity ``m`` (``h = m^-n``, m residue classes, weights ``m^{kn}``):
+:func:`_box_series`, :func:`adaptive_boxes` and :func:`same_support`'s box test take ``arity``
+(default 2) and :mod:`analysis.levels.mary` calls them, so a fix here serves all arities.
+
 References
 ----------
 N. Dyn, D. Levin, *Analysis of asymptotically equivalent binary subdivision schemes*,
@@ -60,7 +64,8 @@ import flint
 import sympy as sp
 
 from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _residue_groups, ball_to_interval,
-                     coefficient_differences, entire_form, leading_asymptotics, taylor_models, workprec)
+                              coefficient_differences, entire_form, leading_asymptotics, level_h, level_precision,
+                              taylor_models, workprec)
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 
@@ -148,10 +153,18 @@ def _check_difference(difference) -> None:
         raise AnalysisError(f"difference must be a non-negative integer, not {difference!r}")
 
 
-def _level_enclosures(s, env, n, models, q):
-    """Arb enclosures of g_k(h_n), intersecting direct evaluation and the Taylor model."""
-    direct = coefficient_differences(s, n, env)
-    h = flint.arb(2) ** (-n)
+class LevelNotFinite(AnalysisError):
+    """The enclosure of ``||S_{a^n} - S_a||`` at one level is not finite (a box too wide); ``.level`` is ``n``."""
+
+    def __init__(self, level: int):
+        super().__init__(f"level {level}: the enclosure is not finite; split the box")
+        self.level = level
+
+
+def _level_enclosures(s, env, n, models, q, arity: int = 2):
+    """Arb enclosures of g_k(h_n), ``h_n = m^-n``, intersecting direct evaluation and the Taylor model."""
+    direct = coefficient_differences(s, n, env, arity=arity)
+    h = level_h(n, arity)
     out = []
     for k, (d, mdl) in enumerate(zip(direct, models)):
         if h < mdl.rho / 2:
@@ -168,36 +181,40 @@ def _level_enclosures(s, env, n, models, q):
     return out
 
 
-def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | None) -> dict:
+def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | None, arity: int = 2) -> dict:
+    """The weighted series ``sum_n arity^{mn} ||S_{a^n} - S_a||_inf`` on one parameter box (module docstring):
+    a dict with the verdict and its numbers; :class:`LevelNotFinite` when a level's enclosure is not finite.
+    One implementation for every arity ``m`` (``h = m^-n``), used by :func:`weighted_series` and
+    :func:`analysis.levels.mary.weighted_series_mary`."""
     q = s.order()
     models = taylor_models(s, env, J=J)
     rho = models[0].rho
-    groups = list(_residue_groups(s).values())
-    with workprec(96):
-        hN = flint.arb(2) ** (-N)
+    groups = list(_residue_groups(s, arity).values())
+    with workprec(128):
+        hN = level_h(N, arity)
         if not hN < rho / 2:
             raise AnalysisError(f"N = {N} is too small for the Taylor model radius; raise N")
     if m < q:
         partial = flint.arb(0)
         terms = []
         for n in range(N):
-            with workprec(64 + q * n + 32):
-                g = _level_enclosures(s, env, n, models, q)
+            with workprec(level_precision(q, n, arity)):
+                g = _level_enclosures(s, env, n, models, q, arity)
                 sums = [sum((arb_abs(g[k]) for k in ks), flint.arb(0)) for ks in groups]
                 T = sums[0]
                 for x in sums[1:]:
                     T = T.max(x)
             if not T.is_finite():
-                raise AnalysisError(f"level {n}: the enclosure is not finite; split the box")
+                raise LevelNotFinite(n)
             with workprec(128):
-                w = flint.arb(2) ** (m * n) * T
+                w = flint.arb(arity) ** (m * n) * T
                 partial = partial + w
             terms.append(w)
         with workprec(128):
             K = flint.arb(0)
             for ks in groups:
                 K = K.max(sum((models[k].abs_upper_over(q, hN) for k in ks), flint.arb(0)))
-            r = flint.arb(2) ** (m - q)
+            r = flint.arb(arity) ** (m - q)
             tail = flint.arb(K.upper()) * r ** N / (1 - r)
             lo = partial.lower()
             lo = lo if lo > 0 else flint.arb(0)      # a sum of norms is >= 0
@@ -205,7 +222,7 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
         return {"verdict": "convergent", "lower": ball_to_interval(flint.arb(lo))[0],
                 "upper": ball_to_interval(flint.arb(hi))[1], "N": N,
                 "partial_sum": ball_to_interval(partial), "K": ball_to_interval(flint.arb(K.upper()))[1],
-                "ratio": sp.Rational(2) ** (m - q), "tail_bound": ball_to_interval(tail)[1],
+                "ratio": sp.Rational(arity) ** (m - q), "tail_bound": ball_to_interval(tail)[1],
                 "rho": ball_to_interval(rho)[1]}
     # m >= q: look for a certified positive lower bound of the terms
     with workprec(128):
@@ -224,7 +241,7 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
         c = best.lower() if best > 0 else flint.arb(0)
     if c > 0:
         return {"verdict": "divergent", "N": N, "term_lower_bound": ball_to_interval(flint.arb(c))[0],
-                "rho": ball_to_interval(rho)[1]}
+                "rho": ball_to_interval(rho)[1], "term_lower_ball": best}
     return {"verdict": "unknown", "N": N}
 
 
@@ -239,25 +256,38 @@ def _bisect(box: dict) -> list[dict]:
     return out
 
 
-def _adaptive_boxes(s, boxes, m, N, J, depth):
-    """``_box_series`` on each box; a box whose enclosure is not finite or whose verdict is unknown
-    is bisected in every boxed parameter, at most ``depth`` times (adaptive subdivision)."""
-    done_boxes, outs = [], []
+def adaptive_boxes(boxes: list[dict], decide: Callable[[dict], Any], decided: Callable[[Any], bool], depth: int, *,
+                   fifo: bool = False) -> list[tuple[dict, Any]]:
+    """``decide(box)`` on each box; a box where it raises :class:`AnalysisError` or whose outcome is not
+    ``decided`` is bisected in every boxed parameter, at most ``depth`` times (adaptive subdivision).
+    Returns ``[(box, outcome)]``; ``fifo``: breadth first (else the last box first).
+
+    >>> done = adaptive_boxes([{"t": (0, 1)}], lambda b: b["t"][1] <= sp.Rational(1, 2), bool, 1)
+    >>> [(b["t"], o) for b, o in done]
+    [((1/2, 1), False), ((0, 1/2), True)]
+    """
+    done = []
     todo = [(b, 0) for b in boxes]
     while todo:
-        b, d = todo.pop()
+        b, d = todo.pop(0) if fifo else todo.pop()
+        boxed = any(isinstance(v, tuple) for v in b.values())
         try:
-            o = _box_series(s, b, m, N, J)
+            o = decide(b)
         except AnalysisError:
-            if d >= depth or not any(isinstance(v, tuple) for v in b.values()):
+            if d >= depth or not boxed:
                 raise
             o = None
-        if (o is None or o["verdict"] == "unknown") and d < depth and any(isinstance(v, tuple) for v in b.values()):
+        if (o is None or not decided(o)) and d < depth and boxed:
             todo.extend((c, d + 1) for c in _bisect(b))
             continue
-        done_boxes.append(b)
-        outs.append(o)
-    return done_boxes, outs
+        done.append((b, o))
+    return done
+
+
+def _adaptive_boxes(s, boxes, m, N, J, depth):
+    """:func:`adaptive_boxes` of :func:`_box_series` (binary): the boxes and their outcomes."""
+    done = adaptive_boxes(boxes, lambda b: _box_series(s, b, m, N, J), lambda o: o["verdict"] != "unknown", depth)
+    return [b for b, _ in done], [o for _, o in done]
 
 
 def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, m: int = 0, *,
@@ -437,7 +467,9 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0
     return next(p for p in parts if not p.is_certified)
 
 
-def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result:
+def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40, arity: int = 2) -> Result:
+    """:func:`same_support` on one box, for any arity ``m`` (``h = m^-n``; also
+    :func:`analysis.levels.mary.same_support_mary`)."""
     env = _parse_values(s, values)
     lim = s._limits
     models = taylor_models(s, env)
@@ -447,7 +479,7 @@ def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result
         from .level_dependent import _ball, _to_ball
 
         envb = {k: _to_ball(v, False) for k, v in env.items()}
-        hN = flint.arb(2) ** (-N)
+        hN = level_h(N, arity)
         for k, (c, c0) in enumerate(zip(s.mask, lim)):
             b0 = _ball(c0, envb, False)
             if b0.contains(0):
@@ -467,10 +499,10 @@ def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40) -> Result
                 direct = entire_form(c)
                 for n in range(N):
                     if n not in level_cache:
-                        level_cache[n] = coefficient_differences(s, n, env)
+                        level_cache[n] = coefficient_differences(s, n, env, arity=arity)
                     g = level_cache[n][k]
                     # a^n_k = a_k + (a^n_k - a_k), or enclosed directly (less dependency on wide boxes)
-                    if (b0 + g).contains(0) and _ball(direct, {**envb, "h": flint.arb(2) ** (-n)}, False).contains(0):
+                    if (b0 + g).contains(0) and _ball(direct, {**envb, "h": level_h(n, arity)}, False).contains(0):
                         bad.append((s.start + k, f"level {n}"))
                         break
     if bad:
@@ -512,6 +544,34 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     return None
 
 
+def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int):
+    """``(target, m - difference, values, limit)``: the scheme Dyn–Levin's hypotheses are checked on (the
+    ``difference``-th divided difference scheme), the order left, the parsed values and the target's limit
+    with the exact values substituted (shared by :func:`smoothness` and
+    :func:`analysis.levels.region.smoothness_on_region`)."""
+    _check_difference(difference)
+    target = s.difference(difference) if difference else s
+    mm = m - difference
+    if mm < 0:
+        raise AnalysisError("difference order larger than m")
+    env = _parse_values(target, values)
+    a = target.limit()
+    point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
+    names_a = {p.name for p in a.params}
+    fix = {k: v for k, v in point.items() if k in names_a}
+    return target, mm, env, (a.subs(fix) if fix else a)
+
+
+def _dyn_levin_hypotheses(sup: Result, lim: Result, ser: Result, mm: int) -> tuple[dict, bool, list[str]]:
+    """Dyn–Levin's three hypotheses by name, whether all are certified, and the names of those that are not."""
+    hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
+    ok = bool(sup.is_certified and sup.value is True and lim.is_certified and lim.value is True
+              and ser.is_certified and ser.witness.get("verdict") == "convergent")
+    failed = [name for name, r in hyps.items()
+              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
+    return hyps, ok, failed
+
+
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,
                difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0) -> Result:
     """C^m of ``{S_{a^n}}`` by Dyn–Levin 1995 (Theorem 1.1 of seed 003), hypotheses checked.
@@ -524,18 +584,8 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     ``witness["hypotheses"]`` holds a Result for each hypothesis; the verdict is certified only
     when all are.
     """
-    _check_difference(difference)
-    target = s.difference(difference) if difference else s
-    mm = m - difference
-    if mm < 0:
-        raise AnalysisError("difference order larger than m")
-    env = _parse_values(target, values)
-    a = target.limit()
-    point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
+    target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
-    names_a = {p.name for p in a.params}
-    fix = {k: v for k, v in point.items() if k in names_a}
-    a_sub = a.subs(fix) if fix else a
     box = None
     if a_sub.params:
         names = [p.name for p in a_sub.params]
@@ -546,13 +596,9 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box)
     ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth)
     sup = same_support(target, env, N=N, depth=depth)
-    hyps = {"same_support": sup, f"limit_C^{mm}": lim, f"series_m={mm}": ser}
-    ok = (sup.is_certified and sup.value and lim.is_certified and lim.value is True
-          and ser.is_certified and ser.witness.get("verdict") == "convergent")
+    hyps, ok, why = _dyn_levin_hypotheses(sup, lim, ser, mm)
     route = ("direct" if not difference else
              f"{difference}-th divided difference scheme e^n = (2/(1+z))^{difference} a^n")
-    why = [name for name, r in hyps.items()
-           if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
     return Result(value=ok or None, status=CERTIFIED if ok else INCONCLUSIVE,
                   witness={"claim": f"C^{m}", "route": route, "hypotheses": hyps,
                            "theorem": "Dyn-Levin 1995 (seed 003 Theorem 1.1): same support, "
