@@ -36,8 +36,8 @@ def _degree_from_support(s) -> int:
     return (n - 1) // (m - 1) - 1
 
 
-@pytest.mark.parametrize("slug", ["ternary-exp-bspline-3-hyp", "quaternary-exp-bspline-2-hyp",
-                                  "quaternary-exp-bspline-1-trig"])
+# ternary degree 1-3 trig: tests/test_issue12_level_mary_catalogue.py; all 12: benchmarks/bench_level_mary.py
+@pytest.mark.parametrize("slug", ["quaternary-exp-bspline-2-hyp", "quaternary-exp-bspline-1-trig"])
 def test_true_smoothness_certified_both_ways(slug):
     s = get_mary(slug)
     d = _degree_from_support(s)
@@ -113,9 +113,9 @@ def test_recognition_is_exact_and_arity_specific():
 
 
 def test_cli_holder_text_and_json():
-    rc, out, _ = _run("holder", "--scheme", "ternary-exp-bspline-2-trig", "--param", "t=1")
-    assert rc == 0 and "  C^2: no [certified] — exponential B-spline of order 3" in out
-    assert out.rstrip().endswith("=> C^1 exactly (certified: C^1 and not C^2)")
+    rc, out, _ = _run("holder", "--scheme", "ternary-exp-bspline-1-hyp", "--param", "t=1")
+    assert rc == 0 and "  C^1: no [certified] — exponential B-spline of order 2" in out
+    assert out.rstrip().endswith("=> C^0 exactly (certified: C^0 and not C^1)")
     rc, out, _ = _run("holder", "--scheme", "ternary-exp-bspline-1-hyp", "--param", "t=1", "--json")
     doc = json.loads(out)
     assert rc == 0 and doc["arity"] == 3 and doc["smoothness"]["value"] == 0
@@ -128,3 +128,16 @@ def test_bad_input_one_line():
     s = level_scheme_mary("(1+z+z**2)/z * (1 + 1/(1 - 3*3**(-n)))", 3)
     with pytest.raises(AnalysisError, match="undefined at level n = 1"):
         check_real(s.scheme, arity=3)
+
+
+@pytest.mark.parametrize("slug,j", [("ternary-exp-bspline-2-hyp", 1), ("quaternary-exp-bspline-2-trig", 1)])
+def test_divided_difference_normalisation_matches_stationary(slug, j):
+    """lim (m/q_m)^j a^n = (m/q_m)^j a: the stationary m-ary difference symbol of the limit
+    (:func:`analysis.stationary.mary.difference_symbol_mary`, ``(m z^(m-1)/q_m)^j a`` up to the shift), exactly."""
+    from analysis.levels.divided import divided_difference
+    from analysis.stationary.mary import difference_symbol_mary
+
+    s = get_mary(slug)
+    e = divided_difference(s.scheme, j, s.arity)
+    assert e.limit() == difference_symbol_mary(s.limit(), j, s.arity, spelling="divided")
+    assert e.limit().shift(j * (s.arity - 1)) == difference_symbol_mary(s.limit(), j, s.arity)

@@ -75,7 +75,7 @@ from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, ball_to_interval, distance, resolve_where
 from .divided import divide_by_q
-from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes
+from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes, smoothness
 
 __all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
            "weighted_series_boxes_mary", "difference_scheme_mary", "same_support_mary", "smoothness_levels_mary",
@@ -375,36 +375,17 @@ def same_support_mary(s: LevelDependentMary, values, *, N: int = 30) -> Result:
                   provenance={"method": f"arb enclosures (n < {N}) + Taylor tail (n >= {N})", "arity": s.arity})
 
 
-def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30,
-                           budget_seconds: float = 10.0) -> Result:
-    """C^k of ``{S_{a^n}}`` by the m-ary Dyn–Levin theorem, every hypothesis checked (module docstring).
+def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30) -> Result:
+    """C^k of ``{S_{a^n}}`` by the m-ary Dyn–Levin theorem, every hypothesis checked (module docstring):
+    :func:`analysis.levels.series.smoothness` with ``arity = m``.
 
     ``value`` True (certified) or None (inconclusive, ``witness["failed"]`` naming the hypotheses).
-    """
-    from ..regularity.mary import NotConvergentMary, smoothness_mary
 
-    env = _parse_values(s.scheme, values)
-    a = s.limit()
-    point = {p.name: env[p.name] for p in a.params if p.name in env}
-    if any(isinstance(v, tuple) for v in point.values()):
-        raise AnalysisError("the limit symbol depends on a boxed parameter: give exact values")
-    a = a.subs(point) if point else a
-    if a.params:
-        raise AnalysisError(f"give values for {', '.join(p.name for p in a.params)}")
-    try:
-        lim = smoothness_mary(a, s.arity, k, budget_seconds=budget_seconds)
-    except NotConvergentMary as exc:
-        lim = exc.result()
-    ser = weighted_series_mary(s, env, k, N=N)
-    sup = same_support_mary(s, env, N=N)
-    hyps = {"same_support": sup, f"limit_C^{k}": lim, f"series_k={k}": ser}
-    failed = [name for name, r in hyps.items()
-              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
-    return Result(value=True if not failed else None, status=CERTIFIED if not failed else INCONCLUSIVE,
-                  witness={"claim": f"C^{k}", "hypotheses": hyps, "failed": failed,
-                           "theorem": f"Dyn-Levin 1995 with dilation {s.arity}: same support, S_a C^{k}, "
-                                      f"sum {s.arity}^({k}n)||S_(a^n)-S_a|| < oo  =>  C^{k}"},
-                  provenance={"scheme": s.slug, "arity": s.arity, "parameters": env})
+    >>> r = smoothness_levels_mary(ternary_exponential_bspline_2(), {"theta": 1}, 1)
+    >>> r.status, sorted(r.witness["hypotheses"])
+    ('certified', ['limit_C^1', 'same_support', 'series_m=1'])
+    """
+    return smoothness(s.scheme, values, k, N=N, arity=s.arity)
 
 
 def level_smoothness_mary(s: LevelDependentMary, values=None, *, k_max: int | None = None, N: int = 30) -> Result:
