@@ -211,14 +211,26 @@ def _monomial_root(f, X, gens, arity: int):
 
 
 def q_factor(w, m: int) -> sp.Expr:
-    """``1 + w z + ... + (w z)^(m-1)``: the m-ary exponential box with ``w = exp(lambda h/m)``."""
+    """``1 + w z + ... + (w z)^(m-1)``: the m-ary exponential box with ``w = exp(lambda h/m)``.
+
+    >>> q_factor(sp.Symbol("w"), 3)
+    w**2*z**2 + w*z + 1
+    """
     return sum(((w * _Z) ** i for i in range(m)), sp.Integer(0))
 
 
 def factors_mary(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.Expr]:
     """``(lambda_i, w_i)`` with ``prod_i q_m(w_i z)`` dividing ``num`` (a polynomial in z over Q[h, X]), and the
     cofactor. Candidates ``w`` come from the irreducible factors (``beta/alpha`` of ``Phi_p(w z)``, ``p`` the
-    smallest prime factor of m); each is confirmed, with its multiplicity, by exact division."""
+    smallest prime factor of m); each is confirmed, with its multiplicity, by exact division.
+
+    >>> X = sp.symbols("X0:1")
+    >>> num = sp.expand((1 + _Z + _Z**2 + _Z**3) ** 2 * (1 + X[0] * _Z) * (1 + X[0] ** 2 * _Z ** 2) * (X[0] + _Z)
+    ...                 * (X[0] ** 2 + _Z ** 2))                  # q_4(z)^2 q_4(X z) X^3 q_4(z/X)
+    >>> pairs, rest = factors_mary(num, X, [sp.I], 4)
+    >>> sorted((lam for lam, _ in pairs), key=sp.default_sort_key), rest
+    ([0, 0, -4*I, 4*I], 1)
+    """
     gensyms = [x for x in (H, *X) if x in sp.sympify(num).free_symbols]
     _, factors = sp.factor_list(num, _Z, *gensyms) if gensyms else sp.factor_list(num, _Z)
     cands = []
