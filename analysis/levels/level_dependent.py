@@ -92,11 +92,14 @@ def to_h(expr) -> sp.Expr:
 
     >>> to_h(sp.sin(3 * sp.Symbol("alpha") / 2 ** (N + 2)))
     sin(3*alpha*h/4)
+    >>> to_h("4**(-n) + 1/8**n")                 # bases that are powers of 2
+    h**3 + h**2
     """
     e = sp.sympify(expr)
     if isinstance(expr, str):
         e = parse_coefficient(expr, locals_={"n": N, "h": H})
     e = e.subs(sp.Symbol("n"), N).subs(sp.Symbol("h", positive=True), H)
+    e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
     e = e.subs(2 ** N, 1 / H)
     if N in e.free_symbols:
         e = sp.powsimp(sp.expand_power_exp(e)).subs(2 ** N, 1 / H)
@@ -104,6 +107,16 @@ def to_h(expr) -> sp.Expr:
         raise AnalysisError(f"cannot write {expr} as a function of h = 2^-n "
                             "(the level must enter only through 2^n)")
     return e
+
+
+def _power_of_two_base(p) -> bool:
+    """``b**e`` with ``b = 4, 8, 16, ...`` and the level in ``e`` (rewritten as ``2**(log2(b) e)``)."""
+    return (isinstance(p, sp.Pow) and p.base.is_Integer and p.base > 2 and int(p.base) & (int(p.base) - 1) == 0
+            and N in p.exp.free_symbols)
+
+
+def _negative_h_power(c: sp.Expr) -> bool:
+    return any(q.base == H and q.exp.is_negative for q in c.atoms(sp.Pow))
 
 
 def entire_form(expr: sp.Expr) -> sp.Expr:
@@ -294,7 +307,8 @@ class LevelDependentScheme:
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
         coeffs = [to_h(sp.sympify(c).subs(defs)) for c in coeffs]
-        coeffs = [sp.cancel(c) if c.is_rational_function(H) else c for c in coeffs]   # h (2 + 1/h) -> 2h + 1
+        # h (2 + 1/h) -> 2h + 1; (cos(h) + 4/h^3)/(16/h^3) -> (h^3 cos(h) + 4)/16: no negative power of h is left
+        coeffs = [sp.cancel(c) if c.is_rational_function(H) or _negative_h_power(c) else c for c in coeffs]
         while len(coeffs) > 1 and coeffs[-1] == 0:
             coeffs.pop()
         while len(coeffs) > 1 and coeffs[0] == 0:
