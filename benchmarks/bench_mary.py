@@ -83,7 +83,8 @@ def levels() -> None:
               f"{time.perf_counter() - t0:7.3f} s")
     t0 = time.perf_counter()
     r = level_smoothness_mary(s, {"theta": 1})
-    print(f"  C^k verdicts (holder): C^{r.value} certified   {time.perf_counter() - t0:7.3f} s")
+    print(f"  C^k verdicts (holder): C^{r.value} {r.status}, exact {r.witness['exact']} (not C^{r.witness['not_C^k']})   "
+          f"{time.perf_counter() - t0:7.3f} s")
 
 
 if __name__ == "__main__":

@@ -23,7 +23,7 @@ from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from .common import _emit
 from .level_args import k_max_arg, param_box_values, stationary_options_refused
-from .level_text import series_line
+from .level_text import limit_line, series_line, verdict_lines
 
 
 def level_scheme_mary_from_args(args, m: int):
@@ -105,7 +105,9 @@ def cmd_series(args, m: int) -> None:
 
 
 def cmd_holder(args, m: int) -> None:
-    """``subdiv holder`` on a level-dependent m-ary scheme: C^k for each k, with the theorem and its hypotheses."""
+    """``subdiv holder`` on a level-dependent m-ary scheme: convergence and C^k for each k, each with its theorem
+    and status, and "not C^k" where a theorem gives it (:func:`analysis.levels.mary.level_smoothness_mary`, the
+    binary routes with dilation m; the lines are those of the binary command, :mod:`analysis.cli.level_text`)."""
     from ..levels.mary import level_smoothness_mary
 
     stationary_options_refused(args)
@@ -115,21 +117,5 @@ def cmd_holder(args, m: int) -> None:
     r = level_smoothness_mary(s, vals, k_max=k_max)
     lines = [f"scheme: {s.slug} (level-dependent, arity {m}, h = {m}^-n)",
              f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_in_n().subs({q: vals[q.name] for q in s.params if not isinstance(vals[q.name], tuple)})))}",
-             f"  limit a(z) = {r.witness['limit'].pretty()}"]
-    rows = []
-    for v in r.witness["verdicts"]:
-        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
-        hyps = v["result"].witness["hypotheses"]
-        if v["status"] == "certified":
-            lines.append(f"  {name}: yes [certified] — Dyn-Levin with dilation {m}: same support, limit C^{v['k']}, "
-                         f"sum {m}^({v['k']}n)||S_(a^n) - S_a|| < oo")
-        else:
-            why = "; ".join(f"{h}: {hyps[h].witness.get('reason') or hyps[h].witness.get('verdict') or hyps[h].status}"
-                            for h in v["failed"])
-            lines.append(f"  {name}: undecided [inconclusive] — failed {why}")
-        rows.append({"k": v["k"], "status": v["status"], "failed": v["failed"]})
-    best = r.value
-    lines.append(f"  => C^{best} certified (a lower bound: 'not C^k' is not decided for level-dependent schemes)"
-                 if best >= 0 else "  => convergence not certified")
-    _emit(args, {"scheme": s.slug, "arity": m, "level_dependent": True, "C^k_certified": best, "verdicts": rows},
-          "\n".join(lines))
+             limit_line(r.witness["limit"])] + verdict_lines(r)
+    _emit(args, {"scheme": s.slug, "arity": m, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))

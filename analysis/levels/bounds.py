@@ -50,6 +50,7 @@ import sympy as sp
 from .level_dependent import (H, LevelDependentScheme, _ball, _to_ball, ball_to_interval, entire_form,
                      taylor_models, to_h, workprec)
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
+from .divided import _exact_zero  # noqa: F401 - re-exported: the exact zero test lives in .divided
 
 
 def _parse_box(box: Mapping[str, Any] | None) -> dict:
@@ -246,20 +247,6 @@ def check_inequality(lhs, rhs, n0: int = 0, box: Mapping[str, Any] | None = None
                            "details": [{k: v for k, v in o.items() if k != "worst"} for o in outs],
                            "advice": "raise max_depth / pieces, or shrink the box"},
                   provenance=prov)
-
-
-def _exact_zero(expr: sp.Expr) -> bool:
-    e = sp.sympify(expr)
-    if e == 0:
-        return True
-    for f in (lambda x: sp.simplify(x), lambda x: sp.simplify(x.rewrite(sp.exp)),
-              lambda x: sp.simplify(sp.expand_trig(x))):
-        try:
-            if f(e) == 0:
-                return True
-        except Exception:  # noqa: BLE001 - a failed simplification is not a proof either way
-            continue
-    return False
 
 
 def check_identity(lhs, rhs, *, claim: str = "", samples: int = 12, seed: int = 3) -> Result:

@@ -32,6 +32,15 @@ smoothness (``S_a`` certified not C^k) one theorem decides "not C^k":
    [certified]", and with C^{d-1} certified by the routes above the smoothness is *exactly*
    C^{d-1}.
 
+**Arity m** (``level_smoothness(..., arity=m)``, ``h = m^-n``; :func:`analysis.levels.mary.level_smoothness_mary`):
+routes 1, 2, 2′ and 4 with dilation m — Dyn–Levin with weight ``m^{kn}`` and the limit's C^k by the m-ary
+analysis (:func:`analysis.regularity.mary.smoothness_mary`); the divided difference schemes
+``(m/(1+z+...+z^(m-1)))^j a^n`` (:mod:`.divided`), which for ``m >= 3`` also need the convergence of
+``{S_(a^n)}`` (they are the case ``Lambda = (0, ..., 0)`` of the generalized theorem, proved for dilation m in
+:mod:`.gendiff`); the exponential factors ``q(e^{lambda m^-(n+1)} z)``; m-ary exponential B-spline schemes
+(:mod:`.expbspline`). Route 3 is binary only (its moment conditions at ``-1`` are the binary sum rules) and
+says so.
+
 Otherwise the verdict stays inconclusive: no theorem implemented here transfers "not C^k" from
 ``S_a`` to ``{S_{a^n}}`` in general. The theorem that would (an upper bound of the Hölder exponent
 of an asymptotically similar non-stationary scheme by that of its limit: the Hölder-exponent
@@ -46,6 +55,10 @@ Examples
 (2, 'certified', ['Dyn-Levin direct', 'Dyn-Levin on the 1st divided difference scheme', 'Dyn-Levin on the 2nd divided difference scheme'])
 >>> r.witness["verdicts"][3]["verdict"], r.witness["verdicts"][3]["status"], r.witness["exact"]
 ('not C^3', 'certified', True)
+>>> from schemes.level_mary import get_mary
+>>> r = level_smoothness(get_mary("ternary-exp-bspline-1-hyp").scheme, {"t": 1}, arity=3)
+>>> r.value, r.witness["exact"], [v["verdict"] for v in r.witness["verdicts"]]
+(0, True, ['C^0', 'not C^1'])
 
 Algorithm
 ---------
@@ -79,16 +92,17 @@ import flint
 import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
+from .divided import divided_difference, q_label
 from .expbspline import not_ck
 from .gendiff import GeneralizedDifferences, gendiff_smoothness
 from .hseries import prefill_taylor
-from .level_dependent import H, LevelDependentScheme, TaylorModel, taylor_models
-from .series import same_support, smoothness
+from .level_dependent import H, LevelDependentScheme, TaylorModel, level_h, taylor_models
+from .series import same_support, smoothness, stationary_smoothness as series_stationary
 from ..jsonable import fmt_upper
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
 
-def check_real(s: LevelDependentScheme, levels=range(0, 24)) -> None:
+def check_real(s: LevelDependentScheme, levels=range(0, 24), arity: int = 2) -> None:
     """One-line :class:`AnalysisError` when a coefficient is certified non-real (or undefined) at a level.
 
     ``s`` has no free parameters. Each coefficient is enclosed in complex ball arithmetic at the
@@ -98,7 +112,7 @@ def check_real(s: LevelDependentScheme, levels=range(0, 24)) -> None:
         raise AnalysisError(f"give values for {', '.join(s.param_names)} (--param NAME=VALUE)")
     with workprec(128):
         for n in levels:
-            env = {"h": flint.acb(flint.arb(2) ** (-int(n)))}
+            env = {"h": flint.acb(level_h(n, arity))}
             for k, c in enumerate(s.mask):
                 try:
                     v = _ball(c, env, True)
@@ -106,7 +120,7 @@ def check_real(s: LevelDependentScheme, levels=range(0, 24)) -> None:
                     v = flint.acb("nan")
                 if not v.is_finite():
                     raise AnalysisError(f"the coefficient of z^{s.start + k} is undefined at level n = {n}: "
-                                        f"{sp.sstr(c.subs(H, sp.Rational(1, 2 ** n)))}")
+                                        f"{sp.sstr(c.subs(H, sp.Rational(1, arity ** n)))}")
                 if not v.imag.contains(0):
                     raise AnalysisError(f"the coefficient of z^{s.start + k} is not real at level n = {n} "
                                         f"({v}): the scheme must be real")
@@ -172,17 +186,18 @@ def approximate_sum_rules(s: LevelDependentScheme, k: int, *, N: int = 40) -> Re
 
 
 class _Differences:
-    """The divided difference schemes ``e_j = (2/(1+z))^j a^n``, computed once (their Taylor caches
-    are shared by every k); ``None`` once ``(1+z)^j`` does not divide ``a^n`` identically."""
+    """The divided difference schemes ``e_j = (2/(1+z))^j a^n`` (arity m: ``(m/q_m)^j a^n``), computed once
+    (their Taylor caches are shared by every k); ``None`` once ``(1+z)^j`` does not divide ``a^n`` identically."""
 
-    def __init__(self, s: LevelDependentScheme):
+    def __init__(self, s: LevelDependentScheme, arity: int = 2):
+        self.arity = arity
         self.schemes: dict[int, LevelDependentScheme | None] = {0: s}
 
     def get(self, j: int) -> LevelDependentScheme | None:
         if j not in self.schemes:
             prev = self.get(j - 1)
             try:
-                self.schemes[j] = None if prev is None else prev.difference(1)
+                self.schemes[j] = None if prev is None else divided_difference(prev, 1, self.arity)
                 if self.schemes[j] is not None:
                     prefill_taylor(self.schemes[j])
             except AnalysisError:
@@ -190,7 +205,7 @@ class _Differences:
         return self.schemes[j]
 
     def divisibility(self, k: int) -> int:
-        """The largest ``j <= k`` with ``(1+z)^j | a^n`` identically in n."""
+        """The largest ``j <= k`` with ``(1+z)^j | a^n`` (``q_m^j``) identically in n."""
         j = 0
         while j < k and self.get(j + 1) is not None:
             j += 1
@@ -210,11 +225,12 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
     tried = []
     # all (1+z)^k divide a^n: the k-th divided difference route first (weight 2^0: the likeliest to
     # converge), then the direct series, then the intermediate differences
+    m = diffs.arity
     jmax = diffs.divisibility(k)
     order = ([jmax] if jmax == k and k > 0 else []) + [0] + [j for j in range(jmax, 0, -1) if j != k]
     for j in order:
         # Dyn-Levin on e_j with weight 2^((k-j)n): what smoothness(s, k, difference=j) computes
-        r = smoothness(diffs.get(j), None, k - j, N=N)
+        r = smoothness(diffs.get(j), None, k - j, N=N, arity=m)
         if j == 0:
             if _ok(r):
                 return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED, "route": "Dyn-Levin direct",
@@ -222,14 +238,25 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
             tried.append({"route": "Dyn-Levin direct", "failed": r.witness["failed"]})
             continue
         route = f"Dyn-Levin on the {_ordinal(j)} divided difference scheme"
+        if _ok(r) and m != 2 and not (converges is not None and _ok(converges)):
+            # arity m: the divided-difference argument is the generalized one with Lambda = (0, ..., 0)
+            # (analysis.levels.gendiff), which needs the convergence of {S_(a^n)} (H2)
+            tried.append({"route": route, "failed": ["H2: convergence of {S_(a^n)} not certified"]})
+            continue
         if _ok(r):
+            if m != 2:
+                return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED, "route": route,
+                        "theorem": (f"Dyn-Levin 1995 with dilation {m} applied to e^n = ({m}/({q_label(m)}))^{j} a^n "
+                                    f"(S_(e^n) C^{k - j}), {{S_(a^n)}} convergent  =>  C^{k} (generalized differences "
+                                    "with Lambda = (0, ..., 0); proof in analysis.levels.gendiff)"),
+                        "hypotheses": {**r.witness["hypotheses"], "convergence": converges}}
             return {"k": k, "verdict": f"C^{k}", "status": CERTIFIED, "route": route,
                     "theorem": (f"Dyn-Levin 1995 applied to e^n = (2/(1+z))^{j} a^n (S_(e^n) C^{k - j}) "
                                 f"+ the divided-difference argument: S_(a^n) C^{k}"),
                     "hypotheses": r.witness["hypotheses"]}
         tried.append({"route": route, "failed": r.witness["failed"]})
     if gd is not None and k > 0:
-        g = gendiff_smoothness(s, k, converges=converges, N=N, cache=gd)
+        g = gendiff_smoothness(s, k, converges=converges, N=N, cache=gd, arity=m)
         if _ok(g):
             w = g.witness
             names = ", ".join(sp.sstr(x) for x in w["subset"])
@@ -242,6 +269,10 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
                       "failed": g.witness["failed"]})
     route = ("Conti-Dyn-Manni-Mazure 2015 (asymptotic similarity)" if k == 0 else
              "Charina-Conti-Guglielmi-Protasov 2017 (asymptotic similarity + approximate sum rules)")
+    if m != 2:
+        tried.append({"route": route, "failed": [f"not implemented for arity {m} (the m-ary approximate sum rules at "
+                                                 "the m-th roots of unity are not coded)"]})
+        return {"k": k, "verdict": "undecided", "status": INCONCLUSIVE, "route": None, "tried": tried}
     asr = approximate_sum_rules(s, k, N=N)
     lim = a_smooth[k]
     hyps = {"same_support": sup, f"approximate_sum_rules_order_{k + 1}": asr, f"alpha(S_a) > {k}": lim}
@@ -256,8 +287,11 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
 
 
 def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, *,
-                     k_max: int | None = None, N: int = 40) -> Result:
+                     k_max: int | None = None, N: int = 40, arity: int = 2) -> Result:
     """Convergence and the C^k verdict for each k up to the limit's smoothness (see the module).
+
+    ``arity`` m: ``s`` is read with ``h = m^-n`` (routes 1, 2, 2' and 4 with dilation m; route 3 is binary
+    only and says so); :func:`analysis.levels.mary.level_smoothness_mary` is this function with ``arity = m``.
 
     ``value``: the largest k with C^k certified for every ``k' <= k`` (``-1``: not even
     convergence certified). ``witness["verdicts"]``: one dict per k with ``verdict``, ``status``,
@@ -266,11 +300,14 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
     ``witness["not_C^k"]``: the k certified *not* C^k (exponential B-spline schemes) or ``None``,
     and ``witness["exact"]``: True when that k is ``value + 1`` (the smoothness is exactly C^value).
     """
-    from ..regularity import smoothness as stationary_smoothness
+    from ..regularity import smoothness as binary_smoothness
+
+    def stationary_smoothness(a, k):
+        return binary_smoothness(a, k) if arity == 2 else series_stationary(a, k, arity=arity)
 
     if values:
         s = s.subs(values)
-    check_real(s)
+    check_real(s, arity=arity)
     a = s.limit()
     prefill_taylor(s)          # the same exact Taylor coefficients as sympy.series, faster (or nothing)
     if all(H not in c.free_symbols for c in s.mask):
@@ -287,9 +324,9 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
         if r.value is False and r.is_certified:
             not_k = k
         break
-    sup = same_support(s, None, N=N)
-    diffs = _Differences(s)
-    gd = GeneralizedDifferences(s)
+    sup = same_support(s, None, N=N, arity=arity)
+    diffs = _Differences(s, arity)
+    gd = GeneralizedDifferences(s, arity)
     verdicts = []
     best = -1
     for k in range(k_lim + 1):
@@ -305,7 +342,7 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
             best = k
     cert = None
     if not_k is not None and (k_max is None or not_k <= k_max):
-        cert = not_ck(s)
+        cert = not_ck(s, arity)
         d = cert.witness.get("k")
         if not (cert.is_certified and cert.value is False and d is not None and k_lim < d <= not_k):
             cert = None
@@ -333,4 +370,4 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
                            "exact": cert is not None and best == cert.witness["k"] - 1},
                   provenance={"scheme": s.slug, "N": N,
                               "method": ("Dyn-Levin 1995 (direct, divided differences, generalized divided differences); "
-                                         "CDMM 2015 / CCGP 2017")})
+                                         "CDMM 2015 / CCGP 2017"), **({} if arity == 2 else {"arity": arity})})

@@ -42,6 +42,27 @@ from the delta sequence is not C^d. If the scheme does not converge, it is not C
 (``B_Lambda`` is C^{d-1}: a convolution of ``d+1`` bounded functions with compact support; the
 C^{d-1} of the *scheme* is certified separately, by the Dyn–Levin routes of :mod:`.ck`.)
 
+Dilation m (arity m >= 2, ``h = m^-n``)
+---------------------------------------
+The m-ary exponential B-spline scheme of order d+1 has the symbols
+
+    a^n(z) = m z^s prod_{i=1}^{d+1} q(v_i z) / q(v_i),   q(x) = 1 + x + ... + x^(m-1),  v_i = e^{lambda_i m^-(n+1)}
+
+(:mod:`schemes.level_mary`). It generates the *same* ``B_Lambda``: splitting ``[0, h)`` into m pieces,
+``beta_{lambda,h}(x) = sum_{k<m} e^{lambda k h/m} beta_{lambda,h/m}(x - k h/m)`` (on the k-th piece
+``e^{lambda x} = e^{lambda k h/m} e^{lambda (x - k h/m)}``), so convolving the d+1 boxes,
+``B_{Lambda,h} = sum_j p_j B_{Lambda,h/m}(. - j h/m)`` with ``p(z) = prod_i q(e^{lambda_i h/m} z)``: the
+refinement equation with dilation m (tests: checked in mpmath at order 2). In Fourier terms
+``hat beta_lambda(xi) = (1 - e^{lambda - i xi})/(i xi - lambda)`` does not depend on m. The normalisers
+``c_k = m / prod_i q(v_i)`` satisfy ``m^{d} c_k -> 1`` geometrically (``q(v) = m + O(m^-k)``), so
+``m^{nd} C_n -> kappa != 0`` provided ``q(v_i) != 0`` at every level: ``q(v) = (1 - v^m)/(1 - v)`` vanishes only
+for ``v^m = 1 != v``, never when ``Re lambda != 0`` or ``lambda`` is real, and for ``lambda = i b`` not once
+``|b| m^-(n+1) < 2 pi/m`` (the finitely many earlier levels are checked in Arb). ``sum_j |B_{Lambda,h}(x - jh)| =
+O(h^d)`` holds as before. Hence the proof above applies verbatim: an m-ary exponential B-spline scheme of order
+d+1 is not C^d. Recognition (step 3 below) takes, for arity m, the candidates ``w`` from the irreducible
+factors (``beta/alpha`` of a factor of ``q(w z)``) and confirms each, with its multiplicity, by exact
+division of the numerator by ``q(w z)``; the identity of step 4 is then checked exactly as for m = 2.
+
 Algorithm
 ---------
 1. Every mask coefficient is rewritten with ``exp`` (``cos, cosh, sin, ...`` -> ``exp``); each
@@ -73,6 +94,12 @@ True
 >>> c = not_ck(get("exp-chaikin-hyp").subs({"t": 2}))
 >>> c.status, c.value, c.witness["k"]
 ('certified', False, 2)
+>>> from schemes.level_mary import get_mary
+>>> r = recognise(get_mary("quaternary-exp-bspline-3-hyp").scheme.subs({"t": 1}), 4)
+>>> r.value, r.witness["order"]
+((-1, 0, 0, 1), 4)
+>>> recognise(get_mary("quaternary-exp-bspline-3-hyp").scheme.subs({"t": 1}), 3).value is None   # wrong arity
+True
 
 References
 ----------
@@ -169,9 +196,68 @@ def _to_exponential_polynomial(s: LevelDependentScheme):
     return sum(c * _Z ** k for k, c in enumerate(out)), X, gens
 
 
-def _frequencies(poly_expr, X, gens) -> list[tuple[sp.Expr, sp.Expr]]:
-    """``(lambda_i, w_i)`` for the linear factors ``1 + w_i z`` (``w_i`` a monomial in the ``X_j``)."""
+def _monomial_root(f, X, gens, arity: int):
+    """``(lambda, w)`` when the factor ``f = alpha + beta z + ...`` gives ``w = beta/alpha`` a monomial in the ``X_j``
+    (coefficient 1): ``w = exp(lambda h/arity)``, ``lambda = arity sum_j m_j g_j``; else ``None``."""
+    alpha, beta = f.coeff(_Z, 0), f.coeff(_Z, 1)
+    if alpha == 0 or beta == 0:
+        return None
+    w = sp.cancel(beta / alpha)
+    coeff, mono = w.as_coeff_Mul()
+    powers = sp.powsimp(mono).as_powers_dict() if mono != 1 else {}
+    if coeff != 1 or any(b not in X or not sp.sympify(e).is_Integer for b, e in powers.items()):
+        return None
+    return sp.simplify(arity * sum((int(e) * gens[X.index(b)] for b, e in powers.items()), sp.Integer(0))), w
+
+
+def q_factor(w, m: int) -> sp.Expr:
+    """``1 + w z + ... + (w z)^(m-1)``: the m-ary exponential box with ``w = exp(lambda h/m)``.
+
+    >>> q_factor(sp.Symbol("w"), 3)
+    w**2*z**2 + w*z + 1
+    """
+    return sum(((w * _Z) ** i for i in range(m)), sp.Integer(0))
+
+
+def factors_mary(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.Expr]:
+    """``(lambda_i, w_i)`` with ``prod_i q_m(w_i z)`` dividing ``num`` (a polynomial in z over Q[h, X]), and the
+    cofactor. Candidates ``w`` come from the irreducible factors (``beta/alpha`` of ``Phi_p(w z)``, ``p`` the
+    smallest prime factor of m); each is confirmed, with its multiplicity, by exact division.
+
+    >>> X = sp.symbols("X0:1")
+    >>> num = sp.expand((1 + _Z + _Z**2 + _Z**3) ** 2 * (1 + X[0] * _Z) * (1 + X[0] ** 2 * _Z ** 2) * (X[0] + _Z)
+    ...                 * (X[0] ** 2 + _Z ** 2))                  # q_4(z)^2 q_4(X z) X^3 q_4(z/X)
+    >>> pairs, rest = factors_mary(num, X, [sp.I], 4)
+    >>> sorted((lam for lam, _ in pairs), key=sp.default_sort_key), rest
+    ([0, 0, -4*I, 4*I], 1)
+    """
+    gensyms = [x for x in (H, *X) if x in sp.sympify(num).free_symbols]
+    _, factors = sp.factor_list(num, _Z, *gensyms) if gensyms else sp.factor_list(num, _Z)
+    cands = []
+    for f, _ in factors:
+        if sp.degree(f, _Z) >= 1:
+            r = _monomial_root(f, X, gens, m)
+            if r is not None and all(sp.cancel(r[1] - w) != 0 for _, w in cands):
+                cands.append(r)
+    out, rest = [], sp.expand(num)
+    for lam, w in cands:
+        while sp.degree(rest, _Z) >= m - 1:
+            qq, rr = sp.div(rest, sp.expand(sp.together(q_factor(w, m) * sp.denom(w) ** (m - 1))), _Z)
+            if sp.cancel(sp.together(rr)) != 0:
+                break
+            out.append((lam, w))
+            rest = sp.expand(sp.cancel(sp.together(qq)))
+    return out, rest
+
+
+def _frequencies(poly_expr, X, gens, arity: int = 2) -> list[tuple[sp.Expr, sp.Expr]]:
+    """``(lambda_i, w_i)`` for the factors ``1 + w_i z`` (``q_m(w_i z)`` for arity m; ``w_i`` a monomial in the ``X_j``)."""
     num, _ = sp.fraction(sp.cancel(sp.together(poly_expr)))
+    if arity != 2:
+        pairs, rest = factors_mary(num, X, gens, arity)
+        if not pairs or sp.degree(rest, _Z) != 0:
+            raise _NotOfForm(f"the symbol's numerator does not split into factors 1 + w z + ... + (w z)^{arity - 1}")
+        return pairs
     deg = sp.degree(num, _Z)
     if deg < 1:
         raise _NotOfForm("the symbol has no factor (1 + w z)")
@@ -199,8 +285,10 @@ def _frequencies(poly_expr, X, gens) -> list[tuple[sp.Expr, sp.Expr]]:
     return lams
 
 
-def recognise(s: LevelDependentScheme) -> Result:
+def recognise(s: LevelDependentScheme, arity: int = 2) -> Result:
     """Is ``a^n(z) = 2 z^s prod_i (1 + e^{lambda_i h/2} z)/(1 + e^{lambda_i h/2})`` for every n? (exact)
+
+    ``arity`` m: ``a^n(z) = m z^s prod_i q_m(w_i z)/q_m(w_i)``, ``w_i = e^{lambda_i h/m}``, ``h = m^-n``.
 
     ``value``: the frequencies ``(lambda_1, ..., lambda_{d+1})`` (sorted), certified, with
     ``witness["order"] = d + 1`` and ``witness["shift"] = s``; or ``None`` (inconclusive: not of
@@ -211,12 +299,13 @@ def recognise(s: LevelDependentScheme) -> Result:
             "scheme": s.slug}
     try:
         P, X, gens = _to_exponential_polynomial(s)
-        pairs = _frequencies(P, X, gens)
-        prod = sp.Integer(2)
+        pairs = _frequencies(P, X, gens, arity)
+        prod = sp.Integer(arity)
         for _, w in pairs:
-            prod = prod * (1 + w * _Z) / (1 + w)
+            prod = prod * q_factor(w, arity) / q_factor(w, arity).subs(_Z, 1)
         if sp.cancel(sp.together(prod - P)) != 0:
-            raise _NotOfForm("the normalisation differs from 2 prod (1 + w_i z)/(1 + w_i)")
+            raise _NotOfForm("the normalisation differs from 2 prod (1 + w_i z)/(1 + w_i)" if arity == 2 else
+                             f"the normalisation differs from {arity} prod q(w_i z)/q(w_i)")
         lams = [lam for lam, _ in pairs]
     except (_NotOfForm, sp.PolynomialError, sp.polys.polyerrors.PolificationFailed, ValueError, TypeError) as e:
         why = str(e) if isinstance(e, _NotOfForm) else f"the symbol is not a polynomial in z over Q(exp(c h)) ({e})"
@@ -229,13 +318,20 @@ def recognise(s: LevelDependentScheme) -> Result:
                   witness={"exponential_bspline": True, "order": d1, "degree": d1 - 1, "shift": s.start,
                            "frequencies": [sp.sstr(x) for x in lams],
                            "identity": (f"a^n(z) = 2 z^({s.start}) prod_i (1 + exp(lambda_i 2^-(n+1)) z) / "
-                                        "(1 + exp(lambda_i 2^-(n+1))) for all n >= 0 (exact)"),
+                                        "(1 + exp(lambda_i 2^-(n+1))) for all n >= 0 (exact)" if arity == 2 else
+                                        f"a^n(z) = {arity} z^({s.start}) prod_i q(v_i z)/q(v_i), q(x) = "
+                                        f"1 + x + ... + x^{arity - 1}, v_i = exp(lambda_i {arity}^-(n+1)), for all "
+                                        "n >= 0 (exact)"),
                            "generators": [f"exp({sp.sstr(g)}*h)" for g in gens]},
                   provenance=prov)
 
 
-def _normalisers_nonzero(lams, n_levels_max: int = 4096) -> Result:
-    """``1 + exp(lambda 2^-(n+1)) != 0`` for every ``n >= 0`` and every frequency (certified or not)."""
+def _normalisers_nonzero(lams, n_levels_max: int = 4096, arity: int = 2) -> Result:
+    """``1 + exp(lambda 2^-(n+1)) != 0`` for every ``n >= 0`` and every frequency (certified or not); arity m:
+    ``q_m(v) = 1 + v + ... + v^(m-1) != 0``, ``v = exp(lambda m^-(n+1))`` (``q_m(v) = (1 - v^m)/(1 - v)``
+    vanishes only for ``v^m = 1 != v``: never when ``Re lambda != 0``; for ``lambda = i b`` not once
+    ``|b| m^-(n+1) < 2 pi/m``)."""
+    m = arity
     free = set().union(*(sp.sympify(x).free_symbols for x in lams))
     if free:
         return Result(value=None, status=INCONCLUSIVE,
@@ -249,30 +345,34 @@ def _normalisers_nonzero(lams, n_levels_max: int = 4096) -> Result:
             b = _ball(sp.sympify(lam), {}, True)
             mag = abs(b)
             n0 = 0
-            while not (mag / 2 ** (n0 + 1) < pi):
+            while not (mag / m ** (n0 + 1) < 2 * pi / m):
                 n0 += 1
                 if n0 > n_levels_max:
                     return Result(value=None, status=INCONCLUSIVE, witness={"reason": "frequency too large"})
             for n in range(n0):
-                v = 1 + (b / 2 ** (n + 1)).exp()
+                v = sum(((k * b / m ** (n + 1)).exp() for k in range(m)), flint.acb(0))
                 if not abs(v) > 0:
                     return Result(value=None, status=INCONCLUSIVE,
-                                  witness={"reason": f"1 + exp({sp.sstr(lam)} 2^-{n + 1}) not certified != 0 "
-                                                     f"(level n = {n}; the mask may be undefined there)"})
-            checked.append(f"{sp.sstr(lam)}: |lambda| 2^-(n+1) < pi for n >= {n0}, levels < {n0} by Arb")
+                                  witness={"reason": (f"1 + exp({sp.sstr(lam)} 2^-{n + 1}) not certified != 0 " if m == 2
+                                                      else f"q(exp({sp.sstr(lam)} {m}^-{n + 1})) not certified != 0 ")
+                                           + f"(level n = {n}; the mask may be undefined there)"})
+            checked.append(f"{sp.sstr(lam)}: |lambda| 2^-(n+1) < pi for n >= {n0}, levels < {n0} by Arb" if m == 2
+                           else f"{sp.sstr(lam)}: |lambda| {m}^-(n+1) < 2 pi/{m} for n >= {n0}, levels < {n0} by Arb")
     return Result(value=True, status=CERTIFIED,
-                  witness={"statement": "1 + exp(lambda_i 2^-(n+1)) != 0 for all n >= 0", "checked": checked},
+                  witness={"statement": ("1 + exp(lambda_i 2^-(n+1)) != 0 for all n >= 0" if m == 2 else
+                                         f"q(exp(lambda_i {m}^-(n+1))) != 0 for all n >= 0"), "checked": checked},
                   provenance={"method": "real part != 0, or |Im| < pi for n >= n_0 and Arb at n < n_0"})
 
 
-def not_ck(s: LevelDependentScheme) -> Result:
-    """Certified "not C^d" for an exponential B-spline scheme of order ``d+1`` (see the module's theorem).
+def not_ck(s: LevelDependentScheme, arity: int = 2) -> Result:
+    """Certified "not C^d" for an exponential B-spline scheme of order ``d+1`` (see the module's theorem);
+    ``arity`` m: the m-ary form (``h = m^-n``), same theorem.
 
     ``value=False`` (the scheme is not C^d), ``witness["k"] = d``, with the hypotheses (exact
     recognition; non-zero normalisers at every level) as results; or ``value=None``,
     inconclusive, naming the hypothesis that failed.
     """
-    rec = recognise(s)
+    rec = recognise(s, arity)
     hyps = {"exponential_bspline_form": rec}
     if rec.value is None:
         return Result(value=None, status=INCONCLUSIVE,
@@ -280,7 +380,7 @@ def not_ck(s: LevelDependentScheme) -> Result:
                                "hypotheses": hyps},
                       provenance={"method": "exponential B-spline recognition"})
     d = rec.witness["order"] - 1
-    norm = _normalisers_nonzero(rec.value)
+    norm = _normalisers_nonzero(rec.value, arity=arity)
     hyps["normalisers_nonzero"] = norm
     if not (norm.is_certified and norm.value is True):
         return Result(value=None, status=INCONCLUSIVE,
@@ -294,5 +394,7 @@ def not_ck(s: LevelDependentScheme) -> Result:
                                        f"basic limit function is a non-zero multiple of B_Lambda, piecewise in "
                                        f"ker prod(D - lambda_i) with integer knots, C^{d - 1} and not C^{d} "
                                        "(uniqueness for the order-d+1 ODE at a knot); Unser-Blu 2005, "
-                                       "Conti-Romani 2010, Conti-Gemignani-Romani 2014")},
+                                       "Conti-Romani 2010, Conti-Gemignani-Romani 2014"
+                                       + ("" if arity == 2 else f"; dilation {arity}: the same B_Lambda (refinement "
+                                          "identity in analysis.levels.expbspline)"))},
                   provenance={"method": "exact recognition + exponential B-spline theorem"})

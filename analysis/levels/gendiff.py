@@ -56,6 +56,29 @@ Thus ``e = u`` on all dyadic points, ``e`` is continuous, ``e = u`` and ``f = Ph
 (The level-N uniqueness needs no hypothesis: it holds for all large N. (H2) is used to know that
 ``f^n`` converges; it is checked, not assumed.)
 
+Dilation m (arity m >= 2; ``h_n = m^-n``)
+-----------------------------------------
+``(S_{a^n} f)_i = sum_j a^n_{i-mj} f_j``; with ``q(x) = 1 + x + ... + x^(m-1)`` the exponential factors are
+
+    p_n(z) = prod_{i<=j} q(v_i z),    v_i = e^{lambda_i h_{n+1}},
+
+(``lambda = 0``: ``q(z) = 1 + z + ... + z^(m-1)``; a pair ``a +- ib``: ``q(vz) q(v̄z) = sum_k e^{a k h/m}
+(sum_l cos((2l-k) b h/m)) z^k``, real) and ``c^n = m^j a^n / p_n``. The theorem holds verbatim with ``2 -> m``;
+the proof changes only where the dilation enters:
+(1) ``(1 - v z) q(v z) = 1 - v^m z^m`` and ``v^m = e^{lambda h_n}``, so
+``prod_i (1 - e^{lambda_i h_{n+1}} z) a^n(z) F(z^m) = b^n(z) [prod_i (1 - e^{lambda_i h_n} z^m)] F(z^m)``,
+i.e. ``Delta_{n+1} S_{a^n} = S_{b^n} Delta_n``, and ``g^n := m^{jn} Delta_n f^n = h_n^{-j} Delta_n f^n`` satisfies
+``g^{n+1} = S_{c^n} g^n``, ``c^n = m^j b^n``.
+(2) does not see the dilation (``h = h_n`` is any mesh size tending to 0).
+(3) For ``n >= N`` and ``M = m^{n-N}``: ``e^{lambda h_n M} = e^{lambda h_N}``, so
+``1 - e^{lambda h_N} z^M = (1 - e^{lambda h_n} z) q_M(z)``, ``q_M(z) = sum_{k<M} e^{lambda k h_n} z^k``,
+``||q_M||_1 = sum_{k<M} e^{Re(lambda) k h_n} <= M e^{|Re lambda| M h_n} = M e^{|Re lambda| h_N}``; hence
+``|Delta_N^{(M)} e^n| <= C M^j m^{-jn} sup |m^{jn} Delta_n e^n| = C m^{-jN} o(1) -> 0``: the recurrence
+``prod_i (E_{h_N} - e^{lambda_i h_N}) e = 0`` holds at the m-adic points of level ``>= N``, hence everywhere, and
+the uniqueness argument is unchanged (``h_N Z`` is contained in ``h_{N+1} Z``). ∎
+With ``Lambda = (0, ..., 0)`` this is the m-ary divided difference scheme ``(m/q)^j a^n`` (route 2 of :mod:`.ck`
+for arity m, which therefore also checks (H2)).
+
 What is computed
 ----------------
 :func:`exponential_factors` finds the largest conjugation-closed multiset ``Lambda`` (``0`` allowed,
@@ -77,6 +100,18 @@ Examples
 >>> r = gendiff_smoothness(s, 2)
 >>> r.status, r.value, r.witness["j"], r.witness["r"], r.witness["subset"]
 ('certified', True, 2, 0, (-I, I))
+
+Ternary (``q(v z) q(v̄ z)`` for ``+-i theta`` and ``+-2i theta``, no factor ``1+z+z^2``):
+
+>>> from analysis.levels.mary import level_scheme_mary
+>>> t = level_scheme_mary(
+...     "3*(1+2*c1*z+(1+2*c2)*z**2+2*c1*z**3+z**4)*(1+2*c2*z+(1+2*c4)*z**2+2*c2*z**3+z**4)"
+...     "/((3+4*c1+2*c2)*(3+4*c2+2*c4))/z**4", 3, where=["c1=cos(theta/3**(n+1))", "c2=cos(2*theta/3**(n+1))",
+...     "c4=cos(4*theta/3**(n+1))"]).scheme.subs({"theta": 1})
+>>> exponential_factors(t, 3).value
+(-2*I, -I, I, 2*I)
+>>> generalized_difference(t, (-sp.I, sp.I), 3)[1].witness["p_n"]
+['1 + 2*cos(h/3)*z + (2*cos(2*h/3) + 1)*z**2 + 2*cos(h/3)*z**3 + z**4']
 
 Algorithm
 ---------
@@ -109,7 +144,7 @@ from itertools import product
 
 import sympy as sp
 
-from .expbspline import _NotOfForm, _generators, _linear_in_h
+from .expbspline import _NotOfForm, _generators, _linear_in_h, factors_mary
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .series import smoothness, stationary_smoothness
@@ -166,8 +201,9 @@ def _is_real(lam: sp.Expr) -> bool | None:
     return True if im == 0 else (False if im.is_nonzero else None)
 
 
-def exponential_factors(s: LevelDependentScheme) -> Result:
-    """The largest conjugation-closed ``Lambda`` with ``prod_i (1 + e^{lambda_i 2^-(n+1)} z) | a^n`` for all n.
+def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
+    """The largest conjugation-closed ``Lambda`` with ``prod_i (1 + e^{lambda_i 2^-(n+1)} z) | a^n`` for all n
+    (``arity`` m: ``prod_i q_m(e^{lambda_i m^-(n+1)} z)``, ``q_m(x) = 1 + x + ... + x^(m-1)``, ``h = m^-n``).
 
     ``value``: the sorted tuple of frequencies (with multiplicity; ``0`` for each factor ``1+z``),
     certified (exact factorization over ``Q[z, h, exp(g h)]``; see the module). ``witness``:
@@ -181,19 +217,25 @@ def exponential_factors(s: LevelDependentScheme) -> Result:
     """
     prov = {"method": "exp rewriting + factorization over Q[z, h, exp(g h)] (sympy)", "scheme": s.slug}
     cache = s.__dict__.setdefault("_gendiff_cache", {})
-    if "factors" in cache:
-        return cache["factors"]
+    key = "factors" if arity == 2 else f"factors{arity}"
+    if key in cache:
+        return cache[key]
     try:
         coeffs, X, gens = _to_polynomial_ring(s.mask)
         num, _ = sp.fraction(sp.together(sum(c * _Z ** k for k, c in enumerate(coeffs))))
-        _, factors = sp.factor_list(num, _Z, H, *X) if X else sp.factor_list(num, _Z, H)
+        if arity != 2:
+            found = factors_mary(num, X, gens, arity)[0]
+        else:
+            _, factors = sp.factor_list(num, _Z, H, *X) if X else sp.factor_list(num, _Z, H)
     except Exception as e:  # noqa: BLE001 - a failed rewriting/factorization proves nothing: H1 not established
         why = str(e) if isinstance(e, _NotOfForm) else f"not a polynomial in z over Q(h, exp(c h)) ({e})"
         res = Result(value=None, status=INCONCLUSIVE, witness={"reason": why[:200]}, provenance=prov)
-        cache["factors"] = res
+        cache[key] = res
         return res
     mult: dict = {}
-    for f, m in factors:
+    for lam, _ in (found if arity != 2 else ()):
+        mult[lam] = mult.get(lam, 0) + 1
+    for f, m in (factors if arity == 2 else ()):
         if sp.degree(f, _Z) != 1:
             continue
         alpha, beta = f.coeff(_Z, 0), f.coeff(_Z, 1)
@@ -222,14 +264,50 @@ def exponential_factors(s: LevelDependentScheme) -> Result:
                  witness={"frequencies": [sp.sstr(x) for x in lams],
                           "nonzero": [sp.sstr(x) for x in lams if x != 0], "unpaired": unpaired,
                           "generators": [f"exp({sp.sstr(g)}*h)" for g in gens],
-                          "statement": "prod_i (1 + exp(lambda_i 2^-(n+1)) z) divides a^n(z) for every n >= 0"},
+                          "statement": ("prod_i (1 + exp(lambda_i 2^-(n+1)) z) divides a^n(z) for every n >= 0"
+                                        if arity == 2 else f"prod_i q(exp(lambda_i {arity}^-(n+1)) z) divides a^n(z) "
+                                        f"for every n >= 0, q(x) = 1 + x + ... + x^{arity - 1}")},
                  provenance=prov)
-    cache["factors"] = res
+    cache[key] = res
     return res
 
 
-def _real_factors(subset) -> list[tuple[list[sp.Expr], str]]:
+def _real_factors_mary(subset, m: int) -> list[tuple[list[sp.Expr], str]]:
+    """:func:`_real_factors` for arity ``m >= 3``: ``q_m(v z)``, ``v = e^{lambda h/m}``; a pair ``a +- ib`` gives
+    ``sum_j e^{a j h/m} (sum_k cos((2k-j) b h/m)) z^j``, ``+-mu`` real ``sum_j (sum_k cosh((2k-j) mu h/m)) z^j``
+    (``max(0, j-m+1) <= k <= min(j, m-1)``)."""
+    rest, out, tau = list(subset), [], H / m
+
+    def pair(f, b, a=0):
+        cs = [sp.exp(a * j * tau) * sum(f((2 * k - j) * b * tau) for k in range(max(0, j - m + 1), min(j, m - 1) + 1))
+              for j in range(2 * m - 1)]
+        return [sp.expand(c) for c in cs]
+
+    while rest:
+        lam = rest.pop(0)
+        if lam == 0:
+            cs = [sp.Integer(1)] * m
+        elif _is_real(lam) and -lam in rest:
+            rest.remove(-lam)
+            cs = pair(sp.cosh, abs(lam))
+        elif _is_real(lam):
+            cs = [sp.exp(lam * i * tau) for i in range(m)]
+        else:
+            rest.remove(_conjugate(lam))
+            a, b = sp.simplify(sp.re(lam)), sp.simplify(sp.im(lam))
+            cs = pair(sp.cos, -b if b.is_negative else b, a)
+        terms = [("1" if c == 1 else f"({sp.sstr(c)})" if c.is_Add else sp.sstr(c)) if j == 0 else
+                 ("z" if j == 1 else f"z**{j}") if c == 1 else
+                 (f"({sp.sstr(c)})" if c.is_Add else sp.sstr(c)) + ("*z" if j == 1 else f"*z**{j}")
+                 for j, c in enumerate(cs)]
+        out.append((cs, " + ".join(terms)))
+    return out
+
+
+def _real_factors(subset, arity: int = 2) -> list[tuple[list[sp.Expr], str]]:
     """``p_n`` for a conjugation-closed multiset, as real factors ``(coefficients in z, label)``."""
+    if arity != 2:
+        return _real_factors_mary(subset, arity)
     rest = list(subset)
     out = []
     while rest:
@@ -256,8 +334,9 @@ def _real_factors(subset) -> list[tuple[list[sp.Expr], str]]:
     return out
 
 
-def generalized_difference(s: LevelDependentScheme, subset) -> tuple[LevelDependentScheme, Result]:
-    """``c^n = 2^j a^n / p_n`` for the conjugation-closed multiset ``subset`` (``j = len(subset)``).
+def generalized_difference(s: LevelDependentScheme, subset, arity: int = 2) -> tuple[LevelDependentScheme, Result]:
+    """``c^n = 2^j a^n / p_n`` for the conjugation-closed multiset ``subset`` (``j = len(subset)``; ``arity`` m:
+    ``c^n = m^j a^n / p_n``, ``p_n = prod q_m(e^{lambda_i m^-(n+1)} z)``).
 
     Returns the scheme and the (H1) result: certified when ``a^n = p_n b^n`` is proved exactly
     (see the module), with ``p_n`` in real form as witness; otherwise an :class:`AnalysisError`.
@@ -270,7 +349,7 @@ def generalized_difference(s: LevelDependentScheme, subset) -> tuple[LevelDepend
     """
     coeffs = list(s.mask)
     labels = []
-    for p, label in _real_factors(subset):
+    for p, label in _real_factors(subset, arity):
         d = len(p) - 1
         q: list[sp.Expr] = []
         for k in range(len(coeffs) - d):
@@ -283,13 +362,13 @@ def generalized_difference(s: LevelDependentScheme, subset) -> tuple[LevelDepend
         coeffs = q
         labels.append(label)
     j = len(subset)
-    c = LevelDependentScheme(tuple(2 ** j * x for x in coeffs), s.start, s.params,
+    c = LevelDependentScheme(tuple(arity ** j * x for x in coeffs), s.start, s.params,
                              slug=f"{s.slug}-gendiff{j}", title=f"generalized {j}-th difference of {s.title}",
                              source=s.source)
     prefill_taylor(c)          # exact Taylor coefficients by series arithmetic (sympy.series is slow here)
     h1 = Result(value=True, status=CERTIFIED,
                 witness={"p_n": labels, "frequencies": [sp.sstr(x) for x in subset],
-                         "identity": "a^n(z) = p_n(z) b^n(z) for every n >= 0, h = 2^-n (exact: rational "
+                         "identity": f"a^n(z) = p_n(z) b^n(z) for every n >= 0, h = {arity}^-n (exact: rational "
                                      "identity in h and independent exp(g h))"},
                 provenance={"method": "synthetic division + exact zero test over Q(h, exp(g h))"})
     return c, h1
@@ -328,40 +407,41 @@ def _subsets(lams, j: int) -> list[tuple]:
     return sorted(out, key=key)
 
 
-def _h3(c: LevelDependentScheme, r: int, N: int) -> Result:
+def _h3(c: LevelDependentScheme, r: int, N: int, arity: int = 2) -> Result:
     """(H3): ``{S_{c^n}}`` C^r by Dyn–Levin 1995 (or ``S_c`` C^r when ``c^n`` does not depend on n)."""
     if all(H not in x.free_symbols for x in c.mask):
-        lim = stationary_smoothness(c.limit(), r)
+        lim = stationary_smoothness(c.limit(), r, arity=arity)
         ok = lim.is_certified and lim.value is True
         return Result(value=True if ok else None, status=CERTIFIED if ok else INCONCLUSIVE,
                       witness={"claim": f"C^{r}", "route": "c^n = c for every n (stationary)",
                                "hypotheses": {f"limit_C^{r}": lim}, "failed": [] if ok else [f"limit_C^{r}"]},
                       provenance={"scheme": c.slug})
-    return smoothness(c, None, r, N=N)
+    return smoothness(c, None, r, N=N, arity=arity)
 
 
 class GeneralizedDifferences:
     """The generalized difference schemes of one level-dependent scheme, built once (their Taylor
     caches are shared by every k and r)."""
 
-    def __init__(self, s: LevelDependentScheme):
+    def __init__(self, s: LevelDependentScheme, arity: int = 2):
         self.s = s
+        self.arity = arity
         self._schemes: dict = {}
 
     def factors(self) -> Result:
-        return exponential_factors(self.s)
+        return exponential_factors(self.s, self.arity)
 
     def get(self, subset) -> tuple[LevelDependentScheme, Result]:
         if subset not in self._schemes:
             try:
-                self._schemes[subset] = generalized_difference(self.s, subset)
+                self._schemes[subset] = generalized_difference(self.s, subset, self.arity)
             except AnalysisError as e:
                 self._schemes[subset] = (None, Result(value=None, status=INCONCLUSIVE, witness={"reason": str(e)}))
         return self._schemes[subset]
 
 
 def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | None = None, N: int = 40,
-                       cache: GeneralizedDifferences | None = None, max_tries: int = 6) -> Result:
+                       cache: GeneralizedDifferences | None = None, max_tries: int = 6, arity: int = 2) -> Result:
     """C^k of ``{S_{a^n}}`` by Dyn–Levin on a j-th generalized divided difference scheme (see the module).
 
     ``converges``: the (H2) result (C^0 of ``{S_{a^n}}``, e.g. from :func:`analysis.levels.ck.level_smoothness`);
@@ -370,19 +450,22 @@ def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | N
     ``Lambda``, ``subset``, ``j``, ``r``, ``hypotheses`` (H1, H2, H3 as Results) and ``theorem``; or
     ``value=None``, inconclusive, with ``failed`` (the hypotheses that failed, per try).
     """
-    cache = cache or GeneralizedDifferences(s)
+    cache = cache or GeneralizedDifferences(s, arity)
+    arity = cache.arity
     fac = cache.factors()
     prov = {"method": "generalized divided differences + Dyn-Levin 1995", "scheme": s.slug, "N": N}
     if fac.value is None or not fac.witness["nonzero"]:
         why = (fac.witness["reason"] if fac.value is None else
-               "no exponential factor 1 + exp(lambda 2^-(n+1)) z, lambda != 0 (closed under conjugation), divides "
+               ("no exponential factor 1 + exp(lambda 2^-(n+1)) z" if arity == 2 else
+                f"no exponential factor q(exp(lambda {arity}^-(n+1)) z)")
+               + ", lambda != 0 (closed under conjugation), divides "
                f"a^n(z) identically in n (frequencies found: {', '.join(fac.witness['frequencies']) or 'none'}"
                + (f"; unpaired: {', '.join(fac.witness['unpaired'])}" if fac.witness["unpaired"] else "") + ")")
         return Result(value=None, status=INCONCLUSIVE,
                       witness={"failed": ["H1: exponential factor p_n | a^n for every n"], "reason": why,
                                "Lambda": fac.value, "hypotheses": {"H1": fac}}, provenance=prov)
     if converges is None:
-        converges = smoothness(s, None, 0, N=N)
+        converges = smoothness(s, None, 0, N=N, arity=arity)
     h2 = converges if converges.is_certified and converges.value is True else Result(
         value=None, status=INCONCLUSIVE, witness={"reason": "convergence of {S_(a^n)} not certified"})
     if not h2.is_certified:
@@ -402,7 +485,7 @@ def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | N
                               "failed": [f"H1: {h1.witness['reason']}"]})
                 continue
             try:
-                h3 = _h3(c, r, N)
+                h3 = _h3(c, r, N, arity)
             except AnalysisError as e:
                 h3 = Result(value=None, status=INCONCLUSIVE, witness={"failed": [str(e)]})
             if h3.is_certified and h3.value is True:
@@ -412,7 +495,7 @@ def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | N
                                        "hypotheses": {"H1": h1, "H2": h2, "H3": h3},
                                        "theorem": (f"p_n = {' * '.join(h1.witness['p_n'])} divides a^n for every n "
                                                    f"(frequencies {names}), {{S_(a^n)}} converges, the generalized "
-                                                   f"divided difference scheme c^n = 2^{j} a^n/p_n is C^{r} "
+                                                   f"divided difference scheme c^n = {arity}^{j} a^n/p_n is C^{r} "
                                                    f"(Dyn-Levin 1995)  =>  C^{j + r} (generalized differences; "
                                                    "proof in analysis.levels.gendiff)")},
                               provenance=prov)

@@ -472,7 +472,7 @@ def _residue_groups(s: LevelDependentScheme, arity: int = 2) -> dict[int, list[i
     return groups
 
 
-def leading_asymptotics(s: LevelDependentScheme) -> Result:
+def leading_asymptotics(s: LevelDependentScheme, arity: int = 2) -> Result:
     """``||S_{a^n} - S_a||_inf = C 2^{-q n} + O(2^{-(q+1) n})``: the exact ``C`` and ``q``.
 
     ``C = max_r sum_{k = r mod 2} |g_{k,q}|`` with ``g_{k,q}`` the exact ``h^q`` Taylor
@@ -482,12 +482,12 @@ def leading_asymptotics(s: LevelDependentScheme) -> Result:
     q = s.order()
     rows = s.taylor(q + 1)
     per_res = {}
-    for r, ks in _residue_groups(s).items():
+    for r, ks in _residue_groups(s, arity).items():
         per_res[r] = sp.simplify(sum(sp.Abs(rows[k][q]) for k in ks))
     vals = list(per_res.values())
-    C = vals[0] if sp.simplify(vals[0] - vals[1]) == 0 else sp.Max(*vals)
+    C = vals[0] if all(sp.simplify(vals[0] - v) == 0 for v in vals[1:]) else sp.Max(*vals)
     return Result(value=C, status=CERTIFIED,
-                  witness={"order": q, "rate": f"{sp.sstr(C)} * 2^(-{q}n)", "per_residue": per_res,
+                  witness={"order": q, "rate": f"{sp.sstr(C)} * {arity}^(-{q}n)", "per_residue": per_res,
                            "leading_coefficients": {s.start + k: rows[k][q] for k in range(len(rows))
                                                     if rows[k][q] != 0}},
                   provenance={"method": "exact sympy series in h = 2^-n", "scheme": s.slug})

@@ -15,7 +15,11 @@ norms use the ``m`` residue classes and ``h_n = m^-n``.
   same support at every level, the limit ``S_a`` certified C^k (:func:`analysis.regularity.mary.smoothness_mary`),
   and ``sum_n m^{kn} ||S_{a^n} - S_a|| < oo``. (Dyn–Levin 1995 state it for ``m = 2``; their proof uses the
   dilation only through ``||S^n||``-type bounds and ``2^{-n}`` mesh sizes, and carries over with ``2 -> m``.)
-  "Not C^k" is never concluded here: the theorem is one-sided.
+  "Not C^k" is never concluded by this one-sided theorem;
+* :func:`level_smoothness_mary` — the C^k verdict for every k and "not C^k" where a theorem gives it: the binary
+  chain :func:`analysis.levels.ck.level_smoothness` with ``arity = m`` (Dyn–Levin direct, on the m-ary divided
+  difference schemes, on the generalized ones; m-ary exponential B-spline schemes: "not C^d", hence C^(d-1)
+  exactly).
 
 Example: the ternary exponential B-spline of degree 2 (derived, see :func:`ternary_exponential_bspline_2`).
 
@@ -70,8 +74,8 @@ from ..algebra.mary import check_arity
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, ball_to_interval, distance, resolve_where
-from .bounds import _exact_zero
-from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes
+from .divided import divide_by_q
+from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes, smoothness
 
 __all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
            "weighted_series_boxes_mary", "difference_scheme_mary", "same_support_mary", "smoothness_levels_mary",
@@ -234,28 +238,11 @@ def difference_scheme_mary(s: LevelDependentMary, j: int = 1) -> LevelDependentM
     """
     if isinstance(j, bool) or not isinstance(j, int) or j < 0:
         raise AnalysisError(f"difference must be a non-negative integer, not {j!r}")
-    m = s.arity
-    coeffs = list(s.mask)               # ascending powers from s.start
-    q = "1+" + "+".join(f"z^{i}" if i > 1 else "z" for i in range(1, m))
-    for _ in range(j):
-        if len(coeffs) < m:
-            raise AnalysisError(f"{q} does not divide a^n(z): the mask is too short")
-        r = list(coeffs)
-        quot = [sp.Integer(0)] * (len(r) - m + 1)
-        for k in range(len(r) - 1, m - 2, -1):          # synthetic division from the top power
-            c = r[k]
-            quot[k - m + 1] = c
-            for i in range(m):
-                r[k - m + 1 + i] = r[k - m + 1 + i] - c
-        for x in r[: m - 1]:
-            if not _exact_zero(sp.expand(x)):
-                raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
-                                    f"{sp.sstr(sp.simplify(x))})")
-        coeffs = [sp.cancel(m * c) if sp.sympify(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
+    coeffs = divide_by_q(s.mask, s.arity, j)
     sc = s.scheme
     return LevelDependentMary(LevelDependentScheme(tuple(coeffs), sc.start, sc.params, slug=f"{sc.slug}-diff{j}",
                                                    title=f"{j}-th divided difference of {sc.title or sc.slug}",
-                                                   source=sc.source), m)
+                                                   source=sc.source), s.arity)
 
 
 # --------------------------------------------------------------------------------------------
@@ -388,58 +375,36 @@ def same_support_mary(s: LevelDependentMary, values, *, N: int = 30) -> Result:
                   provenance={"method": f"arb enclosures (n < {N}) + Taylor tail (n >= {N})", "arity": s.arity})
 
 
-def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30,
-                           budget_seconds: float = 10.0) -> Result:
-    """C^k of ``{S_{a^n}}`` by the m-ary Dyn–Levin theorem, every hypothesis checked (module docstring).
+def smoothness_levels_mary(s: LevelDependentMary, values, k: int, *, N: int = 30) -> Result:
+    """C^k of ``{S_{a^n}}`` by the m-ary Dyn–Levin theorem, every hypothesis checked (module docstring):
+    :func:`analysis.levels.series.smoothness` with ``arity = m``.
 
     ``value`` True (certified) or None (inconclusive, ``witness["failed"]`` naming the hypotheses).
-    """
-    from ..regularity.mary import NotConvergentMary, smoothness_mary
 
-    env = _parse_values(s.scheme, values)
-    a = s.limit()
-    point = {p.name: env[p.name] for p in a.params if p.name in env}
-    if any(isinstance(v, tuple) for v in point.values()):
-        raise AnalysisError("the limit symbol depends on a boxed parameter: give exact values")
-    a = a.subs(point) if point else a
-    if a.params:
-        raise AnalysisError(f"give values for {', '.join(p.name for p in a.params)}")
-    try:
-        lim = smoothness_mary(a, s.arity, k, budget_seconds=budget_seconds)
-    except NotConvergentMary as exc:
-        lim = exc.result()
-    ser = weighted_series_mary(s, env, k, N=N)
-    sup = same_support_mary(s, env, N=N)
-    hyps = {"same_support": sup, f"limit_C^{k}": lim, f"series_k={k}": ser}
-    failed = [name for name, r in hyps.items()
-              if not (r.is_certified and (r.value is True or r.witness.get("verdict") == "convergent"))]
-    return Result(value=True if not failed else None, status=CERTIFIED if not failed else INCONCLUSIVE,
-                  witness={"claim": f"C^{k}", "hypotheses": hyps, "failed": failed,
-                           "theorem": f"Dyn-Levin 1995 with dilation {s.arity}: same support, S_a C^{k}, "
-                                      f"sum {s.arity}^({k}n)||S_(a^n)-S_a|| < oo  =>  C^{k}"},
-                  provenance={"scheme": s.slug, "arity": s.arity, "parameters": env})
+    >>> r = smoothness_levels_mary(ternary_exponential_bspline_2(), {"theta": 1}, 1)
+    >>> r.status, sorted(r.witness["hypotheses"])
+    ('certified', ['limit_C^1', 'same_support', 'series_m=1'])
+    """
+    return smoothness(s.scheme, values, k, N=N, arity=s.arity)
 
 
 def level_smoothness_mary(s: LevelDependentMary, values=None, *, k_max: int | None = None, N: int = 30) -> Result:
-    """The C^k verdict for ``k = 0, 1, ...`` (up to ``k_max`` or the first undecided ``k``).
+    """The C^k verdict for every ``k`` up to the limit's smoothness, and "not C^k" where a theorem gives it:
+    :func:`analysis.levels.ck.level_smoothness` with ``arity = m`` (Dyn–Levin direct, on the m-ary divided
+    difference schemes ``(m/q_m)^j a^n`` and on the generalized ones ``m^j a^n/p_n``; m-ary exponential B-spline
+    schemes: "not C^d", so "C^(d-1) exactly").
 
-    ``value``: the largest ``k`` with C^k certified (``-1`` if convergence is not certified) — a lower bound.
+    ``value``: the largest ``k`` with C^k certified for every ``k' <= k`` (``-1``: convergence not certified);
+    ``witness``: as :func:`analysis.levels.ck.level_smoothness` (``verdicts``, ``limit``, ``not_C^k``, ``exact``).
+
+    >>> r = level_smoothness_mary(ternary_exponential_bspline_2(), {"theta": 1})
+    >>> r.value, r.witness["exact"], [v["verdict"] for v in r.witness["verdicts"]]
+    (1, True, ['C^0', 'C^1', 'not C^2'])
     """
-    from ..algebra.mary import smoothing_factor_mary
+    from .ck import level_smoothness
 
-    a = s.limit()
     env = _parse_values(s.scheme, values)
-    point = {p.name: env[p.name] for p in a.params if p.name in env}
-    a = a.subs(point) if point else a
-    top = smoothing_factor_mary(a, s.arity).value - 1
-    top = top if k_max is None else min(top, k_max)
-    verdicts, best = [], -1
-    for k in range(0, max(top, 0) + 1):
-        r = smoothness_levels_mary(s, values, k, N=N)
-        verdicts.append({"k": k, "status": r.status, "failed": r.witness["failed"], "result": r})
-        if not r.is_certified:
-            break
-        best = k
-    return Result(value=best, status=CERTIFIED if best >= 0 else INCONCLUSIVE,
-                  witness={"verdicts": verdicts, "limit": a, "arity": s.arity},
-                  provenance={"scheme": s.slug, "arity": s.arity})
+    boxed = [k for k, v in env.items() if isinstance(v, tuple)]
+    if boxed:
+        raise AnalysisError(f"the C^k verdicts need exact values: give --param {boxed[0]}=VALUE, not a box")
+    return level_smoothness(s.scheme, env, k_max=k_max, N=N, arity=s.arity)

@@ -68,6 +68,7 @@ from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _re
                               taylor_models, workprec)
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
+from .divided import divided_difference, q_label
 
 
 def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
@@ -284,16 +285,17 @@ def adaptive_boxes(boxes: list[dict], decide: Callable[[dict], Any], decided: Ca
     return done
 
 
-def _adaptive_boxes(s, boxes, m, N, J, depth):
-    """:func:`adaptive_boxes` of :func:`_box_series` (binary): the boxes and their outcomes."""
-    done = adaptive_boxes(boxes, lambda b: _box_series(s, b, m, N, J), lambda o: o["verdict"] != "unknown", depth)
+def _adaptive_boxes(s, boxes, m, N, J, depth, arity: int = 2):
+    """:func:`adaptive_boxes` of :func:`_box_series`: the boxes and their outcomes."""
+    done = adaptive_boxes(boxes, lambda b: _box_series(s, b, m, N, J, arity), lambda o: o["verdict"] != "unknown",
+                          depth)
     return [b for b, _ in done], [o for _, o in done]
 
 
 def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, m: int = 0, *,
                     difference: int = 0, N: int = 40, J: int | None = None, pieces: int = 1,
-                    depth: int = 0) -> Result:
-    """Decide and enclose ``sum_{n>=0} 2^{mn} ||S_{a^n} - S_a||_inf``.
+                    depth: int = 0, arity: int = 2) -> Result:
+    """Decide and enclose ``sum_{n>=0} 2^{mn} ||S_{a^n} - S_a||_inf`` (``arity`` M: ``M^{mn}``, ``h = M^-n``).
 
     Parameters
     ----------
@@ -321,11 +323,11 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
         raise AnalysisError("N must be an integer >= 2")
     _check_difference(difference)
     if difference:
-        s = s.difference(difference)
+        s = divided_difference(s, difference, arity)
     env = _parse_values(s, values)
-    lead = leading_asymptotics(s)
+    lead = leading_asymptotics(s, arity)
     q = lead.witness["order"]
-    boxes, outs = _adaptive_boxes(s, _split(env, pieces), m, N, J, depth)
+    boxes, outs = _adaptive_boxes(s, _split(env, pieces), m, N, J, depth, arity)
     verdicts = {o["verdict"] for o in outs}
     C = lead.value
     point = {k: v for k, v in env.items() if not isinstance(v, tuple)}
@@ -342,12 +344,12 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
         witness.update({"verdict": "convergent",
                         "tail": {"N": N, "K": max(x["K"] for x in outs), "ratio": sp.sstr(o["ratio"]),
                                  "bound": max(x["tail_bound"] for x in outs),
-                                 "statement": f"2^(m n)||S_(a^n) - S_a|| <= K r^n for n >= {N}"}})
+                                 "statement": f"{arity}^(m n)||S_(a^n) - S_a|| <= K r^n for n >= {N}"}})
         return Result(lower=lo, upper=hi, status=CERTIFIED, witness=witness, provenance=prov)
     if verdicts == {"divergent"}:
         witness.update({"verdict": "divergent",
                         "term_lower_bound": min(o["term_lower_bound"] for o in outs),
-                        "statement": (f"2^(m n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} "
+                        "statement": (f"{arity}^(m n)||S_(a^n) - S_a|| >= c > 0 for all n >= {N} "
                                       f"(m = {m} >= q = {q})")})
         return Result(value=sp.oo, status=CERTIFIED, witness=witness, provenance=prov)
     witness.update({"verdict": "unknown", "per_box": [o["verdict"] for o in outs],
@@ -391,8 +393,11 @@ register_regularity_hook(_holder_hook)
 
 
 def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
-                          box: tuple[str, Any, Any] | None = None) -> Result:
+                          box: tuple[str, Any, Any] | None = None, arity: int = 2) -> Result:
     """Certify that the stationary scheme ``S_a`` is C^m (Dyn–Levin norm test, then the hooks).
+
+    ``arity`` M >= 3: :func:`analysis.regularity.mary.smoothness_mary` (the m-ary norm test, exact spectral
+    radii, JSR bounds; certified True or False), exact values only.
 
     ``box = (name, lo, hi)``: the symbol has one free parameter and C^m is certified on the whole
     closed interval ``[lo, hi]`` (exact norm sets, :mod:`analysis.stationary.normset`).
@@ -404,6 +409,17 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
 
     if box is None and not a.is_numeric:
         raise AnalysisError("the limit symbol has free parameters: give their values")
+    if arity != 2:
+        from ..regularity.mary import NotConvergentMary, smoothness_mary
+
+        if box is not None:
+            raise AnalysisError("a parameter box for the limit of an m-ary scheme: give exact values")
+        try:
+            r = smoothness_mary(a, arity, m)
+        except NotConvergentMary as exc:
+            r = exc.result()
+        return Result(value=r.value, status=r.status, witness={"smooth": r.value, **r.witness},
+                      provenance=r.provenance)
     k = smoothing_factor(a, exceptional=False).value
     if k < m + 1:
         return Result(value=False, status=CERTIFIED,
@@ -441,7 +457,7 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                   provenance={"method": "Dyn-Levin norm test"})
 
 
-def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0) -> Result:
+def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0, arity: int = 2) -> Result:
     """Certify that ``a^n`` and ``a`` have the same support for every level ``n >= 0``.
 
     Outside the limit's support the level coefficient must vanish identically; inside, it is
@@ -450,11 +466,11 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0
     interval enclosures tighten on smaller boxes), at most ``depth`` times; certified when every
     sub-box is.
     """
-    r = _same_support_box(s, values, N=N)
+    r = _same_support_box(s, values, N=N, arity=arity)
     env = _parse_values(s, values)
     if r.is_certified or depth <= 0 or not any(isinstance(v, tuple) for v in env.values()):
         return r
-    parts = [same_support(s, c, N=N, depth=depth - 1) for c in _bisect(env)]
+    parts = [same_support(s, c, N=N, depth=depth - 1, arity=arity) for c in _bisect(env)]
     if all(p.is_certified for p in parts):
         wit = {"same_support": True, "support": (s.start, s.end),
                "sub_boxes": sum(p.witness.get("sub_boxes", 1) for p in parts)}
@@ -544,13 +560,13 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     return None
 
 
-def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int):
+def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int, arity: int = 2):
     """``(target, m - difference, values, limit)``: the scheme Dyn–Levin's hypotheses are checked on (the
     ``difference``-th divided difference scheme), the order left, the parsed values and the target's limit
     with the exact values substituted (shared by :func:`smoothness` and
     :func:`analysis.levels.region.smoothness_on_region`)."""
     _check_difference(difference)
-    target = s.difference(difference) if difference else s
+    target = divided_difference(s, difference, arity) if difference else s
     mm = m - difference
     if mm < 0:
         raise AnalysisError("difference order larger than m")
@@ -573,8 +589,13 @@ def _dyn_levin_hypotheses(sup: Result, lim: Result, ser: Result, mm: int) -> tup
 
 
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,
-               difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0) -> Result:
+               difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0,
+               arity: int = 2) -> Result:
     """C^m of ``{S_{a^n}}`` by Dyn–Levin 1995 (Theorem 1.1 of seed 003), hypotheses checked.
+
+    ``arity`` M: the theorem with dilation M (``h = M^-n``, weight ``M^{mn}``, the limit's C^m by the m-ary
+    analysis; :mod:`analysis.levels.mary` says why Dyn–Levin's proof carries over), the divided difference
+    scheme ``(M/(1+...+z^(M-1)))^k a^n`` (:mod:`analysis.levels.divided`).
 
     With ``difference = k`` the theorem is applied to the k-th divided difference scheme
     ``e^n = (2/(1+z))^k a^n`` with weight ``2^{(m-k) n}`` and C^{m-k} of ``e = lim e^n``;
@@ -584,7 +605,7 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     ``witness["hypotheses"]`` holds a Result for each hypothesis; the verdict is certified only
     when all are.
     """
-    target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference)
+    target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference, arity)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
     box = None
     if a_sub.params:
@@ -593,15 +614,18 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
             box = (names[0],) + tuple(boxed[names[0]])
         else:
             raise AnalysisError(f"give values for {', '.join(names)}")
-    lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box)
-    ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth)
-    sup = same_support(target, env, N=N, depth=depth)
+    lim = stationary_smoothness(a_sub, mm, L_max=L_max, box=box, arity=arity)
+    ser = weighted_series(target, env, mm, N=N, pieces=pieces, depth=depth, arity=arity)
+    sup = same_support(target, env, N=N, depth=depth, arity=arity)
     hyps, ok, why = _dyn_levin_hypotheses(sup, lim, ser, mm)
+    q = "(1+z)" if arity == 2 else f"({q_label(arity)})"
     route = ("direct" if not difference else
-             f"{difference}-th divided difference scheme e^n = (2/(1+z))^{difference} a^n")
+             f"{difference}-th divided difference scheme e^n = ({arity}/{q})^{difference} a^n")
     return Result(value=ok or None, status=CERTIFIED if ok else INCONCLUSIVE,
                   witness={"claim": f"C^{m}", "route": route, "hypotheses": hyps,
-                           "theorem": "Dyn-Levin 1995 (seed 003 Theorem 1.1): same support, "
-                                      "S_a C^m, sum 2^(mn)||S_(a^n)-S_a|| < oo  =>  C^m",
+                           "theorem": ("Dyn-Levin 1995 (seed 003 Theorem 1.1): same support, "
+                                       "S_a C^m, sum 2^(mn)||S_(a^n)-S_a|| < oo  =>  C^m" if arity == 2 else
+                                       f"Dyn-Levin 1995 with dilation {arity}: same support, S_a C^{m}, "
+                                       f"sum {arity}^({m}n)||S_(a^n)-S_a|| < oo  =>  C^{m}"),
                            "failed": why},
                   provenance={"scheme": s.slug, "parameters": env})

@@ -1,0 +1,93 @@
+"""Divided difference schemes of level-dependent schemes of any arity: ``(m/q_m)^j a^n``, ``q_m = 1+z+...+z^(m-1)``.
+
+One implementation for every arity ``m``: the binary case is
+:meth:`analysis.levels.level_dependent.LevelDependentScheme.difference` (``(2/(1+z))^j a^n``, unchanged);
+``m >= 3`` divides by ``q_m`` with the synthetic division of :func:`divide_by_q` (used by
+:func:`analysis.levels.mary.difference_scheme_mary` and by the C^k routes of :mod:`.ck`).
+
+Why ``m/q_m``. With ``f^{n+1}(z) = a^n(z) f^n(z^m)`` and ``(1-z) a^n(z) = (1-z^m) a^n(z)/q_m(z)``,
+``m^{n+1} (1-z) f^{n+1}(z) = (m a^n/q_m)(z) * m^n (1-z^m) f^n(z^m)``: the scaled differences ``m^n Delta f^n`` are
+refined by ``e^n = m a^n/q_m``. The stationary m-ary difference schemes of :mod:`analysis.stationary.mary`,
+``a_k = (m z^{m-1}/q_m)^k a``, are the same up to the shift ``z^{(m-1)k}``, which norms and smoothness do not see
+(here the lowest exponent is kept, as the binary "divided" spelling does).
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.levels.level_dependent import H
+>>> divide_by_q([sp.Integer(1), 1 + H, 1 + H, H], 3, 1)          # (1+z+z^2)(1 + h z)
+[3, 3*h]
+>>> divide_by_q([sp.Integer(1), 1 + H, sp.Integer(1)], 3, 1)
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: 1+z+z^2 does not divide a^n(z) identically in n (remainder coefficient h)
+
+References
+----------
+N. Dyn, *Subdivision schemes in CAGD*, in: Advances in Numerical Analysis II, Oxford (1992) 36-104 (divided
+difference schemes, binary); C. Conti, K. Hormann, *Polynomial reproduction for univariate subdivision schemes of
+any arity*, J. Approx. Theory 163 (2011) 413-437 (m-ary symbols).
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from .level_dependent import H, LevelDependentScheme
+from ..result import AnalysisError
+
+__all__ = ["q_label", "divide_by_q", "divided_difference"]
+
+
+def _exact_zero(expr: sp.Expr) -> bool:
+    """``expr == 0`` proved by sympy simplification (plain, exp-rewritten, trig-expanded); False: no proof."""
+    e = sp.sympify(expr)
+    if e == 0:
+        return True
+    for f in (lambda x: sp.simplify(x), lambda x: sp.simplify(x.rewrite(sp.exp)),
+              lambda x: sp.simplify(sp.expand_trig(x))):
+        try:
+            if f(e) == 0:
+                return True
+        except Exception:  # noqa: BLE001 - a failed simplification is not a proof either way
+            continue
+    return False
+
+
+def q_label(m: int) -> str:
+    """``1+z+...+z^(m-1)`` as printed in messages."""
+    return "1+" + "+".join(f"z^{i}" if i > 1 else "z" for i in range(1, m))
+
+
+def divide_by_q(coeffs, m: int, j: int) -> list:
+    """The coefficients of ``(m/q_m)^j a^n`` (ascending, same lowest exponent) of ``a^n`` (``coeffs`` ascending).
+
+    Each remainder must simplify to 0 identically in ``h`` and the parameters, else an :class:`AnalysisError`.
+    """
+    coeffs = list(coeffs)
+    q = q_label(m)
+    for _ in range(j):
+        if len(coeffs) < m:
+            raise AnalysisError(f"{q} does not divide a^n(z): the mask is too short")
+        r = list(coeffs)
+        quot = [sp.Integer(0)] * (len(r) - m + 1)
+        for k in range(len(r) - 1, m - 2, -1):          # synthetic division from the top power
+            c = r[k]
+            quot[k - m + 1] = c
+            for i in range(m):
+                r[k - m + 1 + i] = r[k - m + 1 + i] - c
+        for x in r[: m - 1]:
+            if not _exact_zero(sp.expand(x)):
+                raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
+                                    f"{sp.sstr(sp.simplify(x))})")
+        coeffs = [sp.cancel(m * c) if sp.sympify(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
+    return coeffs
+
+
+def divided_difference(s: LevelDependentScheme, j: int, arity: int = 2) -> LevelDependentScheme:
+    """``(m/q_m)^j a^n`` as a :class:`LevelDependentScheme` (``arity = 2``: ``s.difference(j)``, unchanged)."""
+    if arity == 2:
+        return s.difference(j)
+    coeffs = divide_by_q(s.mask, arity, j)
+    return LevelDependentScheme(tuple(coeffs), s.start, s.params, slug=f"{s.slug}-diff{j}",
+                                title=f"{j}-th divided difference of {s.title or s.slug}", source=s.source)
