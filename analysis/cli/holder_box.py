@@ -51,7 +51,8 @@ def refuse_box_options(args) -> None:
     """``--pieces``, ``--depth``, ``--open`` without ``--box``: a one-line error."""
     given = [f"--{x}" for x in ("pieces", "depth", "open") if getattr(args, x, None) is not None]
     if given:
-        raise AnalysisError(f"{', '.join(given)} go with --box NAME=LOW,HIGH (C^k on a parameter box)")
+        raise AnalysisError(f"{', '.join(given)} need{'s' if len(given) == 1 else ''} --box NAME=LOW,HIGH "
+                            "(C^k on a parameter box)")
 
 
 def _scheme(args):
@@ -60,7 +61,9 @@ def _scheme(args):
     try:
         s = level_scheme_from_args(args, None, keep_params=True)
     except AnalysisError as exc:
-        if "as a function of h = 2^-n" in str(exc) or str(exc).startswith("the support of a^n grows"):
+        if str(exc).startswith("the support of a^n grows"):
+            return None, str(exc)
+        if "as a function of h = 2^-n" in str(exc):
             raise AnalysisError(f"{exc}; --box is available for levels entering through 2^-n with one bounded "
                                 "support (give --param values)") from None
         raise
@@ -70,7 +73,7 @@ def _scheme(args):
     if is_stationary(s):
         raise AnalysisError("the scheme does not depend on the level n: --box is for level-dependent schemes "
                             "(stationary families: `subdiv range --within LOW,HIGH`)")
-    return s
+    return s, None
 
 
 def _verdict_lines(r) -> list[str]:
@@ -120,8 +123,14 @@ def holder_box(args) -> None:
         raise AnalysisError("--box is available for binary level-dependent schemes only (not with --arity)")
     pieces, depth = _options(args)
     k_max = k_max_arg(args)
-    s = _scheme(args)
+    s, growing = _scheme(args)
+    if s is None:
+        from .levels import holder_growing_support
+
+        return holder_growing_support(args, growing)
     values = param_box_values(args, "theta=1/10,pi/2")
+    if args.open is not None and not isinstance(values.get(args.open), tuple):
+        raise AnalysisError(f"--open {args.open} needs a --box for {args.open}")
     r = level_smoothness_box(s, values, pieces=pieces, depth=depth, k_max=k_max, open_param=args.open)
     lim = r.witness["limit"]
     h = sp.Symbol("h", positive=True)

@@ -18,8 +18,8 @@ follows from a finite cover of the box by sub-boxes, each certified by *some* ro
 2′. **generalized divided differences** (:mod:`.gendiff`): (H1) ``p_n | a^n`` proved *exactly,
    identically in n and in the parameters* (the factorization over ``Q(params)[z, h, exp(g h)]``;
    a parameter whose box excludes 0 gets its sign as an assumption, so ``+-i theta`` pairs are
-   recognised as conjugate), (H2) convergence on the whole box (the C^0 verdict of this cover),
-   (H3) Dyn–Levin on ``c^n = 2^j a^n/p_n`` on the sub-box as in 1.
+   recognised as conjugate), (H2) convergence (the C^0 cover of the whole box, else Dyn–Levin
+   direct on the sub-box), (H3) Dyn–Levin on ``c^n = 2^j a^n/p_n`` on the sub-box as in 1.
 
 Asymptotic similarity (route 3 of :mod:`.ck`) is not tried on boxes: its JSR condition
 ``alpha(S_a) > k`` is a point computation.
@@ -296,9 +296,14 @@ def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
                                             "and in the parameters")
         return {"route": route, "failed": ["H1: exponential factor p_n | a^n for every n"], "why": why}
     conv = ctx.converges
-    if conv is None or not conv.is_certified:
-        return {"route": route, "failed": ["H2: convergence of {S_(a^n)} on the whole box"],
-                "why": "C^0 is not certified on the whole box"}
+    if conv is None or not conv.is_certified:          # H2 on this sub-box only: Dyn-Levin direct there
+        d = ctx.dyn_levin(ctx.s, box, 0)
+        if not _ok(d):
+            return {"route": route, "failed": ["H2: convergence of {S_(a^n)} on the sub-box"],
+                    "why": f"C^0 is not certified on the sub-box ({d.witness['why']})"}
+        conv = Result(value=True, status=CERTIFIED, witness={"statement": "{S_(a^n)} converges on the sub-box",
+                                                             "route": "Dyn-Levin direct", **d.witness},
+                      provenance=d.provenance)
     fails = []
     for j in range(min(k, len(fac.value)), 0, -1):
         for subset in _subsets(fac.value, j)[:max_tries]:
@@ -321,7 +326,7 @@ def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
 def _split_names(ctx: _Context, outcome: dict, box: dict) -> list[str]:
     """The boxed parameters worth bisecting after ``outcome``: a failed series, support or H3 may
     improve on smaller boxes in every parameter, a failed limit test only in the limit's parameter;
-    H1/H2 (exact, whole box) and a parameter-free limit do not depend on the sub-box."""
+    H1 (exact, identically in the parameters) and a parameter-free limit do not depend on the sub-box."""
     boxed = [k for k, v in box.items() if isinstance(v, tuple)]
     lim = {p.name for p in ctx.s.limit().params}
     names: set[str] = set()
@@ -329,7 +334,7 @@ def _split_names(ctx: _Context, outcome: dict, box: dict) -> list[str]:
         for f in t["failed"]:
             if f.startswith("limit_C"):
                 names |= lim
-            elif not (f.startswith("H1") or f.startswith("H2")):
+            elif not f.startswith("H1"):
                 names |= set(boxed)
     return [k for k in boxed if k in names]
 
@@ -514,6 +519,11 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
                             "analysis.levels.ck.level_smoothness")
     if len(boxes) > 2:
         raise AnalysisError(f"at most two parameter boxes, not {len(boxes)} ({', '.join(boxes)})")
+    for k in boxes:
+        s._param(str(k))                            # an unknown name: one-line error
+    missing = sorted(set(s.param_names) - set(boxes))
+    if missing:
+        raise AnalysisError(f"give a value or a box for {', '.join(missing)} (--param NAME=VALUE or --box NAME=LOW,HIGH)")
     env = _parse_values(s, boxes)
     if open_param is not None and not isinstance(env.get(open_param), tuple):
         raise AnalysisError(f"open_param {open_param} needs a box for {open_param}")
