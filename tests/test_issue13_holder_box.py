@@ -136,7 +136,9 @@ def test_cli_text_and_json(capsys):
     (["--box", "t=1,2", "--pieces", "0"], "--pieces must be between 1 and 16"),
     (["--box", "t=-1,2"], "outside the declared domain"),
     (["--box", "t=1,2", "--arity", "3"], "binary level-dependent schemes only"),
-], ids=["box-and-param", "empty", "unknown", "open-unboxed", "depth-without-box", "pieces", "domain", "arity"])
+    (["--box", "t=1,2", "--open", "t"], "the limit does not depend on t"),
+], ids=["box-and-param", "empty", "unknown", "open-unboxed", "depth-without-box", "pieces", "domain", "arity",
+        "open-not-in-limit"])
 def test_cli_bad_input_one_line(capsys, argv, message):
     assert main(["holder", "--scheme", "exp-cubic-trig", *argv]) == 2
     err = capsys.readouterr().err

@@ -534,6 +534,9 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
     prefill_taylor(s)
     a = s.limit()
+    if open_param is not None and open_param not in {p.name for p in a.params}:
+        raise AnalysisError(f"the limit does not depend on {open_param}: --open names the limit's parameter "
+                            f"(its parameters: {', '.join(p.name for p in a.params) or 'none'})")
     ctx = _Context(s, env, open_param, N, L_max)
     k_lim, not_k, a_smooth, top = _limit_top(ctx, a, k_max)
     verdicts, best = [], -1
@@ -562,7 +565,7 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
                                         "transfers 'not C^k' to the level-dependent scheme on the box "
                                         f"(exponential B-spline route: {cert.witness.get('reason')})")})
         cert = None
-    region = _describe(env, open_param)
+    region = _describe({**point, **env}, open_param)
     exact = cert is not None and best == cert.witness["k"] - 1
     lim_info = {"symbol": a, "C^k_certified_up_to": k_lim if not a.params else None, "not_C^k": not_k,
                 "parametric": [p.name for p in a.params]}
