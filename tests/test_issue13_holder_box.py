@@ -57,6 +57,18 @@ def test_issue_example_theta_box_c1_exactly_and_pairs_frequencies():
     assert p.value == r.value and p.witness["exact"]
 
 
+def test_route_2prime_on_a_box_through_zero():
+    """Degree-3 exponential B-spline from +-i theta, +-2i theta (no frequency 0: (1+z) does not divide
+    a^n, only generalized differences reach C^2): C^2 and not C^3 for every theta in [-1, 1]."""
+    s = LevelDependentScheme.from_symbol("2*(1+2*c1*z+z**2)*(1+2*c2*z+z**2)/((2+2*c1)*(2+2*c2))/z**2",
+                                         where=["c1=cos(theta/2**(n+1))", "c2=cos(2*theta/2**(n+1))"])
+    r = level_smoothness_box(s, {"theta": (-1, 1)})
+    assert (r.value, r.status, r.witness["exact"]) == (2, "certified", True)
+    c2 = r.witness["verdicts"][2]
+    assert any("generalized" in c["route"] for c in c2["cover"])
+    assert any(_contains(c["box"], "theta", 0) for c in c2["cover"])
+
+
 def test_box_signs_only_when_the_box_excludes_zero():
     s = LevelDependentScheme.from_symbol(ISSUE_SYMBOL, where=["c=cos(theta/2**(n+1))"])
     assert _with_box_signs(s, {"theta": (sp.Rational(1, 10), 1)}).params[0].is_positive

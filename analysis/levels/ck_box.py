@@ -17,8 +17,9 @@ follows from a finite cover of the box by sub-boxes, each certified by *some* ro
    does, and the region is the box with that parameter's interval open);
 2′. **generalized divided differences** (:mod:`.gendiff`): (H1) ``p_n | a^n`` proved *exactly,
    identically in n and in the parameters* (the factorization over ``Q(params)[z, h, exp(g h)]``;
-   a parameter whose box excludes 0 gets its sign as an assumption, so ``+-i theta`` pairs are
-   recognised as conjugate), (H2) convergence (the C^0 cover of the whole box, else Dyn–Levin
+   the frequencies are searched with the parameters declared positive, so ``+-i theta`` pair up,
+   and each candidate ``p_n`` is then proved to divide ``a^n`` on the scheme itself, for every real
+   parameter value, 0 included), (H2) convergence (the C^0 cover of the whole box, else Dyn–Levin
    direct on the sub-box), (H3) Dyn–Levin on ``c^n = 2^j a^n/p_n`` on the sub-box as in 1.
 
 Asymptotic similarity (route 3 of :mod:`.ck`) is not tried on boxes: its JSR condition
@@ -75,7 +76,7 @@ import sympy as sp
 from .balls import _ball, _to_ball, workprec
 from .ck import check_real
 from .expbspline import recognise
-from .gendiff import GeneralizedDifferences, _subsets
+from .gendiff import _subsets, exponential_factors, generalized_difference
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .region import _describe, limit_smoothness_open
@@ -129,13 +130,53 @@ def _restrict(box: Mapping, t: LevelDependentScheme) -> dict:
     return {k: v for k, v in box.items() if k in names}
 
 
+class _BoxGeneralizedDifferences:
+    """Route 2′'s generalized difference schemes on a box.
+
+    The *search* for the frequencies (:func:`analysis.levels.gendiff.exponential_factors`) and for
+    their conjugation-closed subsets runs on a copy whose real parameters without a sign are
+    declared positive (so ``+-i theta`` pair up even when the box contains 0); each candidate is
+    then *proved* on the scheme itself: :func:`analysis.levels.gendiff.generalized_difference`
+    re-checks ``a^n = p_n b^n`` exactly, as a rational identity in ``h``, ``exp(g h)`` and the
+    parameters, so H1 holds for every real parameter value (0 included) where the mask is defined.
+    """
+
+    def __init__(self, s: LevelDependentScheme):
+        self.s = s
+        loose = {p.name: (1, 2) for p in s.params if p.is_real and not (p.is_positive or p.is_negative)}
+        self.probe = _with_box_signs(s, loose) if loose else s
+        self.back = {q: p for p, q in zip(s.params, self.probe.params) if p is not q}
+        self._schemes: dict = {}
+
+    def factors(self) -> Result:
+        fac = exponential_factors(self.probe)
+        if fac.value is None or not self.back:
+            return fac
+        return Result(value=tuple(x.xreplace(self.back) for x in fac.value), status=fac.status,
+                      witness={**fac.witness, "search": "frequencies found with the parameters declared positive; "
+                               "p_n | a^n is proved for each subset on the scheme itself (generalized_difference)"},
+                      provenance=fac.provenance)
+
+    def subsets(self, j: int) -> list[tuple]:
+        fac = exponential_factors(self.probe)
+        return [tuple(x.xreplace(self.back) for x in sub) for sub in _subsets(fac.value, j)]
+
+    def get(self, subset) -> tuple[LevelDependentScheme | None, Result]:
+        if subset not in self._schemes:
+            try:
+                self._schemes[subset] = generalized_difference(self.s, subset)
+            except (AnalysisError, ValueError, TypeError) as e:      # no proof of H1: inconclusive
+                self._schemes[subset] = (None, Result(value=None, status=INCONCLUSIVE, witness={"reason": str(e)}))
+        return self._schemes[subset]
+
+
 class _Context:
     """One scheme on one box: the difference schemes, the caches of series, supports and limit tests."""
 
     def __init__(self, s: LevelDependentScheme, env: dict, open_param: str | None, N: int, L_max: int):
         self.s, self.env, self.open_param, self.N, self.L_max = s, env, open_param, N, L_max
         self.diffs: dict[int, LevelDependentScheme | None] = {0: s}
-        self.gd = GeneralizedDifferences(s)
+        self.gd = _BoxGeneralizedDifferences(s)
         self.cache: dict = {}
         self.converges: Result | None = None
 
@@ -306,7 +347,7 @@ def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
                       provenance=d.provenance)
     fails = []
     for j in range(min(k, len(fac.value)), 0, -1):
-        for subset in _subsets(fac.value, j)[:max_tries]:
+        for subset in ctx.gd.subsets(j)[:max_tries]:
             c, h1 = ctx.gd.get(subset)
             if c is None:
                 fails.append(f"H1: {h1.witness['reason']}")
