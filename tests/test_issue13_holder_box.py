@@ -160,3 +160,23 @@ def test_cli_bad_input_one_line(capsys, argv, message):
 def test_cli_box_on_a_stationary_scheme_is_refused(capsys):
     assert main(["holder", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2", "--box", "t=1,2"]) == 2
     assert "subdiv range" in capsys.readouterr().err
+
+
+def test_a_higher_ck_on_the_whole_box_implies_the_lower_ones(monkeypatch):
+    """Bookkeeping: C^1 certified on the whole box gives C^0 there even when no route certified C^0
+    directly (here C^0 is forced undecided); the undecided sub-boxes stay in the witness."""
+    import analysis.levels.ck_box as ck_box
+
+    decide = ck_box._decide
+
+    def forced(ctx, box, k, max_tries=6):
+        if k == 0:
+            return {"status": "inconclusive", "tried": [{"route": "test", "failed": ["H1: forced"], "why": "forced"}]}
+        return decide(ctx, box, k, max_tries)
+
+    monkeypatch.setattr(ck_box, "_decide", forced)
+    r = level_smoothness_box(get("exp-chaikin-hyp"), {"t": (sp.Rational(1, 2), 2)})
+    v0 = r.witness["verdicts"][0]
+    assert (v0["status"], v0["implied_by"]) == ("certified", "C^1")
+    assert v0["undecided_directly"] and not v0["undecided"]
+    assert (r.value, r.witness["exact"]) == (1, True)

@@ -84,6 +84,9 @@ def _verdict_lines(r) -> list[str]:
             fr = ", ".join(sp.sstr(x) for x in v["frequencies"])
             lines.append(f"  {name}: no at every point [certified] — {v['route']}, frequencies {fr}: it generates "
                          f"the exponential B-spline B_Lambda, C^{v['k'] - 1} and not C^{v['k']}")
+        elif v["status"] == "certified" and "implied_by" in v:
+            lines.append(f"  {name}: yes at every point [certified] — implied by {v['implied_by']} (certified on the "
+                         f"whole box; {len(v['undecided_directly'])} sub-box(es) undecided by the routes for {name})")
         elif v["status"] == "certified":
             routes = "; ".join(f"{rt} ({n} sub-box{'es' if n > 1 else ''})" for rt, n in v["routes"].items())
             lines.append(f"  {name}: yes at every point [certified] — {routes}")

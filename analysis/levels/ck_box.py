@@ -589,8 +589,15 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
                                             "routes": v["routes"]},
                                    provenance={"method": "the C^0 cover above"})
         verdicts.append(v)
-        if v["status"] == CERTIFIED and best == k - 1:
-            best = k
+    for v in verdicts:                 # C^k' on the whole box implies C^k for k < k'
+        higher = [w["k"] for w in verdicts if w["k"] > v["k"] and w["status"] == CERTIFIED]
+        if v["status"] != CERTIFIED and higher:
+            v.update({"verdict": f"C^{v['k']}", "status": CERTIFIED, "implied_by": f"C^{higher[0]}",
+                      "routes": {f"implied by C^{higher[0]} on the whole box": 1},
+                      "undecided_directly": v["undecided"], "undecided": []})
+    for v in verdicts:
+        if v["status"] == CERTIFIED and best == v["k"] - 1:
+            best = v["k"]
     cert = not_ck_box(s, env, depth=depth + 4)
     d = cert.witness.get("k")
     if cert.is_certified and cert.value is False and d is not None and d > max(best, k_lim) and \
