@@ -51,7 +51,8 @@ For ``k = 0, 1, ...`` up to the limit's smoothness (parameter-free limit: the H�
 :func:`analysis.regularity.smoothness`, as in :mod:`.ck`; parametric limit: while ``(1+z)^{k+1}``
 divides it generically): :func:`analysis.levels.series.adaptive_boxes` over ``pieces`` sub-boxes per
 parameter, each sub-box tried by the routes in the order of :mod:`.ck` (``j = k`` first when
-``(1+z)^k`` divides ``a^n``, then direct, then smaller ``j``, then 2′). Series, supports and limit
+``(1+z)^k`` divides ``a^n``, then direct, then smaller ``j``, then 2′). A k left undecided is
+certified when a higher k' is certified on the whole box (C^k' implies C^k). Series, supports and limit
 tests are cached per (scheme, sub-box). Route 4 bisects the box (``depth + 4`` times at most) until
 ``1 + exp(lambda 2^-(n+1))`` excludes 0 in complex ball arithmetic at the finitely many levels
 with ``sup |lambda| 2^-(n+1) >= pi`` (for the others ``1 + e^mu = 0`` needs ``|mu| >= pi``).
