@@ -180,3 +180,18 @@ def test_a_higher_ck_on_the_whole_box_implies_the_lower_ones(monkeypatch):
     assert (v0["status"], v0["implied_by"]) == ("certified", "C^1")
     assert v0["undecided_directly"] and not v0["undecided"]
     assert (r.value, r.witness["exact"]) == (1, True)
+
+
+def test_no_bisection_where_the_series_is_certified_divergent():
+    """a^n = B-spline + w 2^-n (1+z)^3 (1-z)/16 + 2^-3n/16: for w > 0 the direct m = 1 series diverges
+    (terms ~ w/8; checked pointwise with weighted_series), no divided difference applies ((1+z) does
+    not divide a^n), so C^1 stays undecided; the divergent sub-boxes are not bisected further."""
+    from analysis.levels.series import weighted_series
+
+    s = LevelDependentScheme.from_symbol("(1+z)**4/(8*z**2) + w*2**(-n)*(1+z)**3*(1-z)/(16*z**2) + 2**(-3*n)/16")
+    assert weighted_series(s, {"w": 1}, 1).witness["verdict"] == "divergent"
+    r = level_smoothness_box(s, {"w": (0, 1)}, k_max=1)
+    assert (r.value, r.status) == (0, "certified")
+    und = r.witness["verdicts"][1]["undecided"]
+    assert [u["box"]["w"] for u in und] == [["0", "1/4"], ["1/4", "1/2"], ["1/2", "1"]]
+    assert [any("(divergent)" in f for t in u["tried"] for f in t["failed"]) for u in und] == [False, True, True]

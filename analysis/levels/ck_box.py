@@ -296,6 +296,9 @@ class _Context:
         failed = [name for name, r in hyps.items() if not _ok(r)]
         ok = not failed and len(hyps) == (3 if any(H in c.free_symbols for c in t.mask) else 1)
         why = "; ".join(_why(name, hyps[name]) for name in failed)
+        # a series certified divergent on the sub-box diverges on every smaller box: no use bisecting
+        failed = [f"{name} (divergent)" if name.startswith("series") and hyps[name].is_certified
+                  and hyps[name].witness.get("verdict") == "divergent" else name for name in failed]
         return Result(value=True if ok else None, status=CERTIFIED if ok else INCONCLUSIVE,
                       witness={"claim": f"C^{m}", "hypotheses": hyps, "failed": failed, "why": why},
                       provenance={"scheme": t.slug, "box": exact_box(b)})
@@ -368,7 +371,8 @@ def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
 def _split_names(ctx: _Context, outcome: dict, box: dict) -> list[str]:
     """The boxed parameters worth bisecting after ``outcome``: a failed series, support or H3 may
     improve on smaller boxes in every parameter, a failed limit test only in the limit's parameter;
-    H1 (exact, identically in the parameters) and a parameter-free limit do not depend on the sub-box."""
+    H1 (exact, identically in the parameters), a parameter-free limit and a series certified
+    divergent on the sub-box do not improve on smaller boxes."""
     boxed = [k for k, v in box.items() if isinstance(v, tuple)]
     lim = {p.name for p in ctx.s.limit().params}
     names: set[str] = set()
@@ -376,7 +380,7 @@ def _split_names(ctx: _Context, outcome: dict, box: dict) -> list[str]:
         for f in t["failed"]:
             if f.startswith("limit_C"):
                 names |= lim
-            elif not f.startswith("H1"):
+            elif not (f.startswith("H1") or f.endswith("(divergent)")):
                 names |= set(boxed)
     return [k for k in boxed if k in names]
 
@@ -400,6 +404,7 @@ def _cover(ctx: _Context, k: int, pieces: int, depth: int) -> dict:
             todo.extend((c, d + 1) for c in _bisect_in(b, names))
         else:
             done.append((b, o))
+    done.sort(key=lambda bo: tuple(float(sp.N(v[0])) for v in bo[0].values() if isinstance(v, tuple)))
     cover = [{"box": exact_box(b), **o} for b, o in done if o["status"] == CERTIFIED]
     undecided = [{"box": exact_box(b), "tried": o["tried"]} for b, o in done if o["status"] != CERTIFIED]
     routes: dict[str, int] = {}
