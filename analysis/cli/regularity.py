@@ -235,6 +235,11 @@ def _stability_part(args, a, budget):
 
 
 def cmd_holder(args) -> None:
+    from .holder_box import holder_box, refuse_box_options
+
+    if getattr(args, "box", None):                   # C^k on a parameter box, level-dependent (issue 13)
+        return holder_box(args)
+    refuse_box_options(args)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_holder(args, arity)
     budget = float(args.budget)
@@ -383,6 +388,14 @@ def register(sub) -> None:
     s.add_argument("--approx", action="store_true",
                    help="approximate reading of a decimal --mask: each coefficient a ball of half a unit in its "
                         "last digit, sum rules imposed inside the balls (alpha certified for every such mask)")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
+                   help="level-dependent scheme: C^k at every point of a closed parameter box (repeatable: two "
+                        "parameters)")
+    s.add_argument("--pieces", type=int, metavar="P", help="with --box: sub-boxes of each parameter box (default 1)")
+    s.add_argument("--depth", type=int, metavar="D",
+                   help="with --box: bisect an undecided sub-box up to D times (default 2)")
+    s.add_argument("--open", metavar="NAME", help="with --box: the limit's parameter; its box is read as an open "
+                                                  "interval for the limit's C^k (exact norm set)")
     s.set_defaults(func=cmd_holder)
 
     s = sub.add_parser("range", help="where a one-parameter family is C^k: boundaries certified on both sides")
