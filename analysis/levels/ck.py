@@ -286,6 +286,23 @@ def _verdict_k(s: LevelDependentScheme, a_smooth: dict, k: int, sup: Result, N: 
     return {"k": k, "verdict": "undecided", "status": INCONCLUSIVE, "route": None, "tried": tried}
 
 
+def limit_smoothness(a, top: int, stationary_smoothness) -> tuple[int, int | None, dict[int, Result]]:
+    """``(k_lim, not_k, results)``: the stationary limit's C^k tested for ``k = 0..top`` until the first
+    k that is not certified; ``k_lim`` the last certified k, ``not_k`` the k certified *not* C^k (or None)."""
+    a_smooth: dict[int, Result] = {}
+    k_lim, not_k = -1, None
+    for k in range(top + 1):
+        r = stationary_smoothness(a, k)
+        a_smooth[k] = r
+        if r.value is True and r.is_certified:
+            k_lim = k
+            continue
+        if r.value is False and r.is_certified:
+            not_k = k
+        break
+    return k_lim, not_k, a_smooth
+
+
 def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, *,
                      k_max: int | None = None, N: int = 40, arity: int = 2) -> Result:
     """Convergence and the C^k verdict for each k up to the limit's smoothness (see the module).
@@ -312,18 +329,7 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
     prefill_taylor(s)          # the same exact Taylor coefficients as sympy.series, faster (or nothing)
     if all(H not in c.free_symbols for c in s.mask):
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
-    a_smooth: dict[int, Result] = {}
-    k_lim, not_k = -1, None
-    top = 12 if k_max is None else k_max
-    for k in range(top + 1):
-        r = stationary_smoothness(a, k)
-        a_smooth[k] = r
-        if r.value is True and r.is_certified:
-            k_lim = k
-            continue
-        if r.value is False and r.is_certified:
-            not_k = k
-        break
+    k_lim, not_k, a_smooth = limit_smoothness(a, 12 if k_max is None else k_max, stationary_smoothness)
     sup = same_support(s, None, N=N, arity=arity)
     diffs = _Differences(s, arity)
     gd = GeneralizedDifferences(s, arity)

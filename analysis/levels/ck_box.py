@@ -75,7 +75,7 @@ import flint
 import sympy as sp
 
 from .balls import _ball, _to_ball, workprec
-from .ck import check_real
+from .ck import _Differences, check_real, limit_smoothness
 from .expbspline import recognise
 from .gendiff import _subsets, exponential_factors, generalized_difference
 from .hseries import prefill_taylor
@@ -176,27 +176,16 @@ class _Context:
 
     def __init__(self, s: LevelDependentScheme, env: dict, open_param: str | None, N: int, L_max: int):
         self.s, self.env, self.open_param, self.N, self.L_max = s, env, open_param, N, L_max
-        self.diffs: dict[int, LevelDependentScheme | None] = {0: s}
+        self.diffs = _Differences(s)           # the divided difference schemes, shared with ck.py's chain
         self.gd = _BoxGeneralizedDifferences(s)
         self.cache: dict = {}
         self.converges: Result | None = None
 
     def difference(self, j: int) -> LevelDependentScheme | None:
-        if j not in self.diffs:
-            prev = self.difference(j - 1)
-            try:
-                self.diffs[j] = None if prev is None else prev.difference(1)
-                if self.diffs[j] is not None:
-                    prefill_taylor(self.diffs[j])
-            except AnalysisError:
-                self.diffs[j] = None
-        return self.diffs[j]
+        return self.diffs.get(j)
 
     def divisibility(self, k: int) -> int:
-        j = 0
-        while j < k and self.difference(j + 1) is not None:
-            j += 1
-        return j
+        return self.diffs.divisibility(k)
 
     # ---------------------------------------------------------------- the limit's C^m on a sub-box
     def limit_ck(self, a, m: int, box: Mapping) -> Result:
@@ -519,16 +508,7 @@ def _limit_top(ctx: _Context, a, k_max: int | None) -> tuple[int, int | None, di
     if not a.params:
         from ..regularity import smoothness as regularity_smoothness
 
-        k_lim, not_k, a_smooth = -1, None, {}
-        for k in range(cap + 1):
-            r = regularity_smoothness(a, k)
-            a_smooth[k] = r
-            if r.value is True and r.is_certified:
-                k_lim = k
-                continue
-            if r.value is False and r.is_certified:
-                not_k = k
-            break
+        k_lim, not_k, a_smooth = limit_smoothness(a, cap, regularity_smoothness)
         return k_lim, not_k, a_smooth, k_lim
     from ..algebra.factorization import smoothing_factor
 

@@ -168,10 +168,19 @@ def _generators(slopes: list[sp.Expr]) -> tuple[list[sp.Expr], dict]:
     return gens, where
 
 
-def _to_exponential_polynomial(s: LevelDependentScheme):
-    """The symbol ``z^-start a^n(z)`` as a rational function of ``z`` and generators ``X_j = exp(g_j h)``."""
-    coeffs = [sp.sympify(c).rewrite(sp.exp) for c in s.mask]
-    args = {e.args[0] for c in coeffs for e in c.atoms(sp.exp) if H in e.free_symbols}
+def to_exponential_generators(exprs, *, in_h: bool = False) -> tuple[list[sp.Expr], tuple, list]:
+    """Rewrite expressions in ``h`` with generators ``X_j = exp(g_j h)`` (independent indeterminates).
+
+    Every ``exp(c h + b)`` becomes ``exp(b) X_j^m`` (slopes grouped by rational ratio). ``in_h``: the result
+    may still be a rational function of ``h`` (else ``h`` must disappear). Returns the cancelled
+    expressions, the symbols ``X`` and the generators ``g_j``; raises :class:`_NotOfForm` otherwise.
+
+    >>> out, X, gens = to_exponential_generators([sp.cosh(2 * H) + sp.exp(H)])
+    >>> out, gens                                   # X0 = exp(-h)
+    ([(X0**4 + 2*X0 + 1)/(2*X0**2)], [-1])
+    """
+    exprs = [sp.sympify(c).rewrite(sp.exp) for c in exprs]
+    args = {e.args[0] for c in exprs for e in c.atoms(sp.exp) if H in e.free_symbols}
     lin = {a: _linear_in_h(a) for a in args}
     slopes = sorted({c1 for c1, _ in lin.values() if c1 != 0}, key=sp.default_sort_key)
     gens, where = _generators(slopes)
@@ -187,12 +196,21 @@ def _to_exponential_polynomial(s: LevelDependentScheme):
         return sp.exp(c0) * X[j] ** m
 
     out = []
-    for c in coeffs:
+    for c in exprs:
         e = c.replace(sp.exp, sub)
-        if H in e.free_symbols:
+        if in_h and not e.is_rational_function(H, *X):
+            raise _NotOfForm(f"the coefficient {sp.sstr(c)} is not a rational function of h and exponentials "
+                             "exp(c h)")
+        if not in_h and H in e.free_symbols:
             raise _NotOfForm(f"the coefficient {sp.sstr(c)} depends on the level otherwise than through "
                              "exponentials exp(c h) (e.g. a power of 2^-n)")
         out.append(sp.cancel(sp.together(e)))
+    return out, X, gens
+
+
+def _to_exponential_polynomial(s: LevelDependentScheme):
+    """The symbol ``z^-start a^n(z)`` as a rational function of ``z`` and generators ``X_j = exp(g_j h)``."""
+    out, X, gens = to_exponential_generators(s.mask)
     return sum(c * _Z ** k for k, c in enumerate(out)), X, gens
 
 

@@ -144,7 +144,7 @@ from itertools import product
 
 import sympy as sp
 
-from .expbspline import _NotOfForm, _generators, _linear_in_h, factors_mary
+from .expbspline import _NotOfForm, factors_mary, to_exponential_generators
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .series import smoothness, stationary_smoothness
@@ -157,30 +157,7 @@ _Z = sp.Symbol("z")
 
 def _to_polynomial_ring(exprs) -> tuple[list[sp.Expr], tuple, list]:
     """Rewrite expressions in ``h`` as rational functions of ``h`` and generators ``X_j = exp(g_j h)``."""
-    exprs = [sp.sympify(c).rewrite(sp.exp) for c in exprs]
-    args = {e.args[0] for c in exprs for e in c.atoms(sp.exp) if H in e.free_symbols}
-    lin = {a: _linear_in_h(a) for a in args}
-    slopes = sorted({c1 for c1, _ in lin.values() if c1 != 0}, key=sp.default_sort_key)
-    gens, where = _generators(slopes)
-    X = sp.symbols(f"X0:{len(gens)}")
-
-    def sub(arg):
-        if H not in arg.free_symbols:
-            return sp.exp(arg)
-        c1, c0 = lin[arg]
-        if c1 == 0:
-            return sp.exp(c0)
-        j, m = where[c1]
-        return sp.exp(c0) * X[j] ** m
-
-    out = []
-    for c in exprs:
-        e = c.replace(sp.exp, sub)
-        if not e.is_rational_function(H, *X):
-            raise _NotOfForm(f"the coefficient {sp.sstr(c)} is not a rational function of h and exponentials "
-                             "exp(c h)")
-        out.append(sp.cancel(sp.together(e)))
-    return out, X, gens
+    return to_exponential_generators(exprs, in_h=True)
 
 
 def _exact_zero(expr) -> bool:
