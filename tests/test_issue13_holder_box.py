@@ -195,3 +195,16 @@ def test_no_bisection_where_the_series_is_certified_divergent():
     und = r.witness["verdicts"][1]["undecided"]
     assert [u["box"]["w"] for u in und] == [["0", "1/4"], ["1/4", "1/2"], ["1/2", "1"]]
     assert [any("(divergent)" in f for t in u["tried"] for f in t["failed"]) for u in und] == [False, True, True]
+
+
+def test_not_ck_needs_real_masks_on_the_whole_box():
+    """Review finding: with frequencies {0, sqrt(t)} the mask is complex for t < 0; 'not C^1 at every point' must
+    not be certified on a box through 0 (it is on a box inside t > 0)."""
+    from analysis.levels.ck_box import level_smoothness_box
+    from analysis.levels.level_dependent import LevelDependentScheme
+
+    s = LevelDependentScheme.from_symbol("(1+e*z)*(1+z)/(1+e)/z", where={"e": "exp(sqrt(t)/2**(n+1))"})
+    r = level_smoothness_box(s, {"t": (sp.Integer(-1), sp.Integer(3))})
+    assert not any(v.get("holds") is False and v["status"] == "certified" for v in r.witness["verdicts"])
+    r = level_smoothness_box(s, {"t": (sp.Rational(1, 2), sp.Integer(3))})
+    assert any(v.get("holds") is False and v["status"] == "certified" and v["k"] == 1 for v in r.witness["verdicts"])

@@ -472,6 +472,47 @@ def _normaliser_bad_level(lam, box, n_levels_max: int) -> int | None:
     return None
 
 
+def conjugation_closed_box(lams, env: Mapping[str, Any]) -> Result:
+    """The frequency multiset is closed under complex conjugation for every parameter value of the box
+    (then the mask is real there): each ``conj(lambda_i)`` equals some ``lambda_j`` identically, with every
+    boxed parameter declared positive (negative) when its box lies in ``[0, oo)`` (``(-oo, 0]``), real
+    otherwise. Inconclusive when this is not proved (e.g. ``sqrt(t)`` on a box through 0: complex masks
+    for ``t < 0``).
+
+    >>> t = sp.Symbol("t", real=True)
+    >>> conjugation_closed_box([0, sp.I * t, -sp.I * t], {"t": (sp.Rational(1, 10), 3)}).status
+    'certified'
+    >>> conjugation_closed_box([0, sp.sqrt(t)], {"t": (-1, 3)}).status
+    'inconclusive'
+    >>> conjugation_closed_box([0, sp.sqrt(t)], {"t": (0, 3)}).status
+    'certified'
+    """
+    rep = {}
+    for x in set().union(*(sp.sympify(lam).free_symbols for lam in lams)) if lams else ():
+        v = env.get(x.name)
+        lo, hi = (v if isinstance(v, tuple) else (v, v)) if v is not None else (None, None)
+        if lo is not None and sp.sympify(lo) >= 0:
+            rep[x] = sp.Symbol(x.name, positive=True) if sp.sympify(hi) > 0 else sp.Integer(0)
+        elif hi is not None and sp.sympify(hi) <= 0:
+            rep[x] = -sp.Symbol(x.name, positive=True) if sp.sympify(lo) < 0 else sp.Integer(0)
+        else:
+            rep[x] = sp.Symbol(x.name, real=True)
+    left = [sp.sympify(lam).xreplace(rep) for lam in lams]
+    for lam in list(left):
+        if lam not in left:
+            continue
+        c = sp.simplify(sp.conjugate(lam))
+        match = next((i for i, mu in enumerate(left) if sp.simplify(mu - c) == 0), None)
+        if match is None:
+            return Result(value=None, status=INCONCLUSIVE,
+                          witness={"reason": f"conj({sp.sstr(lam)}) is not among the frequencies for every parameter "
+                                             "value of the box (the mask may be complex there)"})
+        left.pop(match)
+        if sp.simplify(lam - c) != 0:
+            left.remove(lam)
+    return Result(value=True, status=CERTIFIED, witness={"frequencies": [sp.sstr(x) for x in lams]})
+
+
 def not_ck_box(s: LevelDependentScheme, env: Mapping[str, Any], *, depth: int = 8) -> Result:
     """Certified "not C^d at every point of the box" for an exponential B-spline scheme of order ``d+1``.
 
@@ -486,6 +527,12 @@ def not_ck_box(s: LevelDependentScheme, env: Mapping[str, Any], *, depth: int = 
                       witness={"k": None, "failed": ["exponential_bspline_form"], "reason": rec.witness["reason"],
                                "hypotheses": hyps}, provenance=prov)
     d = rec.witness["order"] - 1
+    conj = conjugation_closed_box(rec.value, env)
+    hyps["conjugation_closed"] = conj
+    if not conj.is_certified:
+        return Result(value=None, status=INCONCLUSIVE,
+                      witness={"k": d, "failed": ["conjugation_closed"], "reason": conj.witness["reason"],
+                               "hypotheses": hyps}, provenance=prov)
     norm = normalisers_nonzero_box(rec.value, env, depth=depth)
     hyps["normalisers_nonzero"] = norm
     if not (norm.is_certified and norm.value is True):
