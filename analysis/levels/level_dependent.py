@@ -699,5 +699,7 @@ def taylor_models(s: LevelDependentScheme, values=None, *, J: int | None = None,
                 models.append(TaylorModel(coeffs, M, rho, J))
             if ok:
                 return models
-    raise AnalysisError("could not certify analyticity of a^n - a on any disk |h| <= rho "
-                        "(split the parameter box or give smaller radii)")
+    boxed = any(isinstance(v, tuple) for v in (values or {}).values())
+    raise AnalysisError(f"could not certify analyticity of a^n - a on any disk |h| <= rho, rho >= {sp.sstr(rhos[-1])}: "
+                        "a coefficient may have a singularity close to h = 0, i.e. the mask may be undefined at "
+                        "some high level n = -log2(h)" + (" (or split the parameter box)" if boxed else ""))
