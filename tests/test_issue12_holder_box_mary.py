@@ -1,0 +1,81 @@
+"""Issue 12/13 item 6: ``subdiv holder --box`` for level-dependent m-ary schemes (``level_smoothness_box(arity=m)``).
+
+Expected values are computed independently: the point-mode chain ``analysis.levels.ck.level_smoothness(...,
+arity=3)`` at a point of the box, and exact sympy evaluation of the normalisers ``q_m(v) = 1 + v + ... + v^(m-1)``.
+The published fact behind the exact verdicts: the exponential B-spline of order d+1 (here the ternary scheme with
+frequencies 0, +-i theta, order 3) is C^(d-1) and not C^d (Unser-Blu, IEEE Trans. Signal Process. 53 (2005)
+1425-1438; m-ary: Charina-Conti-Romani, arXiv:1303.1678).
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+
+from analysis.cli.main import main
+from analysis.levels.ck import level_smoothness
+from analysis.levels.ck_box import level_smoothness_box
+from analysis.levels.expbspline_box import normalisers_nonzero_box
+from analysis.levels.mary import level_scheme_mary
+from analysis.result import AnalysisError
+from schemes.level_mary import get_mary
+
+SYM = "(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)"
+WHERE = ["c=cos(theta/3**(n+1))", "d=cos(2*theta/3**(n+1))"]
+
+
+@pytest.fixture(scope="module")
+def ternary():
+    return level_scheme_mary(SYM, 3, where=WHERE, slug="symbol")
+
+
+def test_inline_ternary_box_agrees_with_point_mode(ternary):
+    r = level_smoothness_box(ternary, {"theta": (sp.Rational(1, 2), 2)})
+    point = level_smoothness(ternary.scheme, {"theta": sp.Rational(1, 2)}, arity=3)   # independent: point chain
+    assert r.status == "certified" and r.provenance["arity"] == 3
+    assert (r.value, r.witness["exact"], r.witness["not_C^k"]) == (point.value, point.witness["exact"],
+                                                                   point.witness["not_C^k"]) == (1, True, 2)
+    # the m-ary divided-difference route carries its convergence hypothesis (H2) like ck.py's
+    c1 = r.witness["verdicts"][1]["cover"][0]
+    assert c1["route"] == "Dyn-Levin on the 1st divided difference scheme" and "convergence" in c1["hypotheses"]
+
+
+@pytest.mark.parametrize("m, box, zero_at", [(3, (6, 7), 2 * sp.pi), (4, (6, 7), 2 * sp.pi), (4, (3, 4), None)])
+def test_normalisers_mary_box(m, box, zero_at):
+    t = sp.Symbol("t", positive=True)
+    r = normalisers_nonzero_box([sp.I * t], {"t": box}, arity=m)
+    if zero_at is None:          # q_m(e^(i t/m)) = 0 needs t/m = 2 pi k/m, 0 < k < m: t >= 2 pi, outside [3, 4]
+        assert r.status == "certified"
+        return
+    v = sp.exp(sp.I * zero_at / m)          # level 0: v = exp(i t m^-1) at t = 2 pi, in the box
+    assert sp.simplify(sp.expand_complex(sum(v ** k for k in range(m)))) == 0 and v != 1
+    assert r.status == "inconclusive" and f"q(exp(I*t {m}^-1))" in r.witness["reason"]
+
+
+def test_cli_box_where_normaliser_vanishes_is_not_certified(capsys):
+    # 1 + v + v^2 = 0 at t = 2 pi (level 0) inside [6, 7]: neither C^k nor "not C^2" may be certified
+    assert main(["holder", "--scheme", "ternary-exp-bspline-2-trig", "--box", "t=6,7", "--depth", "0", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    sm = doc["smoothness"]
+    assert doc["arity"] == 3 and sm["value"] == -1 and sm["witness"]["not_C^k"] is None
+    assert all(v["status"] == "inconclusive" for v in sm["witness"]["verdicts"])
+    assert "q(exp(" in sm["witness"]["verdicts"][-1]["reason"]
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--scheme", "ternary-exp-bspline-2-trig", "--arity", "4", "--box", "t=1,2"], "has arity 3"),
+    (["--scheme", "ternary-exp-bspline-2-trig", "--box", "t=1,2", "--open", "t"], "--open is available for binary"),
+    (["--arity", "3", "--symbol", SYM, "--where", WHERE[0], "--where", WHERE[1], "--box", "phi=1,2"],
+     "has no parameter phi"),
+], ids=["arity-mismatch", "open", "unknown-name"])
+def test_cli_bad_input_one_line(capsys, argv, message):
+    assert main(["holder", *argv]) == 2
+    err = capsys.readouterr().err
+    assert message in err and err.count("\n") == 1 and err.startswith("subdiv: error:")
+
+
+def test_arity_mismatch_in_python():
+    with pytest.raises(AnalysisError, match="has arity 3"):
+        level_smoothness_box(get_mary("ternary-exp-bspline-1-trig"), {"t": (1, 2)}, arity=4)
