@@ -17,7 +17,7 @@ import sympy as sp
 from analysis.cli.main import main
 from analysis.levels.ck import level_smoothness
 from analysis.levels.ck_box import level_smoothness_box
-from analysis.levels.expbspline_box import normalisers_nonzero_box
+from analysis.levels.expbspline_box import normalisers_nonzero_box, not_ck_box
 from analysis.levels.mary import level_scheme_mary
 from analysis.result import AnalysisError
 from schemes.level_mary import get_mary
@@ -31,14 +31,18 @@ def ternary():
     return level_scheme_mary(SYM, 3, where=WHERE, slug="symbol")
 
 
-def test_inline_ternary_box_agrees_with_point_mode(ternary):
-    r = level_smoothness_box(ternary, {"theta": (sp.Rational(1, 2), 2)})
+def test_inline_ternary_box_agrees_with_point_mode(capsys, ternary):
+    argv = ["holder", "--arity", "3", "--symbol", SYM, "--where", WHERE[0], "--where", WHERE[1],
+            "--box", "theta=1/2,2", "--json"]
+    assert main(argv) == 0
+    doc = json.loads(capsys.readouterr().out)
+    r = doc["smoothness"]
     point = level_smoothness(ternary.scheme, {"theta": sp.Rational(1, 2)}, arity=3)   # independent: point chain
-    assert r.status == "certified" and r.provenance["arity"] == 3
-    assert (r.value, r.witness["exact"], r.witness["not_C^k"]) == (point.value, point.witness["exact"],
-                                                                   point.witness["not_C^k"]) == (1, True, 2)
+    assert doc["arity"] == 3 and r["status"] == "certified" and r["provenance"]["arity"] == 3
+    assert (r["value"], r["witness"]["exact"], r["witness"]["not_C^k"]) == (point.value, point.witness["exact"],
+                                                                           point.witness["not_C^k"]) == (1, True, 2)
     # the m-ary divided-difference route carries its convergence hypothesis (H2) like ck.py's
-    c1 = r.witness["verdicts"][1]["cover"][0]
+    c1 = r["witness"]["verdicts"][1]["cover"][0]
     assert c1["route"] == "Dyn-Levin on the 1st divided difference scheme" and "convergence" in c1["hypotheses"]
 
 
@@ -54,14 +58,14 @@ def test_normalisers_mary_box(m, box, zero_at):
     assert r.status == "inconclusive" and f"q(exp(I*t {m}^-1))" in r.witness["reason"]
 
 
-def test_cli_box_where_normaliser_vanishes_is_not_certified(capsys):
-    # 1 + v + v^2 = 0 at t = 2 pi (level 0) inside [6, 7]: neither C^k nor "not C^2" may be certified
-    assert main(["holder", "--scheme", "ternary-exp-bspline-2-trig", "--box", "t=6,7", "--depth", "0", "--json"]) == 0
-    doc = json.loads(capsys.readouterr().out)
-    sm = doc["smoothness"]
-    assert doc["arity"] == 3 and sm["value"] == -1 and sm["witness"]["not_C^k"] is None
-    assert all(v["status"] == "inconclusive" for v in sm["witness"]["verdicts"])
-    assert "q(exp(" in sm["witness"]["verdicts"][-1]["reason"]
+def test_not_ck_box_where_normaliser_vanishes_is_not_certified():
+    # 1 + v + v^2 = 0 at t = 2 pi (level 0) inside [6, 7]: "not C^2" must not be certified there; on [1/2, 2] it is
+    s = get_mary("ternary-exp-bspline-2-trig").scheme
+    bad = not_ck_box(s, {"t": (sp.Integer(6), sp.Integer(7))}, arity=3)
+    good = not_ck_box(s, {"t": (sp.Rational(1, 2), sp.Integer(2))}, arity=3)
+    assert bad.status == "inconclusive" and bad.witness["failed"] == ["normalisers_nonzero"]
+    assert "q(exp(" in bad.witness["reason"]
+    assert (good.status, good.value, good.witness["k"]) == ("certified", False, 2)
 
 
 @pytest.mark.parametrize("argv, message", [
@@ -79,3 +83,16 @@ def test_cli_bad_input_one_line(capsys, argv, message):
 def test_arity_mismatch_in_python():
     with pytest.raises(AnalysisError, match="has arity 3"):
         level_smoothness_box(get_mary("ternary-exp-bspline-1-trig"), {"t": (1, 2)}, arity=4)
+
+
+def test_parametric_ternary_limit_hassan_range():
+    # the ternary 4-point scheme of Hassan-Ivrissimtzis-Dodgson-Sabin, CAGD 19 (2002) 1-18, is C^2 exactly for
+    # 1/15 < mu < 1/9; perturbed by 3^-n/100 at level n, the limit is that scheme: C^2 on a box inside the range,
+    # not certified on a box through mu = 1/9 (the limit's exact m-ary norm sets decide the sub-boxes)
+    mask = ["-1/18+m/6", "-1/18-m/6", "0", "7/18-m/2", "13/18+m/2", "1", "13/18+m/2", "7/18-m/2", "0",
+            "-1/18-m/6", "-1/18+m/6"]
+    s = level_scheme_mary(None, 3, mask=mask, start=-5, where=["m=mu+3**(-n)/100"], slug="mask")
+    inside = level_smoothness_box(s, {"mu": (sp.Rational(1, 14), sp.Rational(1, 10))})
+    across = level_smoothness_box(s, {"mu": (sp.Rational(1, 10), sp.Rational(1, 8))}, depth=0, L_max=2)
+    assert inside.value == 2 and inside.status == "certified"
+    assert across.value == 1 and across.witness["verdicts"][2]["status"] == "inconclusive"
