@@ -1,4 +1,4 @@
-"""Issue 13 item 5: `subdiv holder --box` (C^k of a level-dependent scheme on a whole parameter box).
+"""Issue 13 item 5: `subdiv holder --box` (C^k of a level-dependent scheme on a whole parameter box; m-ary: item 6).
 
 Run: ``python benchmarks/bench_holder_box.py`` (2 cores shared). Each command runs in a fresh process,
 as a researcher types it; prints wall and child CPU time and the conclusion line.
@@ -20,6 +20,11 @@ COMMANDS = [
     ["holder", "--scheme", "seed003-trigonometric", "--box", "alpha=0,pi/3", "--box", "omega=0,(sqrt(6)-1)/80"],
     ["holder", "--scheme", "exp-cubic-hyp", "--box", "t=1/10,3"],
     ["holder", "--scheme", "exp-quintic-trig", "--box", "t=1/10,3"],
+    # issue 12/13 item 6: m-ary level-dependent schemes on a box
+    ["holder", "--scheme", "ternary-exp-bspline-3-trig", "--box", "t=1/10,2"],
+    ["holder", "--scheme", "quaternary-exp-bspline-3-hyp", "--box", "t=1/10,2"],
+    ["holder", "--arity", "3", "--symbol", "(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)",
+     "--where", "c=cos(theta/3**(n+1))", "--where", "d=cos(2*theta/3**(n+1))", "--box", "theta=1/2,2"],
 ]
 
 

@@ -147,7 +147,7 @@ def test_cli_text_and_json(capsys):
     (["--param", "t=1", "--depth", "1"], "--depth needs --box"),
     (["--box", "t=1,2", "--pieces", "0"], "--pieces must be between 1 and 16"),
     (["--box", "t=-1,2"], "outside the declared domain"),
-    (["--box", "t=1,2", "--arity", "3"], "binary level-dependent schemes only"),
+    (["--box", "t=1,2", "--arity", "3"], "has arity 2; drop --arity"),   # m-ary boxes: issue 12/13 item 6
     (["--box", "t=1,2", "--open", "t"], "the limit does not depend on t"),
 ], ids=["box-and-param", "empty", "unknown", "open-unboxed", "depth-without-box", "pieces", "domain", "arity",
         "open-not-in-limit"])

@@ -5,7 +5,8 @@ The box version of ``subdiv holder`` on a level-dependent scheme (:mod:`analysis
 parameter boxes by an adaptive cover (``--pieces`` per parameter, ``--depth`` bisections), and
 "not C^d" for exponential B-spline schemes recognised identically in the parameters. ``--open NAME``
 reads the box of the limit's parameter as an open interval for the limit's hypothesis (as
-``subdiv series --C K --open NAME``).
+``subdiv series --C K --open NAME``). ``--arity M`` (or an m-ary entry of :mod:`schemes.level_mary`): the
+same cover with dilation M (``h = M^-n``; ``--open`` binary only).
 
 Examples
 --------
@@ -14,6 +15,7 @@ Examples
     subdiv holder --scheme exp-cubic-trig --box t=1/10,3
     subdiv holder --symbol "(1+z)*(1+2*c*z+z**2)/(2*(1+c))/z**2" --where "c=cos(theta/2**(n+1))" --box theta=1/10,pi/2
     subdiv holder --scheme seed003-trigonometric --box alpha=0,pi/3 --box "omega=0,(sqrt(6)-1)/80" --open omega
+    subdiv holder --scheme ternary-exp-bspline-3-trig --box t=1/10,2
 
 >>> box_line({"alpha": ["0", "pi/3"], "omega": ["0", "1/100"]})
 'alpha in [0, pi/3], omega in [0, 1/100]'
@@ -118,27 +120,37 @@ def _verdict_lines(r) -> list[str]:
 
 
 def holder_box(args) -> None:
-    """``subdiv holder --box ...`` on a level-dependent scheme (binary)."""
+    """``subdiv holder --box ...`` on a level-dependent scheme (binary; ``--arity M`` or an m-ary catalogue
+    entry of :mod:`schemes.level_mary`: dilation M, ``h = M^-n``)."""
     from ..levels.ck_box import level_smoothness_box
+    from .common import scheme_arity
 
     stationary_options_refused(args)
-    if getattr(args, "arity", None) not in (None, "2"):
-        raise AnalysisError("--box is available for binary level-dependent schemes only (not with --arity)")
+    m = scheme_arity(args, level=True)
     pieces, depth = _options(args)
     k_max = k_max_arg(args)
-    s, growing = _scheme(args)
-    if s is None:
-        from .levels import holder_growing_support
+    if m != 2:
+        from .levels_mary import level_scheme_mary_from_args
 
-        return holder_growing_support(args, growing)
+        if args.open is not None:
+            raise AnalysisError("--open is available for binary schemes only (the open-interval limit test is "
+                                "binary); drop --open or --arity")
+        s = level_scheme_mary_from_args(args, m).scheme
+    else:
+        s, growing = _scheme(args)
+        if s is None:
+            from .levels import holder_growing_support
+
+            return holder_growing_support(args, growing)
     values = param_box_values(args, "theta=1/10,pi/2")
     if args.open is not None and not isinstance(values.get(args.open), tuple):
         raise AnalysisError(f"--open {args.open} needs a --box for {args.open}")
-    r = level_smoothness_box(s, values, pieces=pieces, depth=depth, k_max=k_max, open_param=args.open)
+    r = level_smoothness_box(s, values, pieces=pieces, depth=depth, k_max=k_max, open_param=args.open, arity=m)
     lim = r.witness["limit"]
     h = sp.Symbol("h", positive=True)
-    lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n) on {r.witness['region']}",
-             f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(h, 2 ** (-sp.Symbol('n')))))}"]
+    kind = "h = 2^-n" if m == 2 else f"arity {m}, h = {m}^-n"
+    lines = [f"scheme: {s.slug} (level-dependent, {kind}) on {r.witness['region']}",
+             f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(h, m ** (-sp.Symbol('n')))))}"]
     if lim["parametric"]:
         lines.append(f"  limit a(z) = {lim['symbol'].pretty()} (depends on {', '.join(lim['parametric'])}: "
                      "its C^k is decided on each sub-box)")
@@ -148,5 +160,6 @@ def holder_box(args) -> None:
         lines.append(f"  {args.open}: its interval is read as open for the limit's hypothesis (exact norm sets); "
                      "series and same support on the closed boxes")
     lines += _verdict_lines(r)
-    _emit(args, {"scheme": s.slug, "level_dependent": True, "box": r.witness["box"], "smoothness": r.to_json()},
+    _emit(args, {"scheme": s.slug, **({} if m == 2 else {"arity": m}), "level_dependent": True,
+                 "box": r.witness["box"], "smoothness": r.to_json()},
           "\n".join(lines))

@@ -29,7 +29,14 @@ Asymptotic similarity (route 3 of :mod:`.ck`) is not tried on boxes: its JSR con
 the parameters* (:func:`analysis.levels.expbspline.recognise` on the parametric scheme: an exact
 rational identity in ``z``, the generators ``exp(g h)`` and the parameters) and the normalisers
 ``1 + exp(lambda_i(p) 2^-(n+1))`` are certified non-zero for every level and every ``p`` in the box
-(:func:`normalisers_nonzero_box`, the box version of ``expbspline._normalisers_nonzero``).
+(:mod:`.expbspline_box`, the box version of ``expbspline._normalisers_nonzero``).
+
+**Arity m** (``arity=m``, ``h = m^-n``; issue 12/13 item 6): the same cover with dilation m, as
+``level_smoothness(..., arity=m)``: series and supports with ``arity``, the divided difference schemes
+``(m/q_m)^j a^n`` (``q_m = 1 + z + ... + z^(m-1)``; these also need the convergence of ``{S_(a^n)}`` on the
+sub-box, the case ``Lambda = (0, ..., 0)`` of :mod:`.gendiff`), the factors ``q_m(e^{lambda m^-(n+1)} z)``,
+the limit's C^k by the m-ary norm test, and the normalisers ``q_m(e^{lambda m^-(n+1)})`` (zero iff
+``v^m = 1 != v``). ``--open`` is binary only.
 
 A sub-box where no route succeeds is bisected (every boxed parameter) at most ``depth`` times;
 the sub-boxes left are reported with exact rational ends and, per route, the hypothesis that
@@ -71,12 +78,11 @@ from __future__ import annotations
 
 from typing import Any, Mapping
 
-import flint
 import sympy as sp
 
-from .balls import _ball, _to_ball, workprec
 from .ck import _Differences, check_real, limit_smoothness
-from .expbspline import recognise
+from .divided import q_label
+from .expbspline_box import conjugation_closed_box, exact_box, normalisers_nonzero_box, not_ck_box
 from .gendiff import _subsets, exponential_factors, generalized_difference
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
@@ -84,7 +90,7 @@ from .region import _describe, limit_smoothness_open
 from .series import _bisect, _parse_values, _split, same_support, stationary_smoothness, weighted_series
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
-__all__ = ["level_smoothness_box", "normalisers_nonzero_box", "not_ck_box"]
+__all__ = ["conjugation_closed_box", "level_smoothness_box", "normalisers_nonzero_box", "not_ck_box"]
 
 
 def _ordinal(j: int) -> str:
@@ -98,11 +104,6 @@ def _ok(r: Result) -> bool:
 def _key(box: Mapping) -> tuple:
     return tuple(sorted((k, v if not isinstance(v, tuple) else (sp.sstr(v[0]), sp.sstr(v[1])))
                         for k, v in box.items()))
-
-
-def exact_box(box: Mapping) -> dict:
-    """``{name: [lo, hi]}`` with exact ends (strings), for reports."""
-    return {k: [sp.sstr(v[0]), sp.sstr(v[1])] if isinstance(v, tuple) else sp.sstr(v) for k, v in box.items()}
 
 
 def _with_box_signs(s: LevelDependentScheme, env: Mapping) -> LevelDependentScheme:
@@ -126,6 +127,17 @@ def _with_box_signs(s: LevelDependentScheme, env: Mapping) -> LevelDependentSche
                                 title=s.title, source=s.source, notes=s.notes)
 
 
+def _smoothing_order(a, arity: int) -> int:
+    """The largest k with ``(1+z)^k`` (arity m: ``q_m^k``) dividing the limit generically (exact)."""
+    if arity == 2:
+        from ..algebra.factorization import smoothing_factor
+
+        return smoothing_factor(a, exceptional=False).value
+    from ..algebra.mary import smoothing_factor_mary
+
+    return smoothing_factor_mary(a, arity, exceptional=False).value
+
+
 def _restrict(box: Mapping, t: LevelDependentScheme) -> dict:
     names = set(t.param_names)
     return {k: v for k, v in box.items() if k in names}
@@ -142,15 +154,15 @@ class _BoxGeneralizedDifferences:
     parameters, so H1 holds for every real parameter value (0 included) where the mask is defined.
     """
 
-    def __init__(self, s: LevelDependentScheme):
-        self.s = s
+    def __init__(self, s: LevelDependentScheme, arity: int = 2):
+        self.s, self.arity = s, arity
         loose = {p.name: (1, 2) for p in s.params if p.is_real and not (p.is_positive or p.is_negative)}
         self.probe = _with_box_signs(s, loose) if loose else s
         self.back = {q: p for p, q in zip(s.params, self.probe.params) if p is not q}
         self._schemes: dict = {}
 
     def factors(self) -> Result:
-        fac = exponential_factors(self.probe)
+        fac = exponential_factors(self.probe, self.arity)
         if fac.value is None or not self.back:
             return fac
         return Result(value=tuple(x.xreplace(self.back) for x in fac.value), status=fac.status,
@@ -159,13 +171,13 @@ class _BoxGeneralizedDifferences:
                       provenance=fac.provenance)
 
     def subsets(self, j: int) -> list[tuple]:
-        fac = exponential_factors(self.probe)
+        fac = exponential_factors(self.probe, self.arity)
         return [tuple(x.xreplace(self.back) for x in sub) for sub in _subsets(fac.value, j)]
 
     def get(self, subset) -> tuple[LevelDependentScheme | None, Result]:
         if subset not in self._schemes:
             try:
-                self._schemes[subset] = generalized_difference(self.s, subset)
+                self._schemes[subset] = generalized_difference(self.s, subset, self.arity)
             except (AnalysisError, ValueError, TypeError) as e:      # no proof of H1: inconclusive
                 self._schemes[subset] = (None, Result(value=None, status=INCONCLUSIVE, witness={"reason": str(e)}))
         return self._schemes[subset]
@@ -174,10 +186,12 @@ class _BoxGeneralizedDifferences:
 class _Context:
     """One scheme on one box: the difference schemes, the caches of series, supports and limit tests."""
 
-    def __init__(self, s: LevelDependentScheme, env: dict, open_param: str | None, N: int, L_max: int):
+    def __init__(self, s: LevelDependentScheme, env: dict, open_param: str | None, N: int, L_max: int,
+                 arity: int = 2):
         self.s, self.env, self.open_param, self.N, self.L_max = s, env, open_param, N, L_max
-        self.diffs = _Differences(s)           # the divided difference schemes, shared with ck.py's chain
-        self.gd = _BoxGeneralizedDifferences(s)
+        self.arity = arity
+        self.diffs = _Differences(s, arity)    # the divided difference schemes, shared with ck.py's chain
+        self.gd = _BoxGeneralizedDifferences(s, arity)
         self.cache: dict = {}
         self.converges: Result | None = None
 
@@ -193,7 +207,7 @@ class _Context:
         if not free:
             key = ("lim", str(a), m)
             if key not in self.cache:
-                self.cache[key] = stationary_smoothness(a, m, L_max=self.L_max)
+                self.cache[key] = stationary_smoothness(a, m, L_max=self.L_max, arity=self.arity)
             return self.cache[key]
         if len(free) > 1:
             return Result(value=None, status=INCONCLUSIVE,
@@ -211,20 +225,21 @@ class _Context:
     def _limit_closed(self, a, m: int, name: str, sub) -> Result:
         """C^m of ``S_a`` on the closed sub-interval ``sub`` of ``name``: exact norm sets over the whole box."""
         from ..algebra.algebraic import IntervalSet
-        from ..algebra.factorization import smoothing_factor
         from ..stationary.normset import norm_solution_set
 
         key = ("sf", str(a))
         if key not in self.cache:
-            self.cache[key] = smoothing_factor(a, exceptional=False).value
+            self.cache[key] = _smoothing_order(a, self.arity)
         if self.cache[key] < m + 1:
+            q = "(1+z)" if self.arity == 2 else f"({q_label(self.arity)})"
             return Result(value=None, status=INCONCLUSIVE,
-                          witness={"smooth": None, "reason": f"(1+z)^{m + 1} does not divide the limit generically"})
+                          witness={"smooth": None, "reason": f"{q}^{m + 1} does not divide the limit generically"})
         lo, hi = self.env[name]
         for L in range(1, self.L_max + 1):
             key = ("set", str(a), m, L)
             if key not in self.cache:
-                self.cache[key] = norm_solution_set(a, m + 1, L, name, within=(lo - 1, hi + 1)).value
+                self.cache[key] = norm_solution_set(a, m + 1, L, name, within=(lo - 1, hi + 1),
+                                                     arity=self.arity).value
             for part in self.cache[key].parts:
                 one = IntervalSet([part])
                 if one.contains(sub[0]) and one.contains(sub[1]):
@@ -243,7 +258,9 @@ class _Context:
                                f"{name} in [{sp.sstr(sub[0])}, {sp.sstr(sub[1])}]{advice}"})
 
     def _is_difference_limit(self, t: LevelDependentScheme, j: int) -> bool:
-        """``(1+z)^j lim t^n = 2^j lim a^n`` exactly (checked once per scheme)."""
+        """``(1+z)^j lim t^n = 2^j lim a^n`` exactly (checked once per scheme); arity m: not used (False)."""
+        if self.arity != 2:
+            return False
         key = ("dlim", id(t), j)
         if key not in self.cache:
             z = sp.Symbol("z")
@@ -270,7 +287,7 @@ class _Context:
             key = ("series", t.slug, id(t), m, _key(b))
             if key not in self.cache:
                 try:
-                    self.cache[key] = weighted_series(t, b, m, N=self.N)
+                    self.cache[key] = weighted_series(t, b, m, N=self.N, arity=self.arity)
                 except AnalysisError as e:
                     self.cache[key] = Result(status=INCONCLUSIVE, witness={"verdict": "unknown", "error": str(e)})
             hyps[f"series_m={m}"] = ser = self.cache[key]
@@ -278,7 +295,7 @@ class _Context:
                 key = ("support", t.slug, id(t), _key(b))
                 if key not in self.cache:
                     try:
-                        self.cache[key] = same_support(t, b, N=self.N)
+                        self.cache[key] = same_support(t, b, N=self.N, arity=self.arity)
                     except AnalysisError as e:
                         self.cache[key] = Result(status=INCONCLUSIVE, witness={"failed": str(e)})
                 hyps["same_support"] = self.cache[key]
@@ -312,6 +329,16 @@ def _decide(ctx: _Context, box: dict, k: int, max_tries: int = 6) -> dict:
     for j in order:
         r = ctx.dyn_levin(ctx.difference(j), box, k - j, k)
         route = "Dyn-Levin direct" if j == 0 else f"Dyn-Levin on the {_ordinal(j)} divided difference scheme"
+        if _ok(r) and j > 0 and ctx.arity != 2:
+            # arity m: the divided-difference argument is the generalized one with Lambda = (0, ..., 0)
+            # (analysis.levels.gendiff), which also needs the convergence of {S_(a^n)} (H2), as in ck.py
+            conv = _converges(ctx, box)
+            if not _ok(conv):
+                tried.append({"route": route, "failed": ["H2: convergence of {S_(a^n)} on the sub-box"],
+                              "why": conv.witness.get("why", "")})
+                continue
+            return {"status": CERTIFIED, "route": route, "j": j,
+                    "hypotheses": {**r.witness["hypotheses"], "convergence": conv}}
         if _ok(r):
             return {"status": CERTIFIED, "route": route, "j": j, "hypotheses": r.witness["hypotheses"]}
         tried.append({"route": route, "failed": r.witness["failed"], "why": r.witness["why"]})
@@ -322,6 +349,20 @@ def _decide(ctx: _Context, box: dict, k: int, max_tries: int = 6) -> dict:
     return {"status": INCONCLUSIVE, "tried": tried}
 
 
+def _converges(ctx: _Context, box: dict) -> Result:
+    """H2: ``{S_(a^n)}`` converges on the sub-box (the C^0 cover of the whole box, else Dyn–Levin direct there)."""
+    conv = ctx.converges
+    if conv is not None and conv.is_certified:
+        return conv
+    d = ctx.dyn_levin(ctx.s, box, 0)
+    if not _ok(d):
+        return Result(value=None, status=INCONCLUSIVE,
+                      witness={"why": f"C^0 is not certified on the sub-box ({d.witness['why']})"})
+    return Result(value=True, status=CERTIFIED, witness={"statement": "{S_(a^n)} converges on the sub-box",
+                                                         "route": "Dyn-Levin direct", **d.witness},
+                  provenance=d.provenance)
+
+
 def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
     route = "Dyn-Levin on a generalized divided difference scheme (exponential factors)"
     fac = ctx.gd.factors()
@@ -329,15 +370,9 @@ def _gendiff(ctx: _Context, box: dict, k: int, max_tries: int) -> dict:
         why = fac.witness.get("reason") or ("no exponential factor with lambda != 0 divides a^n identically in n "
                                             "and in the parameters")
         return {"route": route, "failed": ["H1: exponential factor p_n | a^n for every n"], "why": why}
-    conv = ctx.converges
-    if conv is None or not conv.is_certified:          # H2 on this sub-box only: Dyn-Levin direct there
-        d = ctx.dyn_levin(ctx.s, box, 0)
-        if not _ok(d):
-            return {"route": route, "failed": ["H2: convergence of {S_(a^n)} on the sub-box"],
-                    "why": f"C^0 is not certified on the sub-box ({d.witness['why']})"}
-        conv = Result(value=True, status=CERTIFIED, witness={"statement": "{S_(a^n)} converges on the sub-box",
-                                                             "route": "Dyn-Levin direct", **d.witness},
-                      provenance=d.provenance)
+    conv = _converges(ctx, box)
+    if not _ok(conv):
+        return {"route": route, "failed": ["H2: convergence of {S_(a^n)} on the sub-box"], "why": conv.witness["why"]}
     fails = []
     for j in range(min(k, len(fac.value)), 0, -1):
         for subset in ctx.gd.subsets(j)[:max_tries]:
@@ -407,147 +442,6 @@ def _cover(ctx: _Context, k: int, pieces: int, depth: int) -> dict:
     return out
 
 
-# -------------------------------------------------------------------- route 4 on the box
-def normalisers_nonzero_box(lams, env: Mapping[str, Any], *, depth: int = 8, n_levels_max: int = 4096) -> Result:
-    """``1 + exp(lambda_i(p) 2^-(n+1)) != 0`` for every level ``n >= 0`` and every ``p`` in the box.
-
-    ``lams``: frequencies (sympy, may use the boxed parameters). A frequency is enclosed over the
-    (sub-)box in complex ball arithmetic; for ``n >= n_0`` (``sup |lambda| 2^-(n_0+1) < pi``)
-    ``1 + e^mu = 0`` would need ``|mu| >= pi``; the levels ``n < n_0`` are enclosed directly, the
-    box bisected (at most ``depth`` times) where an enclosure contains 0.
-
-    >>> t = sp.Symbol("t", positive=True)
-    >>> normalisers_nonzero_box([sp.I * t, -sp.I * t], {"t": (sp.Rational(1, 10), 3)}).status
-    'certified'
-    >>> r = normalisers_nonzero_box([sp.I * t], {"t": (6, 7)})     # t = 2 pi: 1 + e^(i pi) = 0 at n = 0
-    >>> r.status, "(level n = 0;" in r.witness["reason"]
-    ('inconclusive', True)
-    """
-    checked = []
-    for lam in lams:
-        lam = sp.sympify(lam)
-        names = {x.name for x in lam.free_symbols}
-        if not names <= set(env):
-            raise AnalysisError(f"the frequency {sp.sstr(lam)} uses names without values: "
-                                f"{', '.join(sorted(names - set(env)))}")
-        todo = [({k: v for k, v in env.items() if k in names}, 0)]
-        while todo:
-            box, d = todo.pop()
-            bad = _normaliser_bad_level(lam, box, n_levels_max)
-            if bad is None:
-                continue
-            if d >= depth or not any(isinstance(v, tuple) for v in box.values()):
-                return Result(value=None, status=INCONCLUSIVE,
-                              witness={"reason": f"1 + exp({sp.sstr(lam)} 2^-{bad + 1}) not certified != 0 on "
-                                                 f"{_describe(box, None)} (level n = {bad}; the mask may be "
-                                                 "undefined there)", "box": exact_box(box)})
-            todo.extend((c, d + 1) for c in _bisect(box))
-        checked.append(sp.sstr(lam))
-    return Result(value=True, status=CERTIFIED,
-                  witness={"statement": "1 + exp(lambda_i 2^-(n+1)) != 0 for all n >= 0 at every point of the box",
-                           "checked": checked},
-                  provenance={"method": "complex Arb enclosure over (bisected) boxes at the levels with "
-                                        "sup|lambda| 2^-(n+1) >= pi; |mu| < pi excludes 1 + e^mu = 0"})
-
-
-def _normaliser_bad_level(lam, box, n_levels_max: int) -> int | None:
-    """The first level where ``1 + exp(lambda 2^-(n+1))`` is not enclosed away from 0 on the box, or None."""
-    with workprec(128):
-        envb = {k: _to_ball(v, True) for k, v in box.items()}
-        b = _ball(lam, envb, True)
-        if not b.is_finite():
-            return 0
-        if not b.real.contains(0):
-            return None              # |exp(lambda h)| != 1 for every h > 0
-        pi = flint.arb.pi()
-        mag = abs(b)
-        n0 = 0
-        while not (mag / 2 ** (n0 + 1) < pi):
-            n0 += 1
-            if n0 > n_levels_max:
-                return 0
-        for n in range(n0):
-            if not abs(1 + (b / 2 ** (n + 1)).exp()) > 0:
-                return n
-    return None
-
-
-def conjugation_closed_box(lams, env: Mapping[str, Any]) -> Result:
-    """The frequency multiset is closed under complex conjugation for every parameter value of the box
-    (then the mask is real there): each ``conj(lambda_i)`` equals some ``lambda_j`` identically, with every
-    boxed parameter declared positive (negative) when its box lies in ``[0, oo)`` (``(-oo, 0]``), real
-    otherwise. Inconclusive when this is not proved (e.g. ``sqrt(t)`` on a box through 0: complex masks
-    for ``t < 0``).
-
-    >>> t = sp.Symbol("t", real=True)
-    >>> conjugation_closed_box([0, sp.I * t, -sp.I * t], {"t": (sp.Rational(1, 10), 3)}).status
-    'certified'
-    >>> conjugation_closed_box([0, sp.sqrt(t)], {"t": (-1, 3)}).status
-    'inconclusive'
-    >>> conjugation_closed_box([0, sp.sqrt(t)], {"t": (0, 3)}).status
-    'certified'
-    """
-    rep = {}
-    for x in set().union(*(sp.sympify(lam).free_symbols for lam in lams)) if lams else ():
-        v = env.get(x.name)
-        lo, hi = (v if isinstance(v, tuple) else (v, v)) if v is not None else (None, None)
-        if lo is not None and sp.sympify(lo) >= 0:
-            rep[x] = sp.Symbol(x.name, positive=True) if sp.sympify(hi) > 0 else sp.Integer(0)
-        elif hi is not None and sp.sympify(hi) <= 0:
-            rep[x] = -sp.Symbol(x.name, positive=True) if sp.sympify(lo) < 0 else sp.Integer(0)
-        else:
-            rep[x] = sp.Symbol(x.name, real=True)
-    left = [sp.sympify(lam).xreplace(rep) for lam in lams]
-    for lam in list(left):
-        if lam not in left:
-            continue
-        c = sp.simplify(sp.conjugate(lam))
-        match = next((i for i, mu in enumerate(left) if sp.simplify(mu - c) == 0), None)
-        if match is None:
-            return Result(value=None, status=INCONCLUSIVE,
-                          witness={"reason": f"conj({sp.sstr(lam)}) is not among the frequencies for every parameter "
-                                             "value of the box (the mask may be complex there)"})
-        left.pop(match)
-        if sp.simplify(lam - c) != 0:
-            left.remove(lam)
-    return Result(value=True, status=CERTIFIED, witness={"frequencies": [sp.sstr(x) for x in lams]})
-
-
-def not_ck_box(s: LevelDependentScheme, env: Mapping[str, Any], *, depth: int = 8) -> Result:
-    """Certified "not C^d at every point of the box" for an exponential B-spline scheme of order ``d+1``.
-
-    The form is recognised identically in n and in the parameters; the normalisers are certified
-    non-zero on the box (:func:`normalisers_nonzero_box`). Otherwise inconclusive naming the failure.
-    """
-    rec = recognise(s)
-    hyps = {"exponential_bspline_form": rec}
-    prov = {"method": "exact recognition (identically in the parameters) + normalisers on the box"}
-    if rec.value is None:
-        return Result(value=None, status=INCONCLUSIVE,
-                      witness={"k": None, "failed": ["exponential_bspline_form"], "reason": rec.witness["reason"],
-                               "hypotheses": hyps}, provenance=prov)
-    d = rec.witness["order"] - 1
-    conj = conjugation_closed_box(rec.value, env)
-    hyps["conjugation_closed"] = conj
-    if not conj.is_certified:
-        return Result(value=None, status=INCONCLUSIVE,
-                      witness={"k": d, "failed": ["conjugation_closed"], "reason": conj.witness["reason"],
-                               "hypotheses": hyps}, provenance=prov)
-    norm = normalisers_nonzero_box(rec.value, env, depth=depth)
-    hyps["normalisers_nonzero"] = norm
-    if not (norm.is_certified and norm.value is True):
-        return Result(value=None, status=INCONCLUSIVE,
-                      witness={"k": d, "failed": ["normalisers_nonzero"], "reason": norm.witness.get("reason"),
-                               "hypotheses": hyps}, provenance=prov)
-    freqs = ", ".join(rec.witness["frequencies"])
-    return Result(value=False, status=CERTIFIED,
-                  witness={"k": d, "order": d + 1, "frequencies": rec.value, "hypotheses": hyps,
-                           "theorem": (f"exponential B-spline scheme of order {d + 1} (frequencies {freqs}) at every "
-                                       "point of the box: its basic limit function is a non-zero multiple of "
-                                       f"B_Lambda, C^{d - 1} and not C^{d} (Unser-Blu 2005, Conti-Romani 2010)")},
-                  provenance=prov)
-
-
 # -------------------------------------------------------------------- the entry point
 def _limit_top(ctx: _Context, a, k_max: int | None) -> tuple[int, int | None, dict, int]:
     """``(k_lim, not_k, a_smooth, top)``: the limit's certified smoothness and the last k to decide."""
@@ -555,18 +449,18 @@ def _limit_top(ctx: _Context, a, k_max: int | None) -> tuple[int, int | None, di
     if not a.params:
         from ..regularity import smoothness as regularity_smoothness
 
-        k_lim, not_k, a_smooth = limit_smoothness(a, cap, regularity_smoothness)
-        return k_lim, not_k, a_smooth, k_lim
-    from ..algebra.factorization import smoothing_factor
+        def mary_smoothness(a, k):
+            return stationary_smoothness(a, k, L_max=ctx.L_max, arity=ctx.arity)
 
-    kf = smoothing_factor(a, exceptional=False).value
-    top = min(cap, kf - 1)
+        k_lim, not_k, a_smooth = limit_smoothness(a, cap, regularity_smoothness if ctx.arity == 2 else mary_smoothness)
+        return k_lim, not_k, a_smooth, k_lim
+    top = min(cap, _smoothing_order(a, ctx.arity) - 1)
     return -1, None, {}, top
 
 
 def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, pieces: int = 1, depth: int = 2,
                          k_max: int | None = None, open_param: str | None = None, N: int = 40,
-                         L_max: int = 4) -> Result:
+                         L_max: int = 4, arity: int = 2) -> Result:
     """C^k of ``{S_{a^n}}`` at every point of a parameter box, for each k (see the module).
 
     ``values``: every parameter an exact value or a closed box ``(lo, hi)`` (one or two boxes).
@@ -576,7 +470,26 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
     ``witness["verdicts"]``: per k the cover (sub-boxes with their routes) and the undecided
     sub-boxes (exact ends, per route the failed hypothesis); ``witness["not_C^k"]``, ``"exact"``
     as in :func:`analysis.levels.ck.level_smoothness`.
+
+    ``arity`` m: ``s`` is read with ``h = m^-n`` (a :class:`~analysis.levels.mary.LevelDependentMary` is
+    unwrapped and carries its arity): the routes with dilation m, as
+    ``level_smoothness(..., arity=m)`` (divided differences ``(m/q_m)^j a^n`` need the convergence of
+    ``{S_(a^n)}`` on the sub-box, the normalisers are ``q_m(exp(lambda m^-(n+1)))``); ``open_param`` is binary only.
+
+    >>> from schemes.level_mary import get_mary
+    >>> r = level_smoothness_box(get_mary("ternary-exp-bspline-1-hyp"), {"t": (sp.Rational(1, 2), 2)})
+    >>> r.value, r.witness["exact"], [(v["verdict"], v["status"]) for v in r.witness["verdicts"]]
+    (0, True, [('C^0', 'certified'), ('not C^1', 'certified')])
     """
+    if hasattr(s, "arity") and hasattr(s, "scheme"):           # a LevelDependentMary
+        if arity not in (2, s.arity):
+            raise AnalysisError(f"scheme {s.slug!r} has arity {s.arity}, not {arity}")
+        s, arity = s.scheme, s.arity
+    if isinstance(arity, bool) or not isinstance(arity, int) or arity < 2:
+        raise AnalysisError(f"arity must be an integer >= 2, not {arity!r}")
+    if open_param is not None and arity != 2:
+        raise AnalysisError("open_param (--open) is available for binary schemes only (the open-interval limit test "
+                            "is binary)")
     if isinstance(pieces, bool) or not isinstance(pieces, int) or pieces < 1:
         raise AnalysisError(f"pieces must be an integer >= 1, not {pieces!r}")
     if isinstance(depth, bool) or not isinstance(depth, int) or not 0 <= depth <= 8:
@@ -603,7 +516,7 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
         raise AnalysisError(f"open_param {open_param} needs a box for {open_param}")
     s = _with_box_signs(s, env)
     mid = {k: sp.nsimplify(sp.Rational(str(sp.N((v[0] + v[1]) / 2, 15)))) for k, v in env.items()}
-    check_real(s.subs(mid))                       # one-line error on a mask that is not real (box midpoint)
+    check_real(s.subs(mid), arity=arity)                       # one-line error on a mask that is not real (box midpoint)
     if all(H not in c.free_symbols for c in s.mask):
         raise AnalysisError("the scheme does not depend on the level: use the stationary analysis")
     prefill_taylor(s)
@@ -611,7 +524,7 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
     if open_param is not None and open_param not in {p.name for p in a.params}:
         raise AnalysisError(f"the limit does not depend on {open_param}: --open names the limit's parameter "
                             f"(its parameters: {', '.join(p.name for p in a.params) or 'none'})")
-    ctx = _Context(s, env, open_param, N, L_max)
+    ctx = _Context(s, env, open_param, N, L_max, arity)
     k_lim, not_k, a_smooth, top = _limit_top(ctx, a, k_max)
     verdicts, best = [], -1
     for k in range(top + 1):
@@ -631,7 +544,7 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
     for v in verdicts:
         if v["status"] == CERTIFIED and best == v["k"] - 1:
             best = v["k"]
-    cert = not_ck_box(s, env, depth=depth + 4)
+    cert = not_ck_box(s, env, depth=depth + 4, arity=arity)
     d = cert.witness.get("k")
     if cert.is_certified and cert.value is False and d is not None and d > max(best, k_lim) and \
             (k_max is None or d <= k_max):
@@ -655,6 +568,7 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
                            "limit": lim_info, "not_C^k": None if cert is None else cert.witness["k"], "exact": exact,
                            "open": open_param},
                   provenance={"scheme": s.slug, "N": N, "pieces": pieces, "depth": depth,
+                              **({} if arity == 2 else {"arity": arity}),
                               "method": ("adaptive cover of the box; per sub-box Dyn-Levin 1995 (direct, divided "
                                          "differences, generalized divided differences); exponential B-spline "
                                          "recognition for 'not C^d'")})
