@@ -85,10 +85,12 @@ def test_arity_mismatch_in_python():
         level_smoothness_box(get_mary("ternary-exp-bspline-1-trig"), {"t": (1, 2)}, arity=4)
 
 
-def test_parametric_ternary_limit_hassan_range():
-    # the ternary 4-point scheme of Hassan-Ivrissimtzis-Dodgson-Sabin, CAGD 19 (2002) 1-18, is C^2 exactly for
-    # 1/15 < mu < 1/9; perturbed by 3^-n/100 at level n, the limit is that scheme: C^2 on a box inside the range,
-    # not certified on a box through mu = 1/9 (the limit's exact m-ary norm sets decide the sub-boxes)
+def test_parametric_ternary_limit_ternary_four_point():
+    # the catalogue's ternary-four-point family (mask typed from memory of Hassan-Ivrissimtzis-Dodgson-Sabin 2002,
+    # NOT checked against the paper) has the C^2 set exactly (1/15, 1/9), certified by this code on both sides
+    # (tests/test_issue12_strips.py, `subdiv range --scheme ternary-four-point --C 2`); perturbed by 3^-n/100 at
+    # level n, the limit is that scheme: C^2 on a box inside the set, not certified on a box through mu = 1/9
+    # (the limit's exact m-ary norm sets decide the sub-boxes)
     mask = ["-1/18+m/6", "-1/18-m/6", "0", "7/18-m/2", "13/18+m/2", "1", "13/18+m/2", "7/18-m/2", "0",
             "-1/18-m/6", "-1/18+m/6"]
     s = level_scheme_mary(None, 3, mask=mask, start=-5, where=["m=mu+3**(-n)/100"], slug="mask")
