@@ -25,22 +25,27 @@ from analysis.regularity.sobolev_mary import sobolev_exponent_mary
 EXTRA = {"ternary-four-point": [{"mu": sp.Rational(1, 10)}, {"mu": sp.Rational(-1, 10)}]}
 
 
-def main() -> None:
-    rows, times = [], []
+def _cases():
+    """``(label, entry, mask)`` for every m-ary catalogue scheme (m >= 3) with at most 12 coefficients, at its
+    defaults and the EXTRA parameter values."""
     for e in schemes.entries(mary=True):
         if e.arity == 2:
             continue
         for values in [dict(e.defaults)] + EXTRA.get(e.slug, []):
             a = e.symbol_at(**values)
-            if len(a) > 12:
-                continue
-            t0 = time.perf_counter()
-            h = holder_exponent_mary(a, e.arity)
-            dt = time.perf_counter() - t0
-            times.append(dt)
-            alpha = sp.sstr(h.value) if h.value is not None else f"[{float(h.lower):.10f}, {float(h.upper):.10f}]"
-            label = e.slug + ("" if not values else " " + ",".join(f"{k}={v}" for k, v in values.items()))
-            rows.append((label, e.arity, len(a), alpha, h.status, dt))
+            if len(a) <= 12:
+                yield e.slug + ("" if not values else " " + ",".join(f"{k}={v}" for k, v in values.items())), e, a
+
+
+def main() -> None:
+    rows, times = [], []
+    for label, e, a in _cases():
+        t0 = time.perf_counter()
+        h = holder_exponent_mary(a, e.arity)
+        dt = time.perf_counter() - t0
+        times.append(dt)
+        alpha = sp.sstr(h.value) if h.value is not None else f"[{float(h.lower):.10f}, {float(h.upper):.10f}]"
+        rows.append((label, e.arity, len(a), alpha, h.status, dt))
     w = max(len(r[0]) for r in rows)
     print(f"{'scheme':<{w}}  m  len  alpha                          status     seconds")
     for label, m, n, alpha, status, dt in rows:
@@ -53,21 +58,14 @@ def main() -> None:
 def sobolev() -> None:
     times = []
     print("\nm-ary L2-Sobolev exponent s_2 (certified)")
-    for e in schemes.entries(mary=True):
-        if e.arity == 2:
-            continue
-        for values in [dict(e.defaults)] + EXTRA.get(e.slug, []):
-            a = e.symbol_at(**values)
-            if len(a) > 12:
-                continue
-            t0 = time.perf_counter()
-            r = sobolev_exponent_mary(a, e.arity)
-            dt = time.perf_counter() - t0
-            times.append(dt)
-            s2 = sp.sstr(r.value) if r.value is not None else (
-                f"[{float(r.lower):.10f}, {float(r.upper):.10f}]" if r.lower is not None else "-")
-            label = e.slug + ("" if not values else " " + ",".join(f"{k}={v}" for k, v in values.items()))
-            print(f"  {label:<32} s_2 = {s2:<30} {r.status:<12} {dt:7.3f} s")
+    for label, e, a in _cases():
+        t0 = time.perf_counter()
+        r = sobolev_exponent_mary(a, e.arity)
+        dt = time.perf_counter() - t0
+        times.append(dt)
+        s2 = sp.sstr(r.value) if r.value is not None else (
+            f"[{float(r.lower):.10f}, {float(r.upper):.10f}]" if r.lower is not None else "-")
+        print(f"  {label:<32} s_2 = {s2:<30} {r.status:<12} {dt:7.3f} s")
     print(f"{len(times)} schemes: median {statistics.median(times):.3f} s, max {max(times):.3f} s")
 
 

@@ -197,8 +197,7 @@ class Symmetry(Kind):
     def check(self) -> None:
         self.values()
         self.number("centre")
-        if not isinstance(self.get("symmetric", True), bool):
-            raise AnalysisError(f"{self.where}: field 'symmetric' must be true or false")
+        self.boolean("symmetric", True)
 
     def evaluate(self) -> Verdict:
         r = symmetry(self.symbol()) if self.arity == 2 else symmetry_mary(self.symbol(), self.arity)

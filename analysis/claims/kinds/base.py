@@ -304,6 +304,13 @@ class Kind:
             raise AnalysisError(f"{self.where}: field {key!r} must be an integer >= {lo}, not {v!r}")
         return v
 
+    def boolean(self, key: str, default=None) -> bool:
+        """The field ``key`` as a TOML boolean (``default`` when absent; required when ``default`` is None)."""
+        v = self.get(key, default)
+        if not isinstance(v, bool):
+            raise AnalysisError(f"{self.where}: field {key!r} must be true or false")
+        return v
+
     def number(self, key: str):
         v = self.get(key)
         return None if v is None else parse_number(v, f"{self.where}: field {key!r}")

@@ -91,8 +91,7 @@ class WeightedSeries(_LevelKind):
     def check(self) -> None:
         super().check()
         self.integer("m"), self.integer("difference")
-        if not isinstance(self.get("converges"), bool):
-            raise AnalysisError(f"{self.where}: field 'converges' must be true or false")
+        self.boolean("converges")
 
     def evaluate(self) -> Verdict:
         m = self.fixed_m if self.fixed_m is not None else self.get("m", 0)

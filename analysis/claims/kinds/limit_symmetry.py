@@ -70,8 +70,7 @@ class LimitSymmetry(Kind):
     def check(self) -> None:
         self.values()
         self.number("centre")
-        if not isinstance(self.get("symmetric", True), bool):
-            raise AnalysisError(f"{self.where}: field 'symmetric' must be true or false")
+        self.boolean("symmetric", True)
         if self.get("type", "primal") not in ("primal", "dual"):
             raise AnalysisError(f"{self.where}: field 'type' must be 'primal' or 'dual'")
 
