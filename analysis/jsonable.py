@@ -19,6 +19,7 @@ from fractions import Fraction
 from typing import Any
 
 import sympy as sp
+from .algebra.reader import as_expr
 
 
 def jsonable(obj: Any) -> Any:
@@ -55,7 +56,7 @@ def jsonable(obj: Any) -> Any:
 
 def exact_and_float(x: Any) -> dict:
     """``{"exact": "...", "float": 0.123}`` for a real exact number ``x``."""
-    x = sp.sympify(x)
+    x = as_expr(x)
     out: dict = {"exact": sp.sstr(x)}
     if x.is_real and x.is_number:
         out["float"] = float(sp.N(x, 20))
@@ -91,7 +92,7 @@ def _as_fraction(x: Any, side: str) -> Fraction:
             return _as_fraction(x.item(), side)
     except ImportError:  # pragma: no cover
         pass
-    e = sp.sympify(x)
+    e = as_expr(x)
     if e.is_Rational:
         return Fraction(int(e.p), int(e.q))
     if isinstance(e, sp.Float):

@@ -46,6 +46,7 @@ import mpmath
 import sympy as sp
 
 from ..result import AnalysisError
+from .reader import as_expr
 
 iv = mpmath.iv
 
@@ -66,7 +67,7 @@ def enclose(x, prec: int = 80):
     (True, True)
     """
     with _ivprec(prec):
-        return _enc(sp.sympify(x), prec)
+        return _enc(as_expr(x), prec)
 
 
 def _enc(x, prec):
@@ -127,7 +128,7 @@ def sign(x, *, max_prec: int = 8192) -> int:
     """
     if isinstance(x, RealAlgebraic):
         return x.sign()
-    x = sp.sympify(x)
+    x = as_expr(x)
     if x.is_Rational:
         return int(sp.sign(x))
     prec = 64
@@ -155,7 +156,7 @@ def compare(x, y) -> int:
         xa = x if isinstance(x, RealAlgebraic) else RealAlgebraic.from_expr(x)
         ya = y if isinstance(y, RealAlgebraic) else RealAlgebraic.from_expr(y)
         return xa.compare(ya)
-    return sign(sp.sympify(x) - sp.sympify(y))
+    return sign(as_expr(x) - as_expr(y))
 
 
 # --------------------------------------------------------------------------------------------
@@ -212,7 +213,7 @@ class RealAlgebraic:
     @classmethod
     def from_expr(cls, x) -> "RealAlgebraic":
         """The algebraic number given by a closed-form expression (via its minimal polynomial)."""
-        x = sp.sympify(x)
+        x = as_expr(x)
         if isinstance(x, RealAlgebraic):
             return x
         if x.is_Rational:

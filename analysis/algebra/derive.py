@@ -80,6 +80,7 @@ from sympy.polys.matrices import DomainMatrix
 
 from ..result import CERTIFIED, AnalysisError, Result
 from .symbol import LaurentSymbol, parse_coefficient
+from .reader import as_expr
 
 __all__ = ["Requirement", "InconsistentRequirements", "requirements", "derive_mask", "max_sum_rules",
            "mask_string", "MAX_COEFFICIENTS"]
@@ -297,8 +298,8 @@ def _rref(rows: Sequence, order: Sequence[int]):
     for coeffs, rhs in rows:
         line = [sp.Integer(0)] * (n + 1)
         for i, v in coeffs.items():
-            line[col[i]] += sp.sympify(v)
-        line[n] = sp.sympify(rhs)
+            line[col[i]] += as_expr(v)
+        line[n] = as_expr(rhs)
         data.append(line)
     if not data:
         return [], ()
@@ -405,7 +406,7 @@ def _make_symbol(mask, lo, params):
 
 
 def _domain_name(rows, order) -> str:
-    data = [sp.sympify(v) for coeffs, rhs in rows for v in (*coeffs.values(), rhs)]
+    data = [as_expr(v) for coeffs, rhs in rows for v in (*coeffs.values(), rhs)]
     from sympy.polys.constructor import construct_domain
 
     return str(construct_domain(data, field=True, extension=True)[0]) if data else "QQ"

@@ -51,6 +51,7 @@ import re
 from typing import Iterable, Mapping
 
 import sympy as sp
+from .reader import as_expr
 
 __all__ = ["LinearForm", "P", "I_SYM", "N_SYM", "ghost_substitute", "read_garbled_linear",
            "displacement_construction",
@@ -71,9 +72,9 @@ class LinearForm:
     __slots__ = ("_c", "base")
 
     def __init__(self, coeffs: Mapping[int, object], base=I_SYM):
-        self._c = {int(k): sp.expand(sp.sympify(v)) for k, v in coeffs.items()
-                   if sp.expand(sp.sympify(v)) != 0}
-        self.base = sp.sympify(base)
+        self._c = {int(k): sp.expand(as_expr(v)) for k, v in coeffs.items()
+                   if sp.expand(as_expr(v)) != 0}
+        self.base = as_expr(base)
 
     # ------------------------------------------------------------------ access
     def __getitem__(self, p: int):
@@ -129,7 +130,7 @@ class LinearForm:
 
     def rebase(self, base) -> "LinearForm":
         """The same points written relative to another base: offsets change by ``old - new``."""
-        d = sp.simplify(self.base - sp.sympify(base))
+        d = sp.simplify(self.base - as_expr(base))
         if not d.is_Integer:
             raise ValueError(f"cannot rebase {self.base} to {base}")
         return LinearForm({k + int(d): v for k, v in self._c.items()}, base)

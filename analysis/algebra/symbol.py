@@ -56,6 +56,7 @@ from sympy.polys.constructor import construct_domain
 from sympy.polys.polyerrors import PolynomialError, CoercionFailed, GeneratorsError
 
 from ..result import AnalysisError
+from .reader import as_expr, read_expression
 
 #: The indeterminate of every symbol.
 Z = sp.Symbol("z")
@@ -68,10 +69,13 @@ _GREEK = {"w": "omega", "mu": "mu", "nu": "nu", "omega": "omega", "alpha": "alph
 # parsing exact numbers
 # --------------------------------------------------------------------------------------------
 
-def parse_coefficient(c, *, locals_: Mapping[str, sp.Symbol] | None = None) -> sp.Expr:
+def parse_coefficient(c, *, locals_: Mapping[str, sp.Symbol] | None = None, free: bool = True,
+                      what: str = "coefficient") -> sp.Expr:
     """Turn ``c`` into an exact sympy expression.
 
-    Strings are parsed with decimal literals read exactly (``"0.1"`` -> ``1/10``); Python floats
+    Strings are read by the input reader (:func:`analysis.algebra.reader.read_expression`: never
+    evaluated), decimal literals exactly (``"0.1"`` -> ``1/10``); other names than ``locals_``
+    become parameters unless ``free`` is false (then they are an error naming them). Python floats
     become the rational they represent; ``Fraction`` and sympy numbers pass through. Anything
     that is not a number or an expression in named parameters is an :class:`AnalysisError`.
 
@@ -98,10 +102,7 @@ def parse_coefficient(c, *, locals_: Mapping[str, sp.Symbol] | None = None) -> s
         text = c.strip()
         if not text:
             raise AnalysisError("empty coefficient in mask")
-        try:
-            expr = sp.sympify(text, rational=True, locals=dict(locals_ or {}))
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
-            raise AnalysisError(f"cannot read coefficient {text!r} as a number or formula") from None
+        expr = read_expression(text, names=locals_, free=free, what=what)
     else:
         try:
             import numpy as np
@@ -307,11 +308,8 @@ class LaurentSymbol:
         LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
         """
         if isinstance(expr, str):
-            try:
-                expr = sp.sympify(expr, rational=True, locals={"z": Z})
-            except (sp.SympifyError, SyntaxError, TypeError):
-                raise AnalysisError(f"cannot read the symbol {expr!r}") from None
-        expr = sp.expand(sp.sympify(expr))
+            expr = read_expression(expr, names={"z": Z}, what="symbol")
+        expr = sp.expand(as_expr(expr))
         num, den = sp.fraction(sp.together(expr))
         try:
             den_poly = sp.Poly(den, Z)
@@ -327,7 +325,7 @@ class LaurentSymbol:
             p = sp.Poly(num, Z)
         except PolynomialError:
             raise AnalysisError("the symbol must be a Laurent polynomial in z") from None
-        coeffs = [sp.sympify(c) for c in reversed(p.all_coeffs())]
+        coeffs = [as_expr(c) for c in reversed(p.all_coeffs())]
         return cls.from_mask(coeffs, start=shift, params=params)
 
     # ---------------------------------------------------------------- data
@@ -394,7 +392,7 @@ class LaurentSymbol:
 
     def __call__(self, z0):
         """Evaluate ``a(z0)`` exactly (``z0`` a number or expression)."""
-        z0 = sp.sympify(z0)
+        z0 = as_expr(z0)
         if z0 == 1 or z0 == -1:
             total = self.domain.zero
             for k, c in enumerate(reversed(self._poly.rep.to_list())):

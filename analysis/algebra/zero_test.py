@@ -103,6 +103,7 @@ from ..result import AnalysisError
 from .expressions import (FORMAL_MAX_TERMS, MAX_ZERO_BITS, Undecided, _atom_closure, _atoms_of, _bounds,
                           _deep_recursion, _guess_rational, _I, _ir, _MINUS1, _n, _neg, _Node, _rational_root,
                           _rootof_node, _short, _sub, _TooBig, degree_bound)
+from .reader import as_expr
 
 
 class _Algebra:
@@ -578,7 +579,7 @@ def enclose(e, prec: int = 128) -> flint.acb:
     (True, True, True)
     """
     with _deep_recursion():
-        node = _ir(sp.sympify(e), {})
+        node = _ir(as_expr(e), {})
         alg = _Algebra()
         alg.register([node])
         return alg.enclose(node, prec)
@@ -587,7 +588,7 @@ def enclose(e, prec: int = 128) -> flint.acb:
 def is_zero(e) -> bool:
     """Exactly: is the algebraic expression ``e`` zero? (See the module docstring.)"""
     with _deep_recursion():
-        node = _ir(sp.sympify(e), {})
+        node = _ir(as_expr(e), {})
         alg = _Algebra()
         alg.register([node])
         return alg.zero(node)[0]

@@ -76,6 +76,7 @@ import sympy as sp
 
 from ..jsonable import jsonable
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, STATUSES, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["golden_path", "KINDS", "LABELS", "Number", "Evidence", "Series", "Figure", "Verdict", "Claim", "Paper",
            "Evaluated", "papers", "get_paper", "evaluate_claim", "evaluate_paper", "verdicts_json",
@@ -98,7 +99,7 @@ KINDS = ("mask identity", "factorization", "sum rules", "norm test", "smoothness
 
 def _to_float(x) -> float | None:
     try:
-        v = complex(sp.N(sp.sympify(x), 30))
+        v = complex(sp.N(as_expr(x), 30))
     except (TypeError, ValueError, AttributeError, sp.SympifyError):   # text such as "(0, 1/8)": no float
         return None
     if v.imag != 0 or math.isnan(v.real):
@@ -136,7 +137,7 @@ class Number:
             return repr(self.value)
         if isinstance(self.value, (bool, str)):
             return str(self.value)
-        return sp.sstr(sp.sympify(self.value))
+        return sp.sstr(as_expr(self.value))
 
     def to_json(self) -> dict:
         out = {"exact": self.exact_text(), "float": self.float, "tol": self.tol}
@@ -505,7 +506,7 @@ def compare_verdicts(golden: Mapping, fresh: Mapping, papers_: Iterable[str] | N
 def _ra(x):
     from ..algebra.algebraic import RealAlgebraic
 
-    return x if isinstance(x, RealAlgebraic) else RealAlgebraic.from_expr(sp.sympify(x))
+    return x if isinstance(x, RealAlgebraic) else RealAlgebraic.from_expr(as_expr(x))
 
 
 def exact_set(predicate: Callable[[sp.Expr], bool], critical: Iterable, within=(-sp.oo, sp.oo)):
@@ -537,8 +538,8 @@ def exact_set(predicate: Callable[[sp.Expr], bool], critical: Iterable, within=(
                     pts.extend(RealAlgebraic.roots_of(f))
         else:
             pts.append(_ra(c))
-    lo = None if sp.sympify(within[0]) == -sp.oo else _ra(within[0])
-    hi = None if sp.sympify(within[1]) == sp.oo else _ra(within[1])
+    lo = None if as_expr(within[0]) == -sp.oo else _ra(within[0])
+    hi = None if as_expr(within[1]) == sp.oo else _ra(within[1])
     pts = [p for p in pts if (lo is None or p.compare(lo) > 0) and (hi is None or p.compare(hi) < 0)]
     uniq: list[RealAlgebraic] = []
     for p in _exact_sort(pts):

@@ -103,6 +103,7 @@ from ..levels.level_dependent import H, N, LevelDependentScheme, to_h
 from ..result import AnalysisError
 from .kinds import Domain, SchemeSpec, kind_class
 from .model import Claim, Paper
+from ..algebra.reader import as_expr
 
 __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
 
@@ -232,7 +233,7 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     except (TypeError, KeyError) as exc:
         raise AnalysisError(f"{w}: cannot read {how}: {exc}") from None
     if symbol is not None:
-        have = {x.name for c in symbol.mask for x in sp.sympify(c).free_symbols}
+        have = {x.name for c in symbol.mask for x in as_expr(c).free_symbols}
     else:
         have = {x.name for x in level.params}
     unknown = sorted(set(domains) - have)

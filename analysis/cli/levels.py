@@ -30,6 +30,7 @@ from .level_text import limit_line, series_line, verdict_lines
 from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from ..algebra.symbol import parse_coefficient
+from ..algebra.reader import as_expr
 
 
 def _level_scheme(args):
@@ -160,7 +161,7 @@ def cmd_bound(args) -> None:
         n0 = 1 if "3.1" in args.claim else 0
         vals.setdefault("omega", sp.Rational(1, 100))
         vals = {k: v for k, v in vals.items()
-                if k in {x.name for x in (sp.sympify(lhs).free_symbols | sp.sympify(rhs).free_symbols)}}
+                if k in {x.name for x in (as_expr(lhs).free_symbols | as_expr(rhs).free_symbols)}}
     else:
         if args.lhs is None or args.rhs is None:
             raise AnalysisError("give --claim ID, or --lhs EXPR and --rhs EXPR")

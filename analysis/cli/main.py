@@ -48,16 +48,71 @@ def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
     return p
 
 
+def _suggest(parser: argparse.ArgumentParser, argv: Sequence[str], message: str) -> str:
+    """The argparse message with "did you mean ...?" for a mistyped command or option."""
+    import difflib
+    import re
+
+    from .common import _option_table
+
+    _, _, subs = _option_table(parser)
+    m = re.search(r"invalid choice: '([^']*)'", message)
+    if m and subs:
+        close = difflib.get_close_matches(m.group(1), list(subs), n=1)
+        if close:
+            return f"unknown command {m.group(1)!r}: did you mean `subdiv {close[0]}`? (`subdiv --help` lists the commands)"
+        return f"unknown command {m.group(1)!r}: `subdiv --help` lists the commands"
+    if message.startswith("unrecognized arguments"):
+        command = next((a for a in argv if a in subs), None)
+        known = _option_table(subs[command])[1] if command else _option_table(parser)[1]
+        hints = []
+        for tok in argv:
+            if tok.startswith("--") and tok.split("=", 1)[0] not in known:
+                close = difflib.get_close_matches(tok.split("=", 1)[0], sorted(known), n=1, cutoff=0.6)
+                if close:
+                    hints.append(f"did you mean {close[0]} (not {tok.split('=', 1)[0]})?")
+        if hints:
+            return f"{message}; " + "; ".join(hints)
+        return f"{message} (`subdiv {command or ''} --help` lists the options)".replace("  ", " ")
+    return message
+
+
+def _error_document(message: str, kind: str) -> str:
+    import json
+
+    return json.dumps({"error": {"message": message, "kind": kind}}, indent=2)
+
+
 def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()) -> int:
+    """Run one ``subdiv`` command; the exit code: 0 done, 2 bad input (one line ``subdiv: error:``
+    on stderr, and with ``--json`` also ``{"error": {"message", "kind"}}`` on stdout), 1 a bug
+    (reported the same way), 130 interrupted."""
+    from ..algebra.reader import sympy_parser_guarded
+
     parser = build_parser(extra_modules)
     argv = list(sys.argv[1:] if argv is None else argv)
+    want_json = "--json" in argv[:argv.index("--")] if "--" in argv else "--json" in argv
+
+    def fail(message: str, kind: str, code: int) -> int:
+        message = " ".join(str(message).split())           # one line, whatever the source said
+        print(f"subdiv: error: {message}" if code == 2 else f"subdiv: internal error: {message}", file=sys.stderr)
+        if want_json:
+            try:
+                print(_error_document(message, kind), file=sys.stdout)
+                sys.stdout.flush()
+            except (BrokenPipeError, OSError):
+                pass
+        return code
+
     try:
-        args = parser.parse_args(attach_dash_values(parser, argv))
-        with _StdoutGuard():
+        try:
+            args = parser.parse_args(attach_dash_values(parser, argv))
+        except AnalysisError as exc:
+            return fail(_suggest(parser, argv, str(exc)), "usage", 2)
+        with sympy_parser_guarded(), _StdoutGuard():
             args.func(args)
     except AnalysisError as exc:
-        print(f"subdiv: error: {exc}", file=sys.stderr)
-        return 2
+        return fail(str(exc), getattr(exc, "kind", "input"), 2)
     except KeyboardInterrupt:
         print("subdiv: interrupted", file=sys.stderr)
         return 130
@@ -67,12 +122,15 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
         except OSError:  # pragma: no cover
             pass
         return 0
+    except (RecursionError, MemoryError) as exc:
+        return fail(f"the input is too large or nested too deeply ({type(exc).__name__}): give a smaller input",
+                    "limit", 2)
     except Exception as exc:  # never a traceback for users; SUBDIV_DEBUG=1 shows it
         if os.environ.get("SUBDIV_DEBUG"):
             raise
-        print(f"subdiv: internal error: {type(exc).__name__}: {str(exc).splitlines()[0] if str(exc) else ''} "
-              "(please report; SUBDIV_DEBUG=1 shows the traceback)", file=sys.stderr)
-        return 1
+        first = str(exc).splitlines()[0] if str(exc) else ""
+        return fail(f"{type(exc).__name__}: {first} (please report; SUBDIV_DEBUG=1 shows the traceback)",
+                    "internal", 1)
     return 0
 
 

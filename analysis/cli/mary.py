@@ -20,6 +20,7 @@ import sympy as sp
 from ..jsonable import exact_and_float
 from ..result import AnalysisError
 from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_writable, scheme_from_args
+from ..algebra.reader import as_expr
 
 
 def _fmt_set(S) -> str:
@@ -136,7 +137,7 @@ def cmd_refine(args, m: int) -> None:
     if steps < 0 or steps > 12:
         raise AnalysisError("--steps must be between 0 and 12 with --arity")
     if args.exact:
-        if any(not sp.sympify(v).is_Rational for row in data for v in np.atleast_1d(row)):
+        if any(not as_expr(v).is_Rational for row in data for v in np.atleast_1d(row)):
             raise AnalysisError("--exact refinement needs rational data")
         pts = [[sp.Rational(v) for v in np.atleast_1d(row)] for row in data]
     else:

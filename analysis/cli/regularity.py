@@ -19,6 +19,7 @@ from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_wi
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
+from ..algebra.reader import as_expr
 
 
 def _fmt(x, side: str | None = None, digits: int = 10) -> str:
@@ -286,7 +287,7 @@ def cmd_holder(args) -> None:
 def _interior_lines(it: dict, j: int) -> list:
     """The interior of one run: the certified pieces (exact ends) and the strips left."""
     def b(x):
-        x = sp.sympify(x)
+        x = as_expr(x)
         return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.10g}"
 
     left = "(" if it.get("from_open", False) else "["
@@ -298,7 +299,7 @@ def _interior_lines(it: dict, j: int) -> list:
         return [head + "certified at the grid points only (%s)" % it["route"]]
     out = [head + "C^%d proven on %s (%s)" % (j, it["certified"], it["route"])]
     for x, y in it["strips"]:
-        out.append(f"    inconclusive strip ({b(x)}, {b(y)}) (width {float(sp.sympify(y) - sp.sympify(x)):.3g})")
+        out.append(f"    inconclusive strip ({b(x)}, {b(y)}) (width {float(as_expr(y) - as_expr(x)):.3g})")
     return out
 
 

@@ -27,6 +27,7 @@ from ..algebra.symbol import parse_coefficient
 
 from . import mary as _mary
 from .common import scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
+from ..algebra.reader import as_expr
 
 
 def cmd_symbol(args) -> None:
@@ -204,7 +205,7 @@ def cmd_refine(args) -> None:
     if args.exact:
         from fractions import Fraction
 
-        pts = np.array([[Fraction(int(sp.Rational(v).p), int(sp.Rational(v).q)) if sp.sympify(v).is_Rational
+        pts = np.array([[Fraction(int(sp.Rational(v).p), int(sp.Rational(v).q)) if as_expr(v).is_Rational
                          else _not_rational(v) for v in row] for row in data], dtype=object)
     else:
         pts = np.array([[float(v) for v in row] for row in data], dtype=float)

@@ -33,6 +33,7 @@ import flint
 from flint import acb_mat, arb, arb_mat, fmpq, fmpq_mat, fmpz
 
 from ..result import AnalysisError
+from ..algebra.reader import as_expr
 
 #: Working precision (bits) of every Arb computation in this package.
 ARB_PREC = 192
@@ -284,7 +285,7 @@ def _entry(x: Any) -> tuple[str, Any]:
         from ..algebra.symbol import parse_coefficient
         x = parse_coefficient(x)
     if isinstance(x, sp.Basic):
-        x = sp.sympify(x)
+        x = as_expr(x)
         if x.free_symbols:
             raise AnalysisError(f"matrix entry {x} has free symbols {sorted(map(str, x.free_symbols))}; "
                                 "substitute parameter values first")

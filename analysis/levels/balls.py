@@ -38,6 +38,7 @@ import mpmath
 import sympy as sp
 
 from ..result import AnalysisError
+from ..algebra.reader import as_expr
 
 # --------------------------------------------------------------------------------------------
 # ball evaluation (python-flint arb/acb): rigorous
@@ -77,17 +78,17 @@ def ball(expr, env: Mapping[str, Any] | None = None, *, complex_: bool = False):
     """
     env = dict(env or {})
     cenv = {k: _to_ball(v, complex_) for k, v in env.items()}
-    return _ball(sp.sympify(expr), cenv, complex_)
+    return _ball(as_expr(expr), cenv, complex_)
 
 
 def _to_ball(v, complex_: bool):
     if isinstance(v, (flint.arb, flint.acb)):
         return flint.acb(v) if complex_ and isinstance(v, flint.arb) else v
     if isinstance(v, tuple) and len(v) == 2:
-        lo, hi = (_ball(sp.sympify(x), {}, False) for x in v)
+        lo, hi = (_ball(as_expr(x), {}, False) for x in v)
         b = lo.union(hi)
         return flint.acb(b) if complex_ else b
-    return _ball(sp.sympify(v), {}, complex_)
+    return _ball(as_expr(v), {}, complex_)
 
 
 def _ball(e: sp.Expr, env, cx: bool):

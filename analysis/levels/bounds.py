@@ -51,18 +51,19 @@ from .level_dependent import (H, LevelDependentScheme, _ball, _to_ball, ball_to_
                      taylor_models, to_h, workprec)
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .divided import _exact_zero  # noqa: F401 - re-exported: the exact zero test lives in .divided
+from ..algebra.reader import as_expr
 
 
 def _parse_box(box: Mapping[str, Any] | None) -> dict:
     out = {}
     for k, v in dict(box or {}).items():
         if isinstance(v, (tuple, list)):
-            lo, hi = (sp.sympify(x, rational=True) if isinstance(x, str) else sp.sympify(x) for x in v)
+            lo, hi = (as_expr(x, what=f"end of the box of {k}") for x in v)
             if not bool(lo <= hi):
                 raise AnalysisError(f"empty box for {k}: [{lo}, {hi}]")
             out[str(k)] = (lo, hi)
         else:
-            out[str(k)] = sp.sympify(v, rational=True) if isinstance(v, str) else sp.sympify(v)
+            out[str(k)] = as_expr(v, what=f"value of {k}")
     return out
 
 
@@ -256,7 +257,7 @@ def check_identity(lhs, rhs, *, claim: str = "", samples: int = 12, seed: int = 
     rational points (``z`` and ``h`` too), and certified by ball arithmetic.
     """
     L, R = to_h(lhs), to_h(rhs)
-    diff = sp.sympify(L - R)
+    diff = as_expr(L - R)
     stmt = f"{sp.sstr(lhs)} == {sp.sstr(rhs)}"
     if _exact_zero(diff):
         return Result(value=True, status=CERTIFIED, witness={"claim": claim, "statement": stmt},

@@ -89,6 +89,7 @@ from .level_dependent import H, LevelDependentScheme
 from .region import _describe, limit_smoothness_open
 from .series import _bisect, _parse_values, _split, same_support, stationary_smoothness, weighted_series
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["conjugation_closed_box", "level_smoothness_box", "normalisers_nonzero_box", "not_ck_box"]
 
@@ -114,9 +115,9 @@ def _with_box_signs(s: LevelDependentScheme, env: Mapping) -> LevelDependentSche
         v = env.get(p.name)
         new = p
         if isinstance(v, tuple) and not p.is_positive and not p.is_negative:
-            if bool(sp.sympify(v[0]) > 0):
+            if bool(as_expr(v[0]) > 0):
                 new = sp.Symbol(p.name, positive=True)
-            elif bool(sp.sympify(v[1]) < 0):
+            elif bool(as_expr(v[1]) < 0):
                 new = sp.Symbol(p.name, negative=True)
         if new is not p:
             rep[p] = new

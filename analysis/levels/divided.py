@@ -35,13 +35,14 @@ import sympy as sp
 
 from .level_dependent import H, LevelDependentScheme
 from ..result import AnalysisError
+from ..algebra.reader import as_expr
 
 __all__ = ["q_label", "divide_by_q", "divided_difference"]
 
 
 def _exact_zero(expr: sp.Expr) -> bool:
     """``expr == 0`` proved by sympy simplification (plain, exp-rewritten, trig-expanded); False: no proof."""
-    e = sp.sympify(expr)
+    e = as_expr(expr)
     if e == 0:
         return True
     for f in (lambda x: sp.simplify(x), lambda x: sp.simplify(x.rewrite(sp.exp)),
@@ -80,7 +81,7 @@ def divide_by_q(coeffs, m: int, j: int) -> list:
             if not _exact_zero(sp.expand(x)):
                 raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
                                     f"{sp.sstr(sp.simplify(x))})")
-        coeffs = [sp.cancel(m * c) if sp.sympify(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
+        coeffs = [sp.cancel(m * c) if as_expr(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
     return coeffs
 
 

@@ -125,6 +125,7 @@ import sympy as sp
 from .balls import _ball, workprec
 from .level_dependent import H, LevelDependentScheme
 from ..result import CERTIFIED, INCONCLUSIVE, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["recognise", "not_ck"]
 
@@ -179,7 +180,7 @@ def to_exponential_generators(exprs, *, in_h: bool = False) -> tuple[list[sp.Exp
     >>> out, gens                                   # X0 = exp(-h)
     ([(X0**4 + 2*X0 + 1)/(2*X0**2)], [-1])
     """
-    exprs = [sp.sympify(c).rewrite(sp.exp) for c in exprs]
+    exprs = [as_expr(c).rewrite(sp.exp) for c in exprs]
     args = {e.args[0] for c in exprs for e in c.atoms(sp.exp) if H in e.free_symbols}
     lin = {a: _linear_in_h(a) for a in args}
     slopes = sorted({c1 for c1, _ in lin.values() if c1 != 0}, key=sp.default_sort_key)
@@ -223,7 +224,7 @@ def _monomial_root(f, X, gens, arity: int):
     w = sp.cancel(beta / alpha)
     coeff, mono = w.as_coeff_Mul()
     powers = sp.powsimp(mono).as_powers_dict() if mono != 1 else {}
-    if coeff != 1 or any(b not in X or not sp.sympify(e).is_Integer for b, e in powers.items()):
+    if coeff != 1 or any(b not in X or not as_expr(e).is_Integer for b, e in powers.items()):
         return None
     return sp.simplify(arity * sum((int(e) * gens[X.index(b)] for b, e in powers.items()), sp.Integer(0))), w
 
@@ -249,7 +250,7 @@ def factors_mary(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], s
     >>> sorted((lam for lam, _ in pairs), key=sp.default_sort_key), rest
     ([0, 0, -4*I, 4*I], 1)
     """
-    gensyms = [x for x in (H, *X) if x in sp.sympify(num).free_symbols]
+    gensyms = [x for x in (H, *X) if x in as_expr(num).free_symbols]
     _, factors = sp.factor_list(num, _Z, *gensyms) if gensyms else sp.factor_list(num, _Z)
     cands = []
     for f, _ in factors:
@@ -294,7 +295,7 @@ def _frequencies(poly_expr, X, gens, arity: int = 2) -> list[tuple[sp.Expr, sp.E
         w = sp.cancel(beta / alpha)
         coeff, mono = w.as_coeff_Mul()
         powers = sp.powsimp(mono).as_powers_dict() if mono != 1 else {}
-        if coeff != 1 or any(b not in X or not sp.sympify(e).is_Integer for b, e in powers.items()):
+        if coeff != 1 or any(b not in X or not as_expr(e).is_Integer for b, e in powers.items()):
             raise _NotOfForm(f"the root of {sp.sstr(f)} is not -exp(lambda h/2) (w = {sp.sstr(w)})")
         lam = 2 * sum((int(e) * gens[X.index(b)] for b, e in powers.items()), sp.Integer(0))
         lams.extend([(sp.simplify(lam), w)] * int(mult))
@@ -350,7 +351,7 @@ def _normalisers_nonzero(lams, n_levels_max: int = 4096, arity: int = 2) -> Resu
     vanishes only for ``v^m = 1 != v``: never when ``Re lambda != 0``; for ``lambda = i b`` not once
     ``|b| m^-(n+1) < 2 pi/m``)."""
     m = arity
-    free = set().union(*(sp.sympify(x).free_symbols for x in lams))
+    free = set().union(*(as_expr(x).free_symbols for x in lams))
     if free:
         return Result(value=None, status=INCONCLUSIVE,
                       witness={"reason": f"free parameters {', '.join(sorted(map(str, free)))}: give values"})
@@ -360,7 +361,7 @@ def _normalisers_nonzero(lams, n_levels_max: int = 4096, arity: int = 2) -> Resu
         for lam in lams:
             if sp.im(lam) == 0 or sp.simplify(sp.re(lam)) != 0 and _ball(sp.re(lam), {}, False).abs_lower() > 0:
                 continue     # real part != 0 or lambda real: |w| != 1 or w > 0, so w != -1
-            b = _ball(sp.sympify(lam), {}, True)
+            b = _ball(as_expr(lam), {}, True)
             mag = abs(b)
             n0 = 0
             while not (mag / m ** (n0 + 1) < 2 * pi / m):

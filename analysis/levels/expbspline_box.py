@@ -43,6 +43,7 @@ from .level_dependent import LevelDependentScheme
 from .region import _describe
 from .series import _bisect
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["conjugation_closed_box", "exact_box", "normalisers_nonzero_box", "not_ck_box"]
 
@@ -80,7 +81,7 @@ def normalisers_nonzero_box(lams, env: Mapping[str, Any], *, depth: int = 8, n_l
     m = arity
     checked = []
     for lam in lams:
-        lam = sp.sympify(lam)
+        lam = as_expr(lam)
         names = {x.name for x in lam.free_symbols}
         if not names <= set(env):
             raise AnalysisError(f"the frequency {sp.sstr(lam)} uses names without values: "
@@ -147,16 +148,16 @@ def conjugation_closed_box(lams, env: Mapping[str, Any]) -> Result:
     'certified'
     """
     rep = {}
-    for x in set().union(*(sp.sympify(lam).free_symbols for lam in lams)) if lams else ():
+    for x in set().union(*(as_expr(lam).free_symbols for lam in lams)) if lams else ():
         v = env.get(x.name)
         lo, hi = (v if isinstance(v, tuple) else (v, v)) if v is not None else (None, None)
-        if lo is not None and sp.sympify(lo) >= 0:
-            rep[x] = sp.Symbol(x.name, positive=True) if sp.sympify(hi) > 0 else sp.Integer(0)
-        elif hi is not None and sp.sympify(hi) <= 0:
-            rep[x] = -sp.Symbol(x.name, positive=True) if sp.sympify(lo) < 0 else sp.Integer(0)
+        if lo is not None and as_expr(lo) >= 0:
+            rep[x] = sp.Symbol(x.name, positive=True) if as_expr(hi) > 0 else sp.Integer(0)
+        elif hi is not None and as_expr(hi) <= 0:
+            rep[x] = -sp.Symbol(x.name, positive=True) if as_expr(lo) < 0 else sp.Integer(0)
         else:
             rep[x] = sp.Symbol(x.name, real=True)
-    left = [sp.sympify(lam).xreplace(rep) for lam in lams]
+    left = [as_expr(lam).xreplace(rep) for lam in lams]
     for lam in list(left):
         if lam not in left:
             continue

@@ -149,6 +149,7 @@ from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .series import smoothness, stationary_smoothness
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["exponential_factors", "generalized_difference", "gendiff_smoothness", "GeneralizedDifferences"]
 
@@ -221,7 +222,7 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
         w = sp.cancel(beta / alpha)
         coeff, mono = w.as_coeff_Mul()
         powers = sp.powsimp(mono).as_powers_dict() if mono != 1 else {}
-        if coeff != 1 or any(b not in X or not sp.sympify(e).is_Integer for b, e in powers.items()):
+        if coeff != 1 or any(b not in X or not as_expr(e).is_Integer for b, e in powers.items()):
             continue
         lam = sp.simplify(2 * sum((int(e) * gens[X.index(b)] for b, e in powers.items()), sp.Integer(0)))
         mult[lam] = mult.get(lam, 0) + int(m)

@@ -44,6 +44,7 @@ from __future__ import annotations
 import sympy as sp
 
 from .level_dependent import H, LevelDependentScheme
+from ..algebra.reader import as_expr
 
 __all__ = ["taylor_rows", "prefill_taylor"]
 
@@ -136,7 +137,7 @@ def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
             if H not in c.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue
-            ser = _series(sp.sympify(c), J)
+            ser = _series(as_expr(c), J)
             if sp.simplify(ser[0] - c0) != 0:
                 return None
             rows.append((sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:]))

@@ -74,6 +74,7 @@ from ..result import CERTIFIED, NUMERICAL, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol, parse_coefficient
 from .balls import (_FUNCS, _ball, _fraction, _to_ball, arb_abs, ball, ball_to_interval,  # noqa: F401
                     workprec)
+from ..algebra.reader import as_expr, read_expression
 
 #: ``h = 2^-n``, the variable of all expansions.
 H = sp.Symbol("h", positive=True)
@@ -95,9 +96,10 @@ def to_h(expr) -> sp.Expr:
     >>> to_h("4**(-n) + 1/8**n")                 # bases that are powers of 2
     h**3 + h**2
     """
-    e = sp.sympify(expr)
     if isinstance(expr, str):
         e = parse_coefficient(expr, locals_={"n": N, "h": H})
+    else:
+        e = as_expr(expr)
     e = e.subs(sp.Symbol("n"), N).subs(sp.Symbol("h", positive=True), H)
     e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
     e = e.subs(2 ** N, 1 / H)
@@ -126,7 +128,7 @@ def entire_form(expr: sp.Expr) -> sp.Expr:
     >>> entire_form(sp.sin(3 * a * H / 4) / sp.sin(a * H))
     3*sinc(3*alpha*h/4)/(4*sinc(alpha*h))
     """
-    return sp.sympify(expr).replace(sp.sin, lambda u: u * sp.sinc(u)).replace(
+    return as_expr(expr).replace(sp.sin, lambda u: u * sp.sinc(u)).replace(
         sp.sinh, lambda u: u * sp.sinc(sp.I * u))
 
 
@@ -143,12 +145,9 @@ def _grows(e: sp.Expr) -> bool:
 def _read(text, defs: Mapping, what: str) -> sp.Expr:
     loc = {"n": N, "z": _Z, **{k.name: k for k in defs}}
     if isinstance(text, str):
-        try:
-            e = sp.sympify(text, rational=True, locals=loc)
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError):
-            raise AnalysisError(f"cannot read the {what} {text!r}") from None
+        e = read_expression(text, names=loc, what=f"the {what}")
     else:
-        e = sp.sympify(text).subs({sp.Symbol("n"): N})
+        e = as_expr(text).subs({sp.Symbol("n"): N})
     if not isinstance(e, sp.Expr) or e.has(sp.zoo, sp.nan, sp.oo):
         raise AnalysisError(f"the {what} {text!r} is not a finite formula")
     return e
@@ -258,9 +257,9 @@ class LevelDependentScheme:
         """
         entries: dict[int, sp.Expr] = {}
         for k, c in enumerate(even):
-            entries[-2 * (first + k)] = sp.sympify(c)
+            entries[-2 * (first + k)] = as_expr(c)
         for k, c in enumerate(odd):
-            entries[1 - 2 * (first + k)] = sp.sympify(c)
+            entries[1 - 2 * (first + k)] = as_expr(c)
         lo, hi = min(entries), max(entries)
         return cls(tuple(entries.get(i, sp.Integer(0)) for i in range(lo, hi + 1)), lo,
                    tuple(params), **kw)
@@ -306,7 +305,7 @@ class LevelDependentScheme:
 
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
-        coeffs = [to_h(sp.sympify(c).subs(defs)) for c in coeffs]
+        coeffs = [to_h(as_expr(c).subs(defs)) for c in coeffs]
         # h (2 + 1/h) -> 2h + 1; (cos(h) + 4/h^3)/(16/h^3) -> (h^3 cos(h) + 4)/16: no negative power of h is left
         coeffs = [sp.cancel(c) if c.is_rational_function(H) or _negative_h_power(c) else c for c in coeffs]
         while len(coeffs) > 1 and coeffs[-1] == 0:
@@ -347,7 +346,7 @@ class LevelDependentScheme:
 
     def subs(self, values: Mapping[str, Any]) -> "LevelDependentScheme":
         """The scheme with exact parameter values substituted (names as keys)."""
-        rep = {self._param(str(k)): parse_coefficient(v) if isinstance(v, str) else sp.sympify(v)
+        rep = {self._param(str(k)): parse_coefficient(v) if isinstance(v, str) else as_expr(v)
                for k, v in dict(values).items()}
         return LevelDependentScheme(tuple(c.subs(rep) for c in self.mask), self.start,
                                     tuple(p for p in self.params if p not in rep), slug=self.slug,

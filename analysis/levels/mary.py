@@ -76,6 +76,7 @@ from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import H, N as LEVEL, LevelDependentScheme, _read, ball_to_interval, distance, resolve_where
 from .divided import divide_by_q
 from .series import LevelNotFinite, _box_series, _parse_values, _same_support_box, _split, adaptive_boxes, smoothness
+from ..algebra.reader import as_expr
 
 __all__ = ["LevelDependentMary", "level_scheme_mary", "distance_mary", "weighted_series_mary",
            "weighted_series_boxes_mary", "difference_scheme_mary", "same_support_mary", "smoothness_levels_mary",
@@ -90,7 +91,7 @@ def to_h_mary(expr: sp.Expr, m: int) -> sp.Expr:
     >>> to_h_mary(sp.cos(sp.Symbol("theta") / 3 ** (LEVEL + 1)), 3)
     cos(h*theta/3)
     """
-    e = sp.sympify(expr).subs(sp.Symbol("n"), LEVEL)
+    e = as_expr(expr).subs(sp.Symbol("n"), LEVEL)
     e = e.subs(sp.Integer(m) ** LEVEL, 1 / H)
     if LEVEL in e.free_symbols:
         e = sp.powsimp(sp.expand_power_exp(e)).subs(sp.Integer(m) ** LEVEL, 1 / H)

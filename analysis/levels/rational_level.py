@@ -56,12 +56,13 @@ from .level_dependent import H, N, _Z, _grows, _read, resolve_where
 from ..algebra.symbol import LaurentSymbol
 from ..jsonable import fmt_upper
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 __all__ = ["RationalLevelScheme", "weighted_series_rational", "same_support_rational", "level_smoothness_rational"]
 
 
 def _in_n_and_h(c: sp.Expr) -> sp.Expr:
-    e = sp.sympify(c).subs(sp.Symbol("n"), N)
+    e = as_expr(c).subs(sp.Symbol("n"), N)
     e = sp.powsimp(sp.expand_power_exp(sp.expand(e))).subs(2 ** N, 1 / H)
     return e.subs(2 ** (-N), H)
 
@@ -86,8 +87,8 @@ class _Piece:
         """``A`` (arb) with ``|rho(n)| <= A n^-p`` for all ``n >= Nmin``, or ``None``."""
         # rho(1/u) u^-p = numrev(u) / denrev(u); all_coeffs() (highest degree first) are the
         # coefficients of the reversed polynomials in increasing powers of u = 1/n
-        nrev = [_ball(sp.sympify(x), {}, False) for x in self.num.all_coeffs()]
-        drev = [_ball(sp.sympify(x), {}, False) for x in self.den.all_coeffs()]
+        nrev = [_ball(as_expr(x), {}, False) for x in self.num.all_coeffs()]
+        drev = [_ball(as_expr(x), {}, False) for x in self.den.all_coeffs()]
         best = flint.arb(0)
         w = flint.arb(1) / (Nmin * parts)
         for i in range(parts):
@@ -172,7 +173,7 @@ class RationalLevelScheme:
     @classmethod
     def from_mask(cls, coeffs, start: int = 0, *, where=None, params=None, slug: str = "mask") -> "RationalLevelScheme":
         defs = resolve_where(where)
-        cs = [_read(c, defs, "coefficient").subs(defs) if isinstance(c, str) else sp.sympify(c) for c in coeffs]
+        cs = [_read(c, defs, "coefficient").subs(defs) if isinstance(c, str) else as_expr(c) for c in coeffs]
         if params:
             cs = [c.subs({sp.Symbol(k): v for k, v in params.items()}) for c in cs]
         cs = [sp.cancel(sp.together(_in_n_and_h(c))) for c in cs]
@@ -303,7 +304,7 @@ def same_support_rational(s: RationalLevelScheme, *, N_sum: int = 40) -> Result:
                 if g:
                     bad.append(f"a^n_{e} is not identically 0 while a_{e} = 0")
                 continue
-            L = _ball(sp.sympify(lim), {}, False)
+            L = _ball(as_expr(lim), {}, False)
             for n in range(N_sum):
                 v = L + s.level_values(n)[k]
                 if v.contains(0):

@@ -55,6 +55,7 @@ from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .level_dependent import LevelDependentScheme
 from .series import _dyn_levin_hypotheses, _dyn_levin_target, same_support, weighted_series
+from ..algebra.reader import as_expr
 
 
 def _covers(part, lo, hi) -> bool:
@@ -86,7 +87,7 @@ def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max:
     from ..algebra.factorization import smoothing_factor
     from ..stationary.normset import norm_solution_set
 
-    lo, hi = sp.sympify(lo), sp.sympify(hi)
+    lo, hi = as_expr(lo), as_expr(hi)
     if not bool(lo < hi):
         raise AnalysisError(f"empty open interval {name} in ({lo}, {hi})")
     k = smoothing_factor(a, exceptional=False).value

@@ -41,6 +41,7 @@ import sympy as sp
 from .bounds import _exact_zero
 from .level_dependent import H, LevelDependentScheme, _ball, _env_values, _to_ball, workprec
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 _Z = sp.Symbol("z")
 
@@ -56,7 +57,7 @@ def _exact_and_boxes(values) -> tuple[dict, dict]:
         if isinstance(v, (tuple, list)):
             if len(v) != 2:
                 raise AnalysisError(f"a box for {k} needs exactly two ends (LOW, HIGH)")
-            lo, hi = (sp.sympify(x, rational=True) if isinstance(x, str) else sp.sympify(x) for x in v)
+            lo, hi = (as_expr(x, what=f"end of the box of {k}") for x in v)
             if lo.free_symbols or hi.free_symbols or not bool(lo < hi):
                 raise AnalysisError(f"the box for {k} must be [LOW, HIGH] with numbers LOW < HIGH")
             boxes[str(k)] = (lo, hi)
@@ -87,7 +88,7 @@ def _prepare(s: LevelDependentScheme, values) -> tuple[LevelDependentScheme, dic
     exact, boxes = _exact_and_boxes(values)
     rep = {}
     if exact:
-        rep = {s._param(str(k)): sp.sympify(v) for k, v in exact.items()}
+        rep = {s._param(str(k)): as_expr(v) for k, v in exact.items()}
         s = s.subs(exact)
     for k in boxes:
         s._param(k)
@@ -119,7 +120,7 @@ def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values, *, arity: i
             with workprec(128):
                 env = {k: _to_ball(v, True) for k, v in pts.items()}
                 env["h"] = _to_ball(sp.Rational(1, arity ** n), True)
-                b = _ball(sp.sympify(expr), env, True)
+                b = _ball(as_expr(expr), env, True)
         except (AnalysisError, ZeroDivisionError):
             continue
         if b.is_finite() and not b.contains(0):
@@ -148,7 +149,7 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
     s, rep, boxes = _prepare(s, values)
     out = {}
     for lam in lambdas:
-        lam = sp.sympify(lam).subs(rep)
+        lam = as_expr(lam).subs(rep)
         e = _symbol(s, -sp.exp(-lam * H / 2))
         if _exact_zero(e):
             out[sp.sstr(lam)] = "identically 0"
@@ -161,7 +162,7 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
                           provenance={"method": "acb ball evaluation"})
         return Result(value=None, status=INCONCLUSIVE, witness={"lambda": lam, "statement": stmt},
                       provenance={"method": "no exact zero proof, no certified nonzero value"})
-    wit = {"generated": [sp.sstr(sp.sympify(x)) for x in lambdas], "conditions": out}
+    wit = {"generated": [sp.sstr(as_expr(x)) for x in lambdas], "conditions": out}
     if boxes:
         wit["box"] = {k: tuple(v) for k, v in boxes.items()}
     return Result(value=True, status=CERTIFIED, witness=wit,
@@ -182,7 +183,7 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
     a = s.limit()
     tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / 2)
     for lam in lambdas:
-        lam = sp.sympify(lam).subs(rep)
+        lam = as_expr(lam).subs(rep)
         e = _symbol(s, sp.exp(-lam * H / 2)) - 2 * sp.exp(-lam * tau * H / 2)
         if not _exact_zero(e):
             w = _certify_nonzero_in(e, s, boxes, depth)

@@ -53,6 +53,7 @@ from .bounds import _exact_zero
 from .level_dependent import H
 from .mary import LevelDependentMary
 from .reproduction import _certify_nonzero_in, _prepare as _prepare_binary
+from ..algebra.reader import as_expr
 
 __all__ = ["generation_mary", "reproduction_mary", "sub_symbols_mary"]
 
@@ -97,7 +98,7 @@ def generation_mary(s: LevelDependentMary, lambdas: Sequence, values: Mapping[st
     m = s.arity
     out = {}
     for lam in lambdas:
-        lam = sp.sympify(lam).subs(rep)
+        lam = as_expr(lam).subs(rep)
         A = sub_symbols_mary(s, sp.exp(-lam * H / m))
         for r in range(1, m):
             e = A[r] - A[0]
@@ -112,7 +113,7 @@ def generation_mary(s: LevelDependentMary, lambdas: Sequence, values: Mapping[st
             return Result(value=None, status=INCONCLUSIVE, witness={"lambda": lam, "statement": stmt, "residue": r},
                           provenance={"method": "no exact zero proof, no certified nonzero value", "arity": m})
         out[sp.sstr(lam)] = f"A_0 = ... = A_{m - 1} at w = exp(-lambda h/{m}) identically"
-    wit: dict[str, Any] = {"generated": [sp.sstr(sp.sympify(x)) for x in lambdas], "conditions": out, "arity": m}
+    wit: dict[str, Any] = {"generated": [sp.sstr(as_expr(x)) for x in lambdas], "conditions": out, "arity": m}
     if boxes:
         wit["box"] = {k: tuple(v) for k, v in boxes.items()}
     return Result(value=True, status=CERTIFIED, witness=wit,
@@ -137,7 +138,7 @@ def reproduction_mary(s: LevelDependentMary, lambdas: Sequence, values: Mapping[
     a = s.limit()
     tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / m)
     for lam in lambdas:
-        lam = sp.sympify(lam).subs(rep)
+        lam = as_expr(lam).subs(rep)
         w = sp.exp(-lam * H / m)
         e = sub_symbols_mary(s, w)[0] - w ** tau
         if not _exact_zero(e):

@@ -69,6 +69,7 @@ from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _re
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 from .divided import divided_difference, q_label
+from ..algebra.reader import as_expr
 
 
 def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
@@ -83,7 +84,7 @@ def _split(values: Mapping[str, Any], pieces: int) -> list[dict]:
     if not boxed:
         return [dict(values)]
     k = boxed[0]
-    lo, hi = (sp.sympify(x) for x in values[k])
+    lo, hi = (as_expr(x) for x in values[k])
     if not bool(lo < hi):
         raise AnalysisError(f"empty parameter box {k} = [{lo}, {hi}]: give LOW < HIGH")
     if pieces == 1:
@@ -106,7 +107,7 @@ def _check_sign(sym: sp.Symbol, name: str, value, boxed: bool) -> None:
     A closed box may touch the boundary of the declared domain (``alpha in [0, pi/3]`` for a
     positive ``alpha``): the enclosures are of the continuous extension (sinc form).
     """
-    x = sp.sympify(value)
+    x = as_expr(value)
     if x.free_symbols:
         return
     if not x.is_real:
@@ -132,7 +133,7 @@ def _parse_values(s: LevelDependentScheme, values) -> dict:
         if isinstance(v, (tuple, list)):
             if len(v) != 2:
                 raise AnalysisError(f"a box for {k} needs exactly two ends (LOW, HIGH)")
-            lo, hi = (sp.sympify(x) if not isinstance(x, str) else sp.sympify(x, rational=True) for x in v)
+            lo, hi = (as_expr(x, what=f"end of the box of {k}") for x in v)
             if not (lo.free_symbols or hi.free_symbols) and not bool(lo < hi):
                 raise AnalysisError(f"empty parameter box {k} = [{lo}, {hi}]: give LOW < HIGH")
             out[str(k)] = (lo, hi)

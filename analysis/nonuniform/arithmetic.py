@@ -27,6 +27,7 @@ import numpy as np
 import sympy as sp
 
 from ..result import AnalysisError
+from ..algebra.reader import as_expr
 
 ARITHMETICS = ("float", "mp", "iv", "exact")
 
@@ -86,7 +87,7 @@ class _Arith:
                 raise AnalysisError("the data or parameters contain NaN or infinite values")
             return f
         if isinstance(x, str):
-            x = sp.sympify(x, rational=True)
+            x = as_expr(x, what="value")
         if self.name == "exact":
             if isinstance(x, float):
                 if not math.isfinite(x):
@@ -96,7 +97,7 @@ class _Arith:
                 return sp.Rational(x.numerator, x.denominator)
             if isinstance(x, np.generic):
                 x = x.item()
-            e = sp.sympify(x)
+            e = as_expr(x)
             if not e.is_real or e.free_symbols:
                 raise AnalysisError(f"exact arithmetic needs real numbers, not {x!r}")
             return e

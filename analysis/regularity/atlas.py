@@ -76,6 +76,7 @@ import sympy as sp
 
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol, parse_coefficient
+from ..algebra.reader import as_expr
 
 __all__ = ["holder_atlas", "plot_atlas", "evaluate_point", "parse_axis", "DEFAULT_J_LEVELS"]
 
@@ -145,7 +146,7 @@ def parse_axis(text: str) -> tuple[str, sp.Rational, sp.Rational, int]:
 @functools.lru_cache(maxsize=16)
 def _rebuild(mask: tuple[str, ...], start: int, names: tuple[str, ...]) -> LaurentSymbol:
     params = tuple(sp.Symbol(n) for n in names)
-    coeffs = [sp.sympify(c) for c in mask]  # srepr strings: exact, names are Symbol('...')
+    coeffs = [as_expr(c) for c in mask]  # srepr strings: exact, names are Symbol('...')
     return LaurentSymbol.from_mask(coeffs, start=start, params=params)
 
 
@@ -347,7 +348,7 @@ def _exceptional(symbol: LaurentSymbol) -> list[dict]:
     def walk(cases, acc):
         for c in cases:
             cond = dict(acc)
-            cond.update({k: sp.sympify(v).subs(acc) for k, v in c["condition"].items()})
+            cond.update({k: as_expr(v).subs(acc) for k, v in c["condition"].items()})
             cond = {k: sp.simplify(v.subs(cond)) for k, v in cond.items()}
             out.append({"condition": {str(k): v for k, v in cond.items()}, "factors": c.get("k")})
             walk(c.get("exceptional", []), cond)
@@ -667,7 +668,7 @@ def plot_atlas(result: Result, path, *, title: str | None = None, cmap: str = "v
     (xlo, xhi), (ylo, yhi) = [tuple(float(v) for v in grid[k]["range"]) for k in ("p1", "p2")]
     drew = False
     for ex in result.witness.get("exceptional", []):
-        cond = {k: sp.sympify(v) for k, v in ex["condition"].items()}
+        cond = {k: as_expr(v) for k, v in ex["condition"].items()}
         sym = {n1: sp.Symbol(n1), n2: sp.Symbol(n2)}
         if len(cond) == 1:
             (name, expr), = cond.items()

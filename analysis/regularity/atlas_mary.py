@@ -38,6 +38,7 @@ from ..algebra.mary import check_arity, smoothing_factor_mary
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError
 from .mary import difference_mask_mary, holder_exponent_mary, smoothness_mary
+from ..algebra.reader import as_expr
 
 __all__ = ["evaluate_point_mary", "generic_k_mary", "exceptional_mary"]
 
@@ -91,5 +92,5 @@ def exceptional_mary(symbol: LaurentSymbol, m: int) -> list[dict]:
         f = smoothing_factor_mary(symbol, m)
     except AnalysisError:  # pragma: no cover - defensive
         return []
-    return [{"condition": {str(k): sp.sympify(v) for k, v in c["condition"].items()}, "factors": c.get("k")}
+    return [{"condition": {str(k): as_expr(v) for k, v in c["condition"].items()}, "factors": c.get("k")}
             for c in f.witness.get("exceptional", [])]

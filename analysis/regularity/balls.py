@@ -18,6 +18,7 @@ from ..algebra.factorization import smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, AnalysisError, Result
 from .convergence import log2_interval
+from ..algebra.reader import as_expr
 
 
 def ball_divide_by_one_plus_z(coeffs: Sequence[Any], times: int = 1) -> list:
@@ -153,7 +154,7 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
         N = sum_rules if sum_rules is not None else smoothing_factor(scheme, exceptional=False).value
         prec = prec if prec is not None else 128 + 4 * N
         with flint.ctx.workprec(prec + 64):
-            balls = [sympy_to_arb(sp.sympify(x)) for x in scheme.mask]
+            balls = [sympy_to_arb(as_expr(x)) for x in scheme.mask]
         source = "exact symbol enclosed in balls"
     elif hasattr(scheme, "enclosure") and callable(scheme.enclosure):
         N = sum_rules if sum_rules is not None else getattr(scheme, "sum_rules", None)

@@ -50,6 +50,7 @@ from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.difference import difference_symbol
 from ..stationary.mary import difference_symbol_mary
 from ..stationary.normbox import ParametricNorm
+from ..algebra.reader import as_expr
 
 
 def _dyadic_between(x: RealAlgebraic, y: RealAlgebraic) -> sp.Rational:
@@ -117,11 +118,11 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     if param is not None and str(param) != p.name:
         raise AnalysisError(f"unknown parameter {str(param)!r} (the scheme's parameter is {p.name})")
     am = difference_symbol(a, j + 1) if arity == 2 else difference_symbol_mary(a, j + 1, arity)
-    A, B = RealAlgebraic.from_expr(sp.sympify(lo)), RealAlgebraic.from_expr(sp.sympify(hi))
+    A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     if A.compare(B) >= 0:
         raise AnalysisError("the interval is empty")
     width = float(B) - float(A)
-    min_width = sp.Rational(sp.nsimplify(min_width)) if min_width is not None else None
+    min_width = sp.Rational(sp.nsimplify(as_expr(min_width))) if min_width is not None else None
     min_w = float(min_width) if min_width is not None else width / 2 ** 14
     norms = _Norms(am, p, L_max, arity)
     t0 = time.time()

@@ -51,6 +51,7 @@ from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.mary import difference_norm_mary, transition_matrices_mary
 from .convergence import NotConvergent
+from ..algebra.reader import as_expr
 
 iv = mpmath.iv
 
@@ -341,7 +342,7 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     k = smoothing_factor_mary(a, m, exceptional=False).value - 1
     if j > k:
         raise AnalysisError(f"the family has only {k + 1} factors q_{m} identically: C^{j} needs {j + 1}")
-    lo, hi = (sp.sympify(w) for w in within)
+    lo, hi = (as_expr(w) for w in within)
     box = sp.Interval(lo, hi, left_open=True, right_open=True)
     S: sp.Set = sp.EmptySet
     per_L = {}
@@ -388,7 +389,7 @@ def alpha_curve_mary(a: LaurentSymbol, m: int, param=None, *, within=(-1, 1), sa
 
     m = check_arity(m)
     p = _parameter(a, param)
-    lo, hi = (sp.Rational(sp.nsimplify(w)) for w in within)
+    lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
     rows = []
     for i in range(samples + 1):
         q = lo + (hi - lo) * sp.Rational(i, samples)

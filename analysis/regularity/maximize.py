@@ -63,6 +63,7 @@ import sympy as sp
 from ..algebra.factorization import factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
+from ..algebra.reader import as_expr
 from .balls import ball_transition_matrices
 from .holder import holder_exponent
 
@@ -322,10 +323,10 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
             return Result(value=None, status=INCONCLUSIVE, provenance={
                 "method": "one-parameter box search",
                 "message": f"family too large to maximise: {len(params)} free parameters; fix all but {p.name}"})
-    lo, hi = (sp.Rational(sp.nsimplify(x)) for x in within)
+    lo, hi = (sp.Rational(sp.nsimplify(as_expr(x))) for x in within)
     if not lo < hi:
         raise AnalysisError("the box needs low < high")
-    gap = sp.Rational(sp.nsimplify(gap))
+    gap = sp.Rational(sp.nsimplify(as_expr(gap)))
     F = _Family(a, p)
     # 1. float search
     xs = np.linspace(float(lo), float(hi), grid + 1)

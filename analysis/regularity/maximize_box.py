@@ -58,6 +58,7 @@ from ..algebra.mary import factor_out_mary, smoothing_factor_mary
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.mary import transition_matrices_mary
+from ..algebra.reader import as_expr
 
 __all__ = ["maximize_holder_box"]
 
@@ -179,7 +180,7 @@ def _parse_box(a: LaurentSymbol, box) -> tuple[tuple, list]:
     params = tuple(names[str(k)] for k in box)
     out = []
     for k in box:
-        lo, hi = (sp.Rational(sp.nsimplify(x)) for x in box[k])
+        lo, hi = (sp.Rational(sp.nsimplify(as_expr(x))) for x in box[k])
         if not lo < hi:
             raise AnalysisError(f"the range of {k} needs low < high")
         out.append((lo, hi))
@@ -204,7 +205,7 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
         value = None if r.value is None else {params[0].name: r.value}
         return Result(value=value, lower=r.lower, upper=r.upper, status=r.status,
                       witness={**r.witness, "box": {params[0].name: B[0]}}, provenance=r.provenance)
-    gap = sp.Rational(sp.nsimplify(gap))
+    gap = sp.Rational(sp.nsimplify(as_expr(gap)))
     F = _BoxFamily(a, params, arity)
     d = len(params)
     L = max_length or (6 if arity == 2 else 4 if arity == 3 else 3)
@@ -321,7 +322,7 @@ def _exceptional_part(a, e, params, B, arity, gap, budget):
     (p, f), = cond.items()
     others = [q for q in params if q != p]
     i = params.index(p)
-    f = sp.sympify(f)
+    f = as_expr(f)
     if not others:                                   # a point
         if not f.is_Rational or not (B[i][0] <= f <= B[i][1]):
             return None if f.is_real and not (B[i][0] <= f <= B[i][1]) else \

@@ -50,6 +50,7 @@ from ..stationary.difference import difference_symbol
 from ..stationary.normset import norm_solution_set
 from ..stationary.transition import transition_matrices
 from .holder import holder_exponent, smoothness, word_product
+from ..algebra.reader import as_expr
 
 
 def _single_parameter(a: LaurentSymbol, param) -> sp.Symbol:
@@ -116,7 +117,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     gives the certified part and the strips left (next to ends of eigenvalue type).
     """
     p = _single_parameter(a, param)
-    lo, hi = (sp.Rational(sp.nsimplify(w)) for w in within)
+    lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
     if not lo < hi:
         raise AnalysisError("within needs low < high")
     pts = [lo + (hi - lo) * sp.Rational(i, grid) for i in range(grid + 1)]
@@ -189,7 +190,7 @@ def _run_interior(a, p, j, run, L_max, budget, strip_seconds: float = 30.0) -> b
         else:
             ends.append((b.get("certified_C^j_at", b.get("open_end")), False))
     (lo, lo_open), (hi, hi_open) = ends
-    if lo is None or hi is None or not sp.sympify(lo) < sp.sympify(hi):
+    if lo is None or hi is None or not as_expr(lo) < as_expr(hi):
         run["interior"] = None
         return False
     try:
@@ -294,7 +295,7 @@ def alpha_curve(a: LaurentSymbol, param=None, *, within=(-1, 1), samples: int = 
                 budget_seconds: float = 10.0) -> Result:
     """Certified enclosures of alpha(p) at ``samples + 1`` rational points (for a figure)."""
     p = _single_parameter(a, param)
-    lo, hi = (sp.Rational(sp.nsimplify(w)) for w in within)
+    lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
     rows = []
     for i in range(samples + 1):
         q = lo + (hi - lo) * sp.Rational(i, samples)
@@ -388,7 +389,7 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
     p = a.params[0]
     if param is not None and str(param) != p.name:
         raise AnalysisError(f"unknown parameter {str(param)!r} (the scheme's parameter is {p.name})")
-    lo, hi = (RealAlgebraic.from_expr(sp.sympify(x)) for x in interval)
+    lo, hi = (RealAlgebraic.from_expr(as_expr(x)) for x in interval)
     if lo.compare(hi) >= 0:
         raise AnalysisError("the claimed interval is empty")
     # 1. exact norm sets

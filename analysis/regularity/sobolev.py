@@ -78,6 +78,7 @@ import sympy as sp
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .stability import ball_mask, stable_shifts
 from ..algebra.symbol import LaurentSymbol, Z
+from ..algebra.reader import as_expr
 
 
 # --------------------------------------------------------------------------------------------
@@ -151,7 +152,7 @@ def _arb_roots_exact_poly(mu: sp.Poly):
     for prec in (128, 256, 512, 1024, 2048):
         try:
             with flint.ctx.workprec(prec):
-                coeffs = [flint.acb(sympy_to_arb(sp.sympify(dom.to_sympy(c)))) for c in reversed(sq.rep.to_list())]
+                coeffs = [flint.acb(sympy_to_arb(as_expr(dom.to_sympy(c)))) for c in reversed(sq.rep.to_list())]
                 roots = flint.acb_poly(coeffs).roots(tol=flint.arb(2) ** (40 - prec))
                 return roots, f"acb_poly.roots of the squarefree part at {prec} bits"
         except ValueError:

@@ -80,6 +80,7 @@ import sympy as sp
 
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol, Z
+from ..algebra.reader import as_expr
 
 _T = sp.Symbol("t", real=True)
 
@@ -139,7 +140,7 @@ def _real_roots_exist(D: sp.Poly) -> tuple[bool | None, str]:
     for prec in (128, 256, 512, 1024):
         try:
             with flint.ctx.workprec(prec):
-                coeffs = [flint.acb(sympy_to_arb(sp.sympify(sq.domain.to_sympy(c))))
+                coeffs = [flint.acb(sympy_to_arb(as_expr(sq.domain.to_sympy(c))))
                           for c in reversed(sq.rep.to_list())]
                 roots = flint.acb_poly(coeffs).roots()
         except (ValueError, NoEnclosure):
@@ -175,7 +176,7 @@ def unit_circle_zero(H: sp.Poly) -> tuple[bool | None, str]:
     t = _T
     expr = sp.Integer(0)
     for (k,), c in H.terms():
-        expr += sp.sympify(c) * (1 + sp.I * t) ** k * (1 - sp.I * t) ** (m - k)
+        expr += as_expr(c) * (1 + sp.I * t) ** k * (1 - sp.I * t) ** (m - k)
     expr = sp.expand(expr)
     R = expr.subs(sp.I, 0)
     I = sp.expand((expr - R) / sp.I)

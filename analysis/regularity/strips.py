@@ -21,7 +21,7 @@ Examples
 >>> from analysis.algebra.symbol import LaurentSymbol
 >>> from analysis.stationary.difference import difference_symbol
 >>> t = sp.Symbol("t1")
->>> a = LaurentSymbol.from_mask(sp.sympify("t1,0,-3*t1-1/16,0,2*t1+9/16,1,2*t1+9/16,0,-3*t1-1/16,0,t1".split(",")), start=-5)
+>>> a = LaurentSymbol.from_mask("t1,0,-3*t1-1/16,0,2*t1+9/16,1,2*t1+9/16,0,-3*t1-1/16,0,t1".split(","), start=-5)
 >>> ts = sp.CRootOf(524288*t**5 - 65536*t**4 + 12800*t**3 - 352*t**2 + 61*t - 3, 0)
 >>> r = close_strip(difference_symbol(a, 3), t, sp.Rational(5860, 131072), ts, hi_open=True)   # C^2 up to t*
 >>> r["closed"], r["word"], r["mu"], r["pieces"][-1]["to"] == sp.sstr(ts)
@@ -107,6 +107,7 @@ from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
 from ..algebra.mary import check_arity
 from ..stationary.mary import transition_matrices_mary
+from ..algebra.reader import as_expr
 
 PREC = 128
 
@@ -264,7 +265,7 @@ def _krawczyk(PiA, xt: np.ndarray, lam: float, m: int):
 
 class _Strip:
     def __init__(self, am: LaurentSymbol, p: sp.Symbol, arity: int = 2):
-        c = LaurentSymbol.from_mask([sp.expand(sp.sympify(x) / arity) for x in am.mask], start=am.start)
+        c = LaurentSymbol.from_mask([sp.expand(as_expr(x) / arity) for x in am.mask], start=am.start)
         self.p, self.arity = p, arity
         R, self.mus, J = _restricted(c, p, arity)
         self.mu = self.mus[0] if self.mus else None
@@ -540,7 +541,7 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
 
 def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, arity) -> dict:
     t0 = time.time()
-    A, B = RealAlgebraic.from_expr(sp.sympify(lo)), RealAlgebraic.from_expr(sp.sympify(hi))
+    A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     S = _Strip(am, p, check_arity(arity))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)

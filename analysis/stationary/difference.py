@@ -47,6 +47,7 @@ from ..algebra.algebraic import sign
 from ..algebra.factorization import factor_out
 from ..result import CERTIFIED, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
+from ..algebra.reader import as_expr
 
 SPELLINGS = ("divided", "paper")
 
@@ -151,7 +152,7 @@ def scheme_norm(a: LaurentSymbol, L: int = 1, *, scale=1) -> Result:
     """
     if not isinstance(L, int) or L < 1:
         raise AnalysisError(f"L must be a positive integer, not {L!r}")
-    scale = sp.sympify(scale)
+    scale = as_expr(scale)
     if a.is_numeric and (a.domain.is_QQ or a.domain.is_ZZ):
         fsums, _ = _rational_residue_sums(a, L)
         arg = max(range(len(fsums)), key=fsums.__getitem__)

@@ -57,6 +57,7 @@ from ..algebra.algebraic import sign
 from ..algebra.mary import check_arity, factor_out_mary
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, AnalysisError, Result
+from ..algebra.reader import as_expr
 
 SPELLINGS = ("divided", "paper")
 
@@ -139,7 +140,7 @@ def scheme_norm_mary(a: LaurentSymbol, L: int, m: int, *, scale=1) -> Result:
     m = check_arity(m)
     if not isinstance(L, int) or L < 1:
         raise AnalysisError(f"L must be a positive integer, not {L!r}")
-    scale = sp.sympify(scale)
+    scale = as_expr(scale)
     sums = [sp.expand(scale ** L * s) for s in residue_sums_mary(a, L, m)]
     best, arg = sums[0], 0
     for i, v in enumerate(sums[1:], start=1):

@@ -69,6 +69,7 @@ import sympy as sp
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..result import AnalysisError
+from ..algebra.reader import as_expr
 
 
 def _fr(q) -> Fraction:
@@ -121,7 +122,7 @@ class ParametricNorm:
         self.L, self.arity, self.p = L, arity, p
         polys = []
         for c in am.mask:
-            c = sp.sympify(c)
+            c = as_expr(c)
             if c.free_symbols - {p}:
                 raise AnalysisError(f"the coefficients must depend on {p.name} only")
             try:

@@ -49,6 +49,7 @@ from .difference import difference_symbol, iterated_symbol
 from .mary import difference_symbol_mary, iterated_symbol_mary
 from ..result import CERTIFIED, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
+from ..algebra.reader import as_expr
 
 
 @dataclass(frozen=True)
@@ -153,7 +154,7 @@ def _cell_polys(by_res, q) -> tuple:
 
 
 def _bound_to_algebraic(x) -> RealAlgebraic | None:
-    x = sp.sympify(x)
+    x = as_expr(x)
     if x in (sp.oo, -sp.oo):
         return None
     return RealAlgebraic.from_expr(x)
@@ -237,7 +238,7 @@ def norm_solution_set(a: LaurentSymbol, m: int, L: int, param=None, *, spelling:
     sol = IntervalSet.from_members(members)
     return Result(value=sol, status=CERTIFIED,
                   witness={"pieces": pieces, "bound": bound, "m": m, "L": L, "parameter": p.name,
-                           "within": tuple(sp.sympify(w) for w in within), "spelling": spelling,
+                           "within": tuple(as_expr(w) for w in within), "spelling": spelling,
                            "difference_symbol": fn.witness["difference_symbol"],
                            "implies": f"C^{m - 1} on the set (Dyn-Levin norm test)"},
                   provenance={"method": "exact piecewise-polynomial norm and real root isolation",

@@ -83,6 +83,7 @@ import sympy as sp
 
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
+from ..algebra.reader import as_expr
 
 try:  # python-flint: fast exact rationals (a declared dependency); Fraction works without it
     from flint import fmpq as _Q, fmpq_poly as _QPoly
@@ -588,7 +589,7 @@ def basic_limit_function(a: LaurentSymbol, level: int, *, exact: bool = False, c
         total = sum(a.mask)
         if total == 0:
             raise AnalysisError("centre=True needs a mask with a(1) != 0")
-        shift = sp.sympify(sum(i * c for i, c in a.items()) / total)
+        shift = as_expr(sum(i * c for i, c in a.items()) / total)
     if exact:
         coeffs = [_exact_coefficient(c) for c in a.mask]
         if _QPoly is not None:
@@ -621,5 +622,5 @@ def basic_limit_function(a: LaurentSymbol, level: int, *, exact: bool = False, c
         up = np.zeros(2 * len(v) - 1)
         up[::2] = v
         v = np.convolve(up, mask)
-    x = (np.arange(lo, lo + size, dtype=np.float64) + _float_coefficient(sp.sympify(shift))) / scale
+    x = (np.arange(lo, lo + size, dtype=np.float64) + _float_coefficient(as_expr(shift))) / scale
     return x, v

@@ -13,6 +13,7 @@ from analysis import claims as C
 from analysis import nonuniform as nu
 
 from .identities import _s, bspline_special_case, exponential_evidence
+from analysis.algebra.reader import as_expr
 
 _LOW, _HIGH = sp.Rational(1, 100), sp.Integer(100)     # the u0 range of the certified constants
 
@@ -256,7 +257,7 @@ def _v_17():
     ev = [C.Evidence("(11) at z = 1", result=r, latex=r"a_2(z)=\frac{1+(1+2u)z+(1+2u)z^2+z^3}{2(1+u)z}",
                      table=(("quantity", "printed", "exact"),) + tuple(
                          (k, str(w["printed_(17)"][k]), w["exact"][k]) for k in ("a(1)", "a'(1)", "a''(1)")))]
-    nums = [C.Number("a(1)", sp.sympify(w["exact"]["a(1)"])), C.Number("a'(1)", sp.sympify(w["exact"]["a'(1)"])),
+    nums = [C.Number("a(1)", as_expr(w["exact"]["a(1)"])), C.Number("a'(1)", as_expr(w["exact"]["a'(1)"])),
             C.Number("a''(1)", w["exact"]["a''(1)"])]
     exact = "; ".join(f"{k} = {w['exact'][k]}" for k in ("a(1)", "a'(1)", "a''(1)"))
     if r.status == "refuted":
@@ -273,7 +274,7 @@ def _v_b_of_z():
     r, w = _sym()
     ev = [C.Evidence("engine result", result=r, text=f"b(-1) = {w['b(-1)']}; |b(-1)| = 2|1-u|/(1+u) (the printed "
                      "form drops the absolute value for u > 1) = 8 x the coefficient distance of (12)")]
-    nums = [C.Number("b(-1)", sp.sympify(w["b(-1)"]))]
+    nums = [C.Number("b(-1)", as_expr(w["b(-1)"]))]
     if w["b(z)_equals_printed"]:
         return C.certified("True: b(z) = 2 a_2(z)/(1+z) = (1 + 2uz + z^2)/(z(1+u)) and |b(-1)| = 2|1-u|/(1+u) "
                            "= 8 x the coefficient distance (12) (the printed form drops the absolute value).",

@@ -14,6 +14,7 @@ import functools
 import sympy as sp
 
 from schemes.seed003 import TRIGONOMETRIC
+from analysis.algebra.reader import as_expr
 
 _OM_HI = (sp.sqrt(6) - 1) / 80          # the paper's right end (sqrt(6) - 1)/80
 _VALS = {"alpha": sp.pi / 5, "omega": sp.Rational(1, 100)}
@@ -21,7 +22,7 @@ _C2_PROVEN_HI = sp.Rational(1, 50)        # C^2 of rule (1) is proven on all of 
 
 
 def _s(x) -> str:
-    return sp.sstr(sp.sympify(x))
+    return sp.sstr(as_expr(x))
 
 
 def _f(x, d: int = 10) -> str:

@@ -17,6 +17,7 @@ import sympy as sp
 
 from analysis import claims as C
 from schemes.seed004 import A_3_6, OMEGA, RULE_3_6, _from
+from analysis.algebra.reader import as_expr
 
 #: the printed 10x10 matrix after (3.6), its labels row after row (lost minus signs)
 PRINTED_MATRIX = ("a5a3a1a1a3a50000a6a4a2a0a2a400000a5a3a1a1a3a50000a6a4a2a0a2a400000a5a3a1a1a3a5"
@@ -24,7 +25,7 @@ PRINTED_MATRIX = ("a5a3a1a1a3a50000a6a4a2a0a2a400000a5a3a1a1a3a50000a6a4a2a0a2a4
 
 
 def _s(x) -> str:
-    return sp.sstr(sp.sympify(x))
+    return sp.sstr(as_expr(x))
 
 
 def _matrix_rows_printed():

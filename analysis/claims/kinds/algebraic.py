@@ -42,12 +42,13 @@ from ...stationary.mary import basic_limit_support_mary, local_eigenvalues_mary
 from ...stationary.transition import basic_limit_support, local_eigenvalues
 from ..model import Number, Verdict, exact_result
 from .base import Kind, evidence, parse_number
+from ...algebra.reader import as_expr, read_in_context
 
 __all__ = ["MaskIdentity", "SumRules", "Symmetry", "Support", "Eigenvalues", "Reproduction"]
 
 
 def _same(x, y) -> bool:
-    return sp.simplify(sp.sympify(x) - sp.sympify(y)) == 0
+    return sp.simplify(as_expr(x) - as_expr(y)) == 0
 
 
 def _cond_text(cond) -> str:
@@ -85,7 +86,10 @@ class MaskIdentity(Kind):
         if not isinstance(sub, dict) or set(sub) - set(names):
             raise AnalysisError(f"{self.where}: 'substitute' is {{ parameter = \"expression\" }} over the "
                                 f"parameters {', '.join(sorted(names))}")
-        return {names[k]: sp.sympify(str(v), rational=True, locals=names) for k, v in sub.items()}
+        try:
+            return {names[k]: read_in_context(v, names, what=f"substitute {k}", free=True) for k, v in sub.items()}
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
 
     def printed(self) -> tuple[LaurentSymbol, str]:
         f = self.fields
@@ -285,9 +289,9 @@ class Eigenvalues(Kind):
         self.claimed = []
         for x in self.get("eigenvalues"):
             try:
-                self.claimed.append(sp.sympify(str(x), rational=True, locals=loc))
-            except (sp.SympifyError, SyntaxError, TypeError):
-                raise AnalysisError(f"{self.where}: cannot read the eigenvalue {x!r}") from None
+                self.claimed.append(read_in_context(x, loc, what="eigenvalue", free=True))
+            except AnalysisError as exc:
+                raise AnalysisError(f"{self.where}: {exc}") from None
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
@@ -307,7 +311,7 @@ class Eigenvalues(Kind):
         ev = [evidence("exact characteristic polynomial of the local subdivision matrix", r,
                        text=f"window {r.witness['window']}; spectrum {text}")]
         nums = [Number("matrix size", len(spectrum) + sum(m for _, m in r.witness.get("implicit", ()))),
-                Number("largest eigenvalue", spectrum[0]) if spectrum and not sp.sympify(spectrum[0]).free_symbols
+                Number("largest eigenvalue", spectrum[0]) if spectrum and not as_expr(spectrum[0]).free_symbols
                 else Number("eigenvalues found", len(spectrum))]
         if missing or (self.get("complete") and rest):
             why = (f"not eigenvalues (or with lower multiplicity): {', '.join(map(sp.sstr, missing))}" if missing

@@ -37,6 +37,7 @@ import sympy as sp
 from ...algebra.symbol import LaurentSymbol, parse_coefficient
 from ...result import AnalysisError, Result
 from ..model import Evidence, Number, Verdict, certified, inconclusive, refuted
+from ...algebra.reader import as_expr
 
 __all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence"]
 
@@ -99,7 +100,7 @@ def interval_text(lo, hi, lc=False, hc=False) -> str:
 def _ra(x):
     from ...algebra.algebraic import RealAlgebraic
 
-    return RealAlgebraic.from_expr(sp.sympify(x))
+    return RealAlgebraic.from_expr(as_expr(x))
 
 
 def _compare(x, y) -> int:
@@ -107,7 +108,7 @@ def _compare(x, y) -> int:
     exact zero test and an Arb ball at up to 256 bits)."""
     from ...algebra.algebraic import RealAlgebraic
 
-    x, y = sp.sympify(x), sp.sympify(y)
+    x, y = as_expr(x), as_expr(y)
     try:
         return RealAlgebraic.from_expr(x).compare(RealAlgebraic.from_expr(y))
     except Exception:   # not algebraic (pi/5, exp(1), ...): exact zero test, then a ball
@@ -156,7 +157,7 @@ class Domain:
         >>> d.contains("pi/5"), d.contains("pi/3"), d.contains("sqrt(2)/2"), d.contains(-1)
         (True, False, True, False)
         """
-        v = sp.sympify(v)
+        v = as_expr(v)
         if self.lo != -sp.oo:
             c = _compare(v, self.lo)
             if c < 0 or (c == 0 and not self.lo_closed):

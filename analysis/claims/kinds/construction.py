@@ -49,6 +49,7 @@ from ...algebra.symbol import parse_coefficient
 from ...result import AnalysisError
 from ..model import Evidence, Number, Verdict, exact_result
 from .base import Kind, evidence
+from ...algebra.reader import read_in_context
 
 __all__ = ["Construction"]
 
@@ -84,8 +85,11 @@ class Construction(Kind):
             self.w = [{int(s): parse_coefficient(v, locals_=names) for s, v in wt[k].items()} for k in ("even", "odd")]
         except (ValueError, TypeError, AttributeError, AnalysisError) as exc:
             raise AnalysisError(f"{self.where}: cannot read 'weights': {exc}") from None
-        self.sub = {names[k]: sp.sympify(str(v), rational=True, locals=names)
-                    for k, v in (self.get("substitute") or {}).items() if k in names}
+        try:
+            self.sub = {names[k]: read_in_context(v, names, what=f"substitute {k}", free=True)
+                        for k, v in (self.get("substitute") or {}).items() if k in names}
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         if set(self.get("substitute") or {}) - set(names):
             raise AnalysisError(f"{self.where}: 'substitute' names a parameter the scheme does not have")
         for c in self.get("cases", []):
@@ -108,8 +112,11 @@ class Construction(Kind):
             if n in text:
                 text = text.replace(n, f"F{k}_")
                 slots[sp.Symbol(f"F{k}_")] = built[n]
-        expr = sp.expand(sp.sympify(text, rational=True, locals={**{p.name: p for p in self.scheme.params},
-                                                                **{str(s): s for s in slots}}))
+        try:
+            expr = sp.expand(read_in_context(text, {**{p.name: p for p in self.scheme.params},
+                                                    **{str(s): s for s in slots}}, what=f"form {name}", free=True))
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         out = LinearForm({})
         for s, form in slots.items():
             out = out + form * expr.coeff(s)

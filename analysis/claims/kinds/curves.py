@@ -48,6 +48,7 @@ import sympy as sp
 from ...levels.reproduction import CURVES, _curve, curve_deviation, generation, refine_closed
 from ...result import AnalysisError
 from ..model import Figure, Number, Series, Verdict
+from ...algebra.reader import read_in_context
 from .base import Kind, evidence, parse_number
 
 __all__ = ["CurveComparison"]
@@ -166,7 +167,10 @@ class CurveComparison(Kind):
         for c in (x for x in self.get("compare") if x["scheme"] in g.get("schemes", [])):
             lv = self.schemes[c["scheme"]].level
             loc = {p.name: p for p in lv.params}
-            lams = [sp.sympify(str(x), locals=loc) for x in g["lambdas"]]
+            try:
+                lams = [read_in_context(x, loc, what="lambda", free=True) for x in g["lambdas"]]
+            except AnalysisError as exc:
+                raise AnalysisError(f"{self.where}: {exc}") from None
             for v in (g.get("vary", [None]) if self._varies(c) else [None]):
                 vals = {self.vary_name: parse_number(v)} if v is not None else None
                 r = generation(lv, lams, vals)

@@ -63,6 +63,7 @@ from ...levels.level_dependent import H, N, to_h
 from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ..model import Number, Verdict
 from .base import Kind, evidence, parse_interval, parse_number
+from ...algebra.reader import as_expr, read_in_context
 
 __all__ = ["Inequality", "Identity", "Factorization"]
 
@@ -128,9 +129,9 @@ class _Expressions(Kind):
         if "limit" in loc and isinstance(loc["limit"], _LazyLimit) and "limit" in str(text):
             loc["limit"] = loc["limit"].value()
         try:
-            e = sp.sympify(str(text), rational=True, locals=loc)
-        except (sp.SympifyError, SyntaxError, TypeError, ValueError, AttributeError, IndexError) as exc:
-            raise AnalysisError(f"{self.where}: cannot read {what} {text!r} ({type(exc).__name__})") from None
+            e = read_in_context(text, loc, what=what, free=True)
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         if not isinstance(e, sp.Expr):
             raise AnalysisError(f"{self.where}: {what} {text!r} is not an expression")
         unknown = sorted(x.name for x in e.free_symbols if x.name not in loc)
@@ -317,9 +318,9 @@ class Inequality(_Expressions):
         box = self._box(self.get("box"))
         loc = {"n": N, "h": H, **{k: sp.Symbol(k, real=True) for k in box}}
         try:
-            lhs, rhs = (sp.sympify(str(self.get(x)), rational=True, locals=loc) for x in ("lhs", "rhs"))
-        except (sp.SympifyError, SyntaxError, TypeError):
-            raise AnalysisError(f"{self.where}: cannot read lhs/rhs") from None
+            lhs, rhs = (read_in_context(self.get(x), loc, what=x, free=True) for x in ("lhs", "rhs"))
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         r = check_inequality(lhs, rhs, self.get("n0", 0), box, strict=bool(self.get("strict", False)))
         stmt = r.witness["statement"]
         if r.status == CERTIFIED:
@@ -367,11 +368,11 @@ class Identity(_Expressions):
         if not self.ranges:
             return check_identity(lhs, rhs, claim=label)
         names = list(self.ranges)
-        syms = {x.name: x for x in (sp.sympify(lhs).free_symbols | sp.sympify(rhs).free_symbols)}
+        syms = {x.name: x for x in (as_expr(lhs).free_symbols | as_expr(rhs).free_symbols)}
         rows, bad = [], None
         for vals in itertools.product(*self.ranges.values()):
             sub = {syms[k]: v for k, v in zip(names, vals) if k in syms}
-            a, b = sp.simplify(sp.sympify(lhs).subs(sub)), sp.simplify(sp.sympify(rhs).subs(sub))
+            a, b = sp.simplify(as_expr(lhs).subs(sub)), sp.simplify(as_expr(rhs).subs(sub))
             ok = sp.simplify(a - b) == 0
             rows.append(tuple(map(str, vals)) + (_s(a), _s(b), "yes" if ok else "NO"))
             if not ok and bad is None:

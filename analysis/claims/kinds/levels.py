@@ -43,6 +43,7 @@ from ...levels.reproduction import generation, reproduction
 from ...levels.series import weighted_series
 from ...result import CERTIFIED, AnalysisError
 from ..model import Number, Verdict
+from ...algebra.reader import read_in_context
 from .base import Kind, evidence, parse_interval, parse_number
 
 __all__ = ["WeightedSeries", "AsymptoticEquivalence", "ExponentialReproduction"]
@@ -147,7 +148,10 @@ class ExponentialReproduction(_LevelKind):
     def evaluate(self) -> Verdict:
         s = self.level()
         loc = {p.name: p for p in s.params}
-        lams = [sp.sympify(str(x), locals=loc) for x in self.get("lambdas")]
+        try:
+            lams = [read_in_context(x, loc, what="lambda", free=True) for x in self.get("lambdas")]
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: {exc}") from None
         vals = self.level_values()
         if self.arity == 2:
             fn = reproduction if self.get("reproduction") else generation

@@ -41,15 +41,16 @@ from ...algebra.factorization import symmetry
 from ...result import AnalysisError
 from ..model import Number, Verdict, exact_result
 from .base import Kind, evidence
+from ...algebra.reader import as_expr
 
 __all__ = ["LimitSymmetry"]
 
 
 def centre_type(c) -> str:
     """``primal`` (integer centre), ``dual`` (half-integer) or the centre modulo 1."""
-    if sp.sympify(c).is_integer:
+    if as_expr(c).is_integer:
         return "primal"
-    if sp.sympify(2 * c).is_integer:
+    if as_expr(2 * c).is_integer:
         return "dual"
     return f"neither (centre in Z + {sp.sstr(c - sp.floor(c))})"
 

@@ -49,6 +49,7 @@ from ...result import AnalysisError
 from ..model import Evidence, Number, Verdict, contains_interval, exact_result, exact_set
 from .base import Kind, evidence, interval_text
 from .spectral import set_numbers
+from ...algebra.reader import as_expr
 
 __all__ = ["EndRules", "Gibbs", "zeta_conditions"]
 
@@ -112,7 +113,7 @@ class EndRules(Kind):
                      parse_coefficient(text, locals_={p.name: p for p in self.scheme.params}))
             except (ValueError, AnalysisError) as exc:
                 raise AnalysisError(f"{self.where}: cannot read the printed coefficient {text!r}: {exc}") from None
-            extra = sorted({x.name for x in sp.sympify(r).free_symbols} - names)
+            extra = sorted({x.name for x in as_expr(r).free_symbols} - names)
             if extra:
                 raise AnalysisError(f"{self.where}: unknown parameter {extra[0]!r} in the printed coefficient {text!r}")
         self.scheme.values(self.get("check_at"), self.where)
@@ -225,7 +226,7 @@ def zeta_conditions(a, k: int) -> dict:
 def _nonneg_set(exprs, p):
     exprs = list(exprs)
     polys = [sp.Poly(e, p) for e in exprs if e.free_symbols]
-    return exact_set(lambda v: all(sign(sp.sympify(e).subs(p, v)) >= 0 for e in exprs), polys)
+    return exact_set(lambda v: all(sign(as_expr(e).subs(p, v)) >= 0 for e in exprs), polys)
 
 
 class Gibbs(Kind):

@@ -55,12 +55,13 @@ from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothnes
 from ...result import CERTIFIED, REFUTED, AnalysisError
 from ..model import Number, Verdict
 from .base import Kind, evidence, interval_text, parse_interval, alpha_maximum
+from ...algebra.reader import as_expr
 
 __all__ = ["SmoothnessProfile", "boundary_text", "run_matches", "which_set"]
 
 
 def _ra(x) -> RealAlgebraic:
-    return RealAlgebraic.from_expr(sp.sympify(x))
+    return RealAlgebraic.from_expr(as_expr(x))
 
 
 def boundary_text(b: dict) -> str:
@@ -133,7 +134,7 @@ def _exceptional(a, p, lo, hi) -> dict:
     for e in w:
         cond = e.get("condition", {})
         q = cond.get(p) if len(cond) == 1 else None
-        if q is not None and sp.sympify(q).is_Rational and lo < q < hi:
+        if q is not None and as_expr(q).is_Rational and lo < q < hi:
             out[sp.Rational(q)] = e["k"]
     return out
 
@@ -152,13 +153,13 @@ def _interior_status(r) -> str:
 
 
 def _num(x) -> str:
-    x = sp.sympify(x)
+    x = as_expr(x)
     return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ≈ {float(sp.N(x, 20)):.10g}"
 
 
 def _short(b: dict) -> str:
     v = _value(b)
-    return sp.sstr(v) if sp.sympify(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
+    return sp.sstr(v) if as_expr(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
 
 
 class SmoothnessProfile(Kind):

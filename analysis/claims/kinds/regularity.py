@@ -44,6 +44,7 @@ from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ...stationary.normset import norm_solution_set
 from ..model import Number, Verdict, contains_interval
 from .base import Kind, evidence, interval_text
+from ...algebra.reader import as_expr
 
 __all__ = ["NormTest", "CkRange", "Holder", "Sobolev", "enclosure_text", "compare_enclosure"]
 
@@ -66,7 +67,7 @@ def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -
         return None, "no certified enclosure"
     if isinstance(lo, float) or isinstance(hi, float) or isinstance(lo, sp.Float) or isinstance(hi, sp.Float):
         return None, "the enclosure is given in floats (not exact end points): not decided"
-    lo, hi = sp.sympify(lo), sp.sympify(hi)              # exact: Fractions, Rationals, algebraic numbers
+    lo, hi = as_expr(lo), as_expr(hi)              # exact: Fractions, Rationals, algebraic numbers
     want_lo, want_hi = lower, upper
     if value is not None:
         t = tol or 0

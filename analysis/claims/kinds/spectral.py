@@ -56,6 +56,7 @@ from ...result import AnalysisError
 from ...stationary.transition import LAMBDA, local_eigenvalues
 from ..model import Number, Verdict, contains_interval, exact_result, exact_set
 from .base import Kind, evidence, interval_text
+from ...algebra.reader import as_expr, read_in_context
 
 __all__ = ["EigenvalueInequality", "stable_in_disk", "set_numbers", "moduli_chain_set"]
 
@@ -88,7 +89,7 @@ def _stable_at(factors, p, r, v) -> bool:
     def reduce(c):
         return (c if isinstance(c, sp.Poly) else sp.Poly(c, x, domain=sp.QQ)).rem(m)
     for f in factors:
-        coeffs = [sp.Poly(sp.sympify(c).subs(p, x), x, domain=sp.QQ)
+        coeffs = [sp.Poly(as_expr(c).subs(p, x), x, domain=sp.QQ)
                   for c in reversed(sp.Poly(f.as_expr(), LAMBDA).all_coeffs())]
         if not stable_in_disk(coeffs, r, sign=ra.sign_of, reduce=reduce):
             return False
@@ -110,7 +111,7 @@ def _radical_parts(e, p):
 def _modulus2(parts, v):
     """|u + c sqrt(D)|^2 at ``p = v`` (exact closed form; a negative D gives a complex pair)."""
     (u, c, D), p = parts
-    u, c, D = (sp.sympify(x).subs(p, v) for x in (u, c, D))
+    u, c, D = (as_expr(x).subs(p, v) for x in (u, c, D))
     if c == 0 or sign(D) >= 0:
         return sp.expand((u + c * sp.sqrt(D)) ** 2)
     return sp.expand(u ** 2 - c ** 2 * D)
@@ -135,7 +136,7 @@ def moduli_chain_set(exprs, p, within=(-sp.oo, sp.oo)):
     >>> print(moduli_chain_set([sp.Rational(1, 64), -7 * mu / 32], mu))
     (-1/14, 1/14)
     """
-    parts = [_radical_parts(sp.sympify(e), p) for e in exprs]
+    parts = [_radical_parts(as_expr(e), p) for e in exprs]
     rad = {}
     for _, c, D in parts:
         if c != 0:
@@ -151,7 +152,7 @@ def moduli_chain_set(exprs, p, within=(-sp.oo, sp.oo)):
             for real_b in (True, False):
                 G = M(k, real_a) - M(k + 1, real_b)
                 crit.append(_eliminate(G, [(r, D) for D, r in rad.items() if G.has(r)]))
-    polys = [sp.Poly(x, p) for x in crit if sp.sympify(x).has(p)]
+    polys = [sp.Poly(x, p) for x in crit if as_expr(x).has(p)]
 
     def pred(v):
         m = [_modulus2((q, p), v) for q in parts]
@@ -181,9 +182,9 @@ class EigenvalueInequality(Kind):
             raise AnalysisError(f"{self.where}: field 'relation' must be 'inside' or 'equal'")
         names = {p.name: p for p in self.scheme.params}
         try:
-            self.moduli = [sp.sympify(str(x), rational=True, locals=names) for x in self.get("moduli", [])]
-        except (sp.SympifyError, SyntaxError, TypeError):
-            raise AnalysisError(f"{self.where}: cannot read the field 'moduli'") from None
+            self.moduli = [read_in_context(x, names, what="modulus", free=True) for x in self.get("moduli", [])]
+        except AnalysisError as exc:
+            raise AnalysisError(f"{self.where}: field 'moduli': {exc}") from None
         if "moduli" in self.fields and len(self.moduli) < 2:
             raise AnalysisError(f"{self.where}: field 'moduli' lists at least two eigenvalues")
 
