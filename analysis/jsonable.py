@@ -19,7 +19,6 @@ from fractions import Fraction
 from typing import Any
 
 import sympy as sp
-from .algebra.reader import as_expr
 
 
 def jsonable(obj: Any) -> Any:
@@ -54,9 +53,26 @@ def jsonable(obj: Any) -> Any:
     return str(obj)
 
 
+def _own_value(x: Any):
+    """A sympy object for one of our own values (a sympy object, int, Fraction, float, or a
+    rational's text such as ``"1/3"``); text is never parsed as a formula here (user text goes
+    through :mod:`analysis.algebra.reader`)."""
+    if isinstance(x, sp.Basic):
+        return x
+    if isinstance(x, str):
+        try:
+            f = Fraction(x.strip())
+        except ValueError:
+            raise ValueError(f"not a number: {x[:40]!r}") from None
+        return sp.Rational(f.numerator, f.denominator)
+    if isinstance(x, (list, tuple, dict, set)):
+        raise ValueError(f"not a number: a {type(x).__name__}")
+    return sp.sympify(x, strict=True)
+
+
 def exact_and_float(x: Any) -> dict:
     """``{"exact": "...", "float": 0.123}`` for a real exact number ``x``."""
-    x = as_expr(x)
+    x = _own_value(x)
     out: dict = {"exact": sp.sstr(x)}
     if x.is_real and x.is_number:
         out["float"] = float(sp.N(x, 20))
@@ -92,7 +108,7 @@ def _as_fraction(x: Any, side: str) -> Fraction:
             return _as_fraction(x.item(), side)
     except ImportError:  # pragma: no cover
         pass
-    e = as_expr(x)
+    e = _own_value(x)
     if e.is_Rational:
         return Fraction(int(e.p), int(e.q))
     if isinstance(e, sp.Float):

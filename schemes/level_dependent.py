@@ -34,6 +34,7 @@ interpolating algorithms*, J. Comput. Appl. Math. 224 (2009) 383-396.
 from __future__ import annotations
 
 import difflib
+from collections.abc import Mapping
 
 import sympy as sp
 
@@ -69,31 +70,50 @@ def _degree(d, v):
 _VH = sp.cosh(T * H / 2)
 _VT = sp.cos(T * H / 2)
 
-EXP_CHAIKIN_HYP = _from_symbol(_chaikin(_VH), "exp-chaikin-hyp", "hyperbolic exponential Chaikin", _VH)
-EXP_CHAIKIN_TRIG = _from_symbol(_chaikin(_VT), "exp-chaikin-trig", "trigonometric exponential Chaikin", _VT)
-EXP_CUBIC_HYP = _from_symbol(_cubic(_VH), "exp-cubic-hyp", "hyperbolic exponential cubic B-spline", _VH)
-EXP_CUBIC_TRIG = _from_symbol(_cubic(_VT), "exp-cubic-trig", "trigonometric exponential cubic B-spline", _VT)
+class LazyEntries(Mapping):
+    """Catalogue entries by slug, each built on first use (building one simplifies its symbolic
+    coefficients, about half a second: a command that needs one entry, or only the names, does
+    not pay for all of them)."""
 
-EXP_QUARTIC_HYP = _from_symbol(_degree(4, _VH), "exp-quartic-hyp", "hyperbolic exponential quartic B-spline", _VH, 3)
-EXP_QUARTIC_TRIG = _from_symbol(_degree(4, _VT), "exp-quartic-trig", "trigonometric exponential quartic B-spline",
-                                _VT, 3)
-EXP_QUINTIC_HYP = _from_symbol(_degree(5, _VH), "exp-quintic-hyp", "hyperbolic exponential quintic B-spline", _VH, 3)
-EXP_QUINTIC_TRIG = _from_symbol(_degree(5, _VT), "exp-quintic-trig", "trigonometric exponential quintic B-spline",
-                                _VT, 3)
+    def __init__(self, factories: dict):
+        self._factories = dict(factories)
+        self._built: dict = {}
 
-ENTRIES = {e.slug: e for e in (EXP_CHAIKIN_HYP, EXP_CHAIKIN_TRIG, EXP_CUBIC_HYP, EXP_CUBIC_TRIG,
-                               EXP_QUARTIC_HYP, EXP_QUARTIC_TRIG, EXP_QUINTIC_HYP, EXP_QUINTIC_TRIG)}
+    def __getitem__(self, slug):
+        if slug not in self._built:
+            self._built[slug] = self._factories[slug]()
+        return self._built[slug]
+
+    def __iter__(self):
+        return iter(self._factories)
+
+    def __len__(self) -> int:
+        return len(self._factories)
 
 
-def _registry() -> dict[str, LevelDependentScheme]:
+_KINDS = {"hyp": (_VH, "hyperbolic"), "trig": (_VT, "trigonometric")}
+_SHAPES = {"chaikin": (_chaikin, "Chaikin", 2), "cubic": (_cubic, "cubic B-spline", 2),
+           "quartic": (lambda v: _degree(4, v), "quartic B-spline", 3),
+           "quintic": (lambda v: _degree(5, v), "quintic B-spline", 3)}
+
+ENTRIES = LazyEntries({
+    f"exp-{shape}-{kind}": (lambda f=f, v=v, shape=shape, kind=kind, t=t, w=w, s=s:
+                            _from_symbol(f(v), f"exp-{shape}-{kind}", f"{w} exponential {t}", v, s))
+    for shape, (f, t, s) in _SHAPES.items() for kind, (v, w) in _KINDS.items()})
+
+
+def _registry() -> Mapping[str, LevelDependentScheme]:
     from . import seed003
 
-    return {**ENTRIES, **seed003.LEVEL_ENTRIES}
+    return LazyEntries({**{k: (lambda k=k: ENTRIES[k]) for k in ENTRIES},
+                        **{k: (lambda k=k: seed003.LEVEL_ENTRIES[k]) for k in seed003.LEVEL_ENTRIES}})
 
 
 def names() -> list[str]:
-    """Slugs of all level-dependent schemes."""
-    return list(_registry())
+    """Slugs of all level-dependent schemes (nothing is built)."""
+    from . import seed003
+
+    return [*ENTRIES, *seed003.LEVEL_ENTRIES]
 
 
 def get(slug: str) -> LevelDependentScheme:

@@ -40,7 +40,7 @@ from analysis.levels.level_dependent import H, LevelDependentScheme
 from analysis.levels.mary import LevelDependentMary
 from analysis.result import AnalysisError
 
-from .level_dependent import lookup
+from .level_dependent import LazyEntries, lookup
 
 #: the frequency / tension parameter (as in :mod:`schemes.level_dependent`)
 T = sp.Symbol("t", positive=True)
@@ -83,8 +83,8 @@ def exponential_bspline_mary(m: int, d: int, kind: str) -> LevelDependentMary:
         notes=f"v = exp(lambda {m}^-(n+1))", defaults={"t": 1}), m)
 
 
-MARY_ENTRIES = {e.slug: e for e in (exponential_bspline_mary(m, d, k) for m in (3, 4) for d in (1, 2, 3)
-                                    for k in ("trig", "hyp"))}
+MARY_ENTRIES = LazyEntries({f"{_NAMES[m]}-exp-bspline-{d}-{k}": (lambda m=m, d=d, k=k: exponential_bspline_mary(m, d, k))
+                            for m in (3, 4) for d in (1, 2, 3) for k in ("trig", "hyp")})
 
 
 def get_mary(slug: str) -> LevelDependentMary:

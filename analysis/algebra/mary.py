@@ -48,6 +48,7 @@ from __future__ import annotations
 
 import sympy as sp
 
+from .reader import LIMITS, InputError
 from ..result import CERTIFIED, AnalysisError, Result
 from .symbol import LaurentSymbol, Z
 from .factorization import exceptional_cases
@@ -77,6 +78,8 @@ def check_arity(m) -> int:
             raise AnalysisError(f"the arity must be an integer >= 2, not {m!r}") from None
     if m < 2:
         raise AnalysisError(f"the arity must be an integer >= 2, not {m!r}")
+    if m > LIMITS.arity:
+        raise InputError(f"the arity {m} exceeds the limit {LIMITS.arity} (limit 'arity')", "limit")
     return m
 
 

@@ -16,8 +16,10 @@ Grammar
 * the names the context allows (``z``, the level ``n``, ``h``, declared parameters, ``--where``
   names) and, where free parameters are expected, any other plain name (``omega``, ``w``, ``t1``);
 * the constants ``pi``, ``E``, ``I`` (and ``oo`` where an interval end may be infinite);
-* the functions of :data:`FUNCTIONS` (``sqrt``, ``cos``, ``sinh``, ``log``, ``Abs``, ...) and the
-  ones a context adds (e.g. ``a(k)``, a mask coefficient, in a paper's lemma).
+* the functions of :data:`FUNCTIONS` (``sqrt``, ``cos``, ``sinh``, ``log``, ``Abs``, ...;
+  ``diff(EXPR, NAME)`` and ``subs(EXPR, NAME, VALUE, ...)``) and the ones a context adds (e.g.
+  ``a(k)``, a mask coefficient, in a paper's lemma); ``CRootOf(POLYNOMIAL, k)``, the form in which a
+  computer algebra system prints a root of a rational polynomial.
 
 Nothing else: no attributes, subscripts, keywords, lambdas, comprehensions, strings,
 comparisons or ``//``. Sizes are limited (:data:`LIMITS`); a text over a limit is an error that
@@ -110,6 +112,10 @@ class Limits:
     degree: int = 2_000
     #: characters of a name
     name: int = 64
+    #: coefficients of a mask, entries of a stencil, values of a list typed in one option
+    coefficients: int = 1_000
+    #: the arity m of an m-ary scheme (transition operators have m matrices of size ~ support/(m-1))
+    arity: int = 32
 
 
 #: The limits of :func:`read_expression`; the README's input grammar lists them.
@@ -130,6 +136,13 @@ def _diff(expr, var):
     return sp.diff(expr, var)
 
 
+def _subs(expr, *pairs):
+    names, values = pairs[0::2], pairs[1::2]
+    if not all(isinstance(v, sp.Symbol) for v in names):
+        raise InputError("subs(EXPR, NAME, VALUE, ...): give names and values in turn, e.g. subs(a(0), h, 1)", "value")
+    return expr.subs(dict(zip(names, values)))
+
+
 #: Named functions every formula may use: name -> (function, allowed numbers of arguments).
 FUNCTIONS: dict[str, tuple[Callable, tuple[int, ...]]] = {
     "sqrt": (_sqrt, (1,)), "cbrt": (sp.cbrt, (1,)), "root": (sp.root, (2,)),
@@ -146,7 +159,7 @@ FUNCTIONS: dict[str, tuple[Callable, tuple[int, ...]]] = {
     "Min": (sp.Min, tuple(range(1, 33))), "Max": (sp.Max, tuple(range(1, 33))),
     "min": (sp.Min, tuple(range(1, 33))), "max": (sp.Max, tuple(range(1, 33))),
     "re": (sp.re, (1,)), "im": (sp.im, (1,)), "conjugate": (sp.conjugate, (1,)),
-    "diff": (_diff, (2,)),
+    "diff": (_diff, (2,)), "subs": (_subs, (3, 5, 7, 9)),
 }
 
 #: Constants every formula may use.
@@ -315,6 +328,29 @@ class _Reader:
                 self.limit("degree", "the degree", d, self.limits.degree)
         return self.check(r)
 
+    def crootof(self, node: ast.Call, depth: int) -> sp.Expr:
+        """``CRootOf(POLY, k)``: the k-th root of a rational polynomial in one variable of its own
+        (the form a computer algebra system prints a closed form in)."""
+        if len(node.args) != 2 or node.keywords:
+            self.fail("write CRootOf(POLYNOMIAL, INDEX), e.g. CRootOf(x**3 - x - 1, 0)")
+        inner = _Reader(self.text, {}, True, self.functions, self.what, False, self.limits, self.hint)
+        inner.src = self.src
+        poly_expr = inner.build(node.args[0], depth + 1)
+        index = self.build(node.args[1], depth + 1)
+        syms = poly_expr.free_symbols
+        if len(syms) != 1 or not index.is_Integer:
+            self.fail("CRootOf(POLYNOMIAL, INDEX) needs a polynomial in one variable and an integer index", "value")
+        try:
+            P = sp.Poly(poly_expr, *syms, domain=sp.QQ)
+        except (sp.PolynomialError, sp.CoercionFailed, sp.GeneratorsError):
+            self.fail("CRootOf needs a polynomial with rational coefficients", "value")
+        if not 1 <= P.degree() <= 256:
+            self.limit("degree", "the degree of the CRootOf polynomial", P.degree(), 256)
+        k = int(index)
+        if not -P.degree() <= k < P.degree():
+            self.fail(f"CRootOf index {k}: a polynomial of degree {P.degree()} has roots 0..{P.degree() - 1}", "value")
+        return sp.CRootOf(P.as_expr(), k)
+
     # ------------------------------------------------------------------ the walk
     def run(self) -> sp.Expr:
         text = self.text
@@ -351,11 +387,11 @@ class _Reader:
             return "'=' is not part of a formula (give NAME=VALUE only where an option asks for it)"
         return f"not a formula ({exc.msg})"
 
-    def build(self, root: ast.AST) -> sp.Expr:
+    def build(self, root: ast.AST, depth: int = 1) -> sp.Expr:
         """Post-order walk with an explicit stack; chains of + - and * / are flattened."""
         # stack items: (node, depth, state); results go on `out`
         out: list[sp.Expr] = []
-        stack: list[tuple] = [("visit", root, 1)]
+        stack: list[tuple] = [("visit", root, depth)]
         while stack:
             item = stack.pop()
             if item[0] == "visit":
@@ -425,6 +461,9 @@ class _Reader:
             stack.append(("apply", apply_chain))
             for t in reversed(terms):
                 stack.append(("visit", t, depth + 1))
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in ("CRootOf", "RootOf") \
+                and node.func.id not in self.names:
+            out.append(self.crootof(node, depth))
         elif isinstance(node, ast.Call):
             f = node.func
             if not isinstance(f, ast.Name) or f.id not in self.functions:

@@ -26,7 +26,7 @@ from .kinds import KIND_CLASSES
 
 __all__ = ["template"]
 
-HEADER = '''# A paper file for `subdiv report FILE.toml` / `subdiv check FILE.toml` (issue 11).
+HEADER = '''# A paper file for `subdiv report FILE.toml` / `subdiv check FILE.toml`.
 # Numbers are exact: "1/16", "(sqrt(5)-1)/8", "0.25" (read as 1/4). Intervals: "(a, b)", "[a, b)".
 # Our convention: (S_a f)_i = sum_j a_(i-2j) f_j, a(z) = sum_i a_i z^i.
 

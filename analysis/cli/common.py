@@ -36,10 +36,24 @@ class _Parser(argparse.ArgumentParser):
 # scheme input
 # --------------------------------------------------------------------------------------------
 
+def short(text, width: int = 60) -> str:
+    """``repr`` of a user's text for a message, cut to ``width`` characters."""
+    t = str(text)
+    return repr(t if len(t) <= width else t[:width - 3] + "...")
+
+
 def _split_list(text: str, what: str) -> list[str]:
+    from ..algebra.reader import LIMITS, InputError
+
+    t = text.strip()
+    if t[:1] == "[" and t[-1:] == "]":
+        raise AnalysisError(f"malformed {what} {short(text)}: drop the brackets, e.g. \"1/4,3/4,3/4,1/4\"")
     items = [t.strip() for t in text.replace(";", ",").split(",")]
     if not text.strip() or any(not t for t in items):
-        raise AnalysisError(f"malformed {what} {text!r}: give comma-separated numbers, e.g. \"1/4,3/4,3/4,1/4\"")
+        raise AnalysisError(f"malformed {what} {short(text)}: give comma-separated numbers, e.g. \"1/4,3/4,3/4,1/4\"")
+    if len(items) > LIMITS.coefficients:
+        raise InputError(f"{what} has {len(items)} entries: the limit is {LIMITS.coefficients} (limit 'coefficients')",
+                         "limit")
     return items
 
 
@@ -60,11 +74,28 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
             raise AnalysisError(f"malformed parameter name {name!r}")
         if name in out:
             raise AnalysisError(f"--param {name} is given twice ({sp.sstr(out[name])} and {value}): give it once")
-        v = parse_coefficient(value)
-        if v.free_symbols:
-            raise AnalysisError(f"the value of {name} must be a number, not {value!r}")
-        out[name] = v
+        out[name] = read_number(value, f"--param {name}")
     return out
+
+
+def read_number(text: str, what: str, *, real: bool = True, infinity: bool = False) -> sp.Expr:
+    """An exact number typed on the command line (``1/100``, ``(sqrt(6)-1)/80``, ``0.25``): no free
+    names; real unless ``real=False``; ``oo``/``-oo`` only when ``infinity``.
+
+    >>> read_number("(sqrt(6)-1)/80", "--param w")
+    -1/80 + sqrt(6)/80
+    >>> read_number("I", "--param w")
+    Traceback (most recent call last):
+    ...
+    analysis.algebra.reader.InputError: --param w must be a real number, not I
+    """
+    from ..algebra.reader import InputError, read_expression
+
+    v = read_expression(text, what=what, free=False, allow_infinity=infinity,
+                        hint="a number is expected here (e.g. 1/16, sqrt(2)/4, 0.0625)")
+    if real and not (v.is_real or (infinity and v.is_infinite and v.is_extended_real)):
+        raise InputError(f"{what} must be a real number, not {sp.sstr(v)}", "value")
+    return v
 
 
 def _catalogue_arity(name: str, level: bool = False) -> int:
@@ -110,6 +141,23 @@ def scheme_arity(args, level: bool = False) -> int:
         if given is not None and given != own:
             raise AnalysisError(f"scheme {args.scheme!r} has arity {own}; drop --arity or give --arity {own}")
     return own if given is None else given
+
+
+def require_values(symbol, label: str, command: str) -> None:
+    """A one-line error when the scheme still has free names but the command needs numbers: a name
+    in a typed mask is most often a typo (``-1/l6``), a catalogue parameter needs ``--param``."""
+    if not getattr(symbol, "params", ()):
+        return
+    names = [p.name for p in symbol.params]
+    one = names[0]
+    if label in ("mask", "rules", "symbol"):
+        raise AnalysisError(f"unknown name{'s' if len(names) > 1 else ''} {', '.join(map(repr, names))} in the "
+                            f"{label}: `subdiv {command}` needs numbers; give --param {one}=VALUE, or correct the typo")
+    raise AnalysisError(f"{label} has the parameter{'s' if len(names) > 1 else ''} {', '.join(names)}: `subdiv {command}` "
+                        f"needs values, e.g. --param {one}=1/16 (C^k for a range of values: subdiv range --C K --param-name {one})"
+                        if command in ("holder",) else
+                        f"{label} has the parameter{'s' if len(names) > 1 else ''} {', '.join(names)}: "
+                        f"`subdiv {command}` needs values, e.g. --param {one}=1/16")
 
 
 def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, str]:
@@ -159,6 +207,50 @@ def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, st
     if params:
         symbol = symbol.subs(params)
     return symbol, label
+
+
+def read_points(args):
+    """``--points "x,y;x,y;..."`` (exact numbers) or ``--points-file FILE`` (whitespace or .csv; floats)."""
+    import numpy as np
+
+    if (args.points is None) == (args.points_file is None):
+        raise AnalysisError("give the data with exactly one of --points \"x,y;x,y;...\" or --points-file FILE")
+    if args.points is not None:
+        rows = [r for r in args.points.split(";") if r.strip()]
+        if not rows:
+            raise AnalysisError("--points is empty")
+        if len(rows) > MAX_POINTS:
+            raise AnalysisError(f"--points has {len(rows)} points: the limit is {MAX_POINTS} (use --points-file)")
+        data = [[read_number(v, "--points") for v in r.split(",")] for r in rows]
+        widths = {len(r) for r in data}
+        if len(widths) != 1:
+            raise AnalysisError("every point in --points needs the same number of coordinates")
+        if any(v.free_symbols for r in data for v in r):
+            raise AnalysisError("--points must be numbers")
+        return data
+    try:
+        size = os.path.getsize(args.points_file)
+        if size > MAX_POINTS_FILE_BYTES:
+            raise AnalysisError(f"--points-file {args.points_file} has {size} bytes: the limit is {MAX_POINTS_FILE_BYTES}")
+        arr = np.loadtxt(args.points_file, delimiter=None if not args.points_file.endswith(".csv") else ",", ndmin=2)
+    except (OSError, ValueError) as exc:
+        raise AnalysisError(f"cannot read {args.points_file}: {exc}") from None
+    if not np.all(np.isfinite(arr)):
+        raise AnalysisError(f"{args.points_file} contains NaN or infinite values")
+    return arr
+
+
+#: Most points ``--points`` may list, most bytes of a ``--points-file``, most points a refinement may produce.
+MAX_POINTS = 100_000
+MAX_POINTS_FILE_BYTES = 50_000_000
+MAX_REFINED_POINTS = 10_000_000
+
+
+def check_refined_size(n_points: int, arity: int, steps: int) -> None:
+    """A one-line error when ``steps`` refinements of ``n_points`` points would exceed :data:`MAX_REFINED_POINTS`."""
+    if n_points * arity ** steps > MAX_REFINED_POINTS:
+        raise AnalysisError(f"{steps} steps of arity {arity} from {n_points} points give about {n_points * arity ** steps} "
+                            f"points: the limit is {MAX_REFINED_POINTS}; give fewer --steps")
 
 
 def _add_scheme_args(p: argparse.ArgumentParser) -> None:
@@ -232,17 +324,7 @@ def _parse_within(text: str | None):
     parts = [t.strip() for t in text.split(",")]
     if len(parts) != 2:
         raise AnalysisError(f"malformed --within {text!r}: use LOW,HIGH, e.g. 0,oo")
-    vals = []
-    for t in parts:
-        if t in ("oo", "+oo", "inf", "+inf"):
-            vals.append(sp.oo)
-        elif t in ("-oo", "-inf"):
-            vals.append(-sp.oo)
-        else:
-            v = parse_coefficient(t)
-            if v.free_symbols:
-                raise AnalysisError(f"--within bounds must be numbers, not {t!r}")
-            vals.append(v)
+    vals = [read_number(t, "--within", infinity=True) for t in parts]
     if vals[0] >= vals[1]:
         raise AnalysisError("--within needs LOW < HIGH")
     return tuple(vals)

@@ -17,7 +17,7 @@ analysis.result.AnalysisError: --C must be an integer, not 'x'
 
 from __future__ import annotations
 
-from ..algebra.symbol import parse_coefficient
+from .common import read_number
 from ..result import AnalysisError
 from .common import _parse_params
 
@@ -38,9 +38,7 @@ def parse_boxes(items, example: str = "alpha=1/10,pi/3") -> dict:
         if "=" not in item or "," not in item:
             raise AnalysisError(f"malformed --box {item!r}: use NAME=LOW,HIGH, e.g. {example}")
         name, rng = (x.strip() for x in item.split("=", 1))
-        lo, hi = (parse_coefficient(x.strip()) for x in rng.split(",", 1))
-        if lo.free_symbols or hi.free_symbols:
-            raise AnalysisError(f"the box for {name} must have numeric ends")
+        lo, hi = (read_number(x.strip(), f"--box {name}") for x in rng.split(",", 1))
         if name in out:
             raise AnalysisError(f"--box {name} is given twice: give it once")
         out[name] = (lo, hi)

@@ -291,7 +291,7 @@ def register(sub) -> None:
     s.add_argument("--open", metavar="NAME", help="with --C: the limit's parameter; its box is read as an open "
                                                   "interval (exact norm set for the limit)")
     _add_inline(s)
-    s.add_argument("--arity", metavar="M", help="m-ary level-dependent scheme, level through M^n (issue 12)")
+    s.add_argument("--arity", metavar="M", help="m-ary level-dependent scheme, level through M^n")
     s.add_argument("--json", action="store_true")
     s.set_defaults(func=cmd_series)
 

@@ -95,6 +95,8 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
 
     def fail(message: str, kind: str, code: int) -> int:
         message = " ".join(str(message).split())           # one line, whatever the source said
+        if len(message) > 600:                               # a message never repeats a huge input
+            message = message[:400] + " ... " + message[-150:]
         print(f"subdiv: error: {message}" if code == 2 else f"subdiv: internal error: {message}", file=sys.stderr)
         if want_json:
             try:

@@ -132,10 +132,15 @@ def cmd_refine(args, m: int) -> None:
     if args.output:
         check_writable(args.output, "--output")
     a, label, _ = _input(args, m)
-    data = _read_points_mary(args)
+    from .common import read_points
+
+    data = read_points(args)
     steps = _int_arg(args.steps, "--steps")
     if steps < 0 or steps > 12:
         raise AnalysisError("--steps must be between 0 and 12 with --arity")
+    from .common import check_refined_size
+
+    check_refined_size(len(data), m, steps)
     if args.exact:
         if any(not as_expr(v).is_Rational for row in data for v in np.atleast_1d(row)):
             raise AnalysisError("--exact refinement needs rational data")
@@ -156,30 +161,6 @@ def cmd_refine(args, m: int) -> None:
                                [", ".join(str(v) for v in r) for r in rows]))
     _emit(args, {"scheme": label, "arity": m, "steps": steps, "closed": not args.open,
                  "end_rule": args.end_rule if args.open else None, "count": len(out), "points": rows}, text)
-
-
-def _read_points_mary(args):
-    """``--points "x,y;x,y"`` (exact numbers) or ``--points-file FILE`` (whitespace or .csv; floats), as the
-    binary ``subdiv refine`` reads them."""
-    import numpy as np
-
-    from ..algebra.symbol import parse_coefficient
-
-    if (args.points is None) == (getattr(args, "points_file", None) is None):
-        raise AnalysisError("give the data with exactly one of --points \"x,y;x,y;...\" or --points-file FILE")
-    if args.points is not None:
-        rows = [r for r in args.points.split(";") if r.strip()]
-        try:
-            data = [[parse_coefficient(v) for v in r.split(",")] for r in rows]
-        except AnalysisError as exc:
-            raise AnalysisError(f"malformed --points: {exc}") from None
-        if not data or len({len(r) for r in data}) != 1 or any(v.free_symbols for r in data for v in r):
-            raise AnalysisError("--points must be numbers, the same number of coordinates per point")
-        return data
-    try:
-        return np.loadtxt(args.points_file, delimiter="," if args.points_file.endswith(".csv") else None, ndmin=2)
-    except (OSError, ValueError) as exc:
-        raise AnalysisError(f"cannot read {args.points_file}: {exc}") from None
 
 
 def cmd_matrices(args, m: int) -> None:
@@ -221,8 +202,11 @@ def cmd_holder(args, m: int) -> None:
 
         return holder_levels(args, m)
     if getattr(args, "approx", False):
-        raise AnalysisError("--approx is not available for m-ary schemes yet (issue 12)")
+        raise AnalysisError("--approx is not available for m-ary schemes yet: give the mask exactly (fractions or radicals)")
     a, label, head = _input(args, m)
+    from .common import require_values
+
+    require_values(a, label, "holder")
     budget = float(args.budget)
     lines, data = [head], {"scheme": label, "arity": m}
     try:

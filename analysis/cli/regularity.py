@@ -15,7 +15,7 @@ import sympy as sp
 
 from . import mary as _mary
 from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_writable,
-                     scheme_arity, scheme_from_args)
+                     scheme_arity, scheme_from_args, require_values)
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -273,6 +273,7 @@ def cmd_holder(args) -> None:
         if getattr(args, "approx", False):
             raise AnalysisError("--approx needs --mask (a typed decimal table)")
         a, label = scheme_from_args(args)
+        require_values(a, label, "holder")
         lines = [f"scheme: {label}   (domain {a.domain})"]
     data: dict = {"scheme": label}
     _part("alpha", lambda: _alpha_part(args, a, budget), lines, data)

@@ -26,7 +26,7 @@ from ..algebra.symbol import parse_coefficient
 
 
 from . import mary as _mary
-from .common import scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
+from .common import check_refined_size, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
 from ..algebra.reader import as_expr
 
 
@@ -161,32 +161,6 @@ def cmd_norm(args) -> None:
     _emit(args, {"scheme": label, "results": rows}, "\n".join(lines))
 
 
-def _read_points(args):
-    import numpy as np
-
-    if (args.points is None) == (args.points_file is None):
-        raise AnalysisError("give the data with exactly one of --points \"x,y;x,y;...\" or --points-file FILE")
-    if args.points is not None:
-        rows = [r for r in args.points.split(";") if r.strip()]
-        if not rows:
-            raise AnalysisError("--points is empty")
-        try:
-            data = [[parse_coefficient(v) for v in r.split(",")] for r in rows]
-        except AnalysisError as exc:
-            raise AnalysisError(f"malformed --points: {exc}") from None
-        widths = {len(r) for r in data}
-        if len(widths) != 1:
-            raise AnalysisError("every point in --points needs the same number of coordinates")
-        if any(v.free_symbols for r in data for v in r):
-            raise AnalysisError("--points must be numbers")
-        return data
-    try:
-        arr = np.loadtxt(args.points_file, delimiter=None if not args.points_file.endswith(".csv") else ",", ndmin=2)
-    except (OSError, ValueError) as exc:
-        raise AnalysisError(f"cannot read {args.points_file}: {exc}") from None
-    return arr
-
-
 def cmd_refine(args) -> None:
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_refine(args, arity)
@@ -198,10 +172,11 @@ def cmd_refine(args) -> None:
         check_writable(args.output, "--output")
     a, label = scheme_from_args(args)
     a.require_numeric("refinement")
-    data = _read_points(args)
+    data = read_points(args)
     steps = _int_arg(args.steps, "--steps")
     if steps < 0 or steps > 30:
         raise AnalysisError("--steps must be between 0 and 30")
+    check_refined_size(len(data), 2, steps)
     if args.exact:
         from fractions import Fraction
 
@@ -336,5 +311,5 @@ def register(sub) -> None:
     s = sub.add_parser("list", help="the catalogue of named schemes")
     s.add_argument("--json", action="store_true")
     s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
-    s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary; issue 12)")
+    s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary)")
     s.set_defaults(func=cmd_list)

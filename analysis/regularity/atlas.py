@@ -46,7 +46,7 @@ Algorithm
    generically, e.g. ``mu = omega`` for seed 004's (3.6)) are left out of the comparison: alpha
    jumps up there, but the set is known exactly from the factorization (``witness
    ["exceptional"]``) and has measure zero, so refining around it would be wasted work.
-4. Parallelism: the tasks are plain tuples (the mask as ``srepr`` strings, the lowest exponent,
+4. Parallelism: the tasks are plain tuples (the mask's sympy coefficients, the lowest exponent,
    the parameter names, the exact values), rebuilt in the worker, so any pickling executor can
    run them: :class:`concurrent.futures.ProcessPoolExecutor` (``executor="local"``), a Dask
    cluster (``executor="dask://host:port"``, via ``distributed.Client.map`` and
@@ -144,15 +144,14 @@ def parse_axis(text: str) -> tuple[str, sp.Rational, sp.Rational, int]:
 # --------------------------------------------------------------------------------------------
 
 @functools.lru_cache(maxsize=16)
-def _rebuild(mask: tuple[str, ...], start: int, names: tuple[str, ...]) -> LaurentSymbol:
+def _rebuild(mask: tuple[sp.Expr, ...], start: int, names: tuple[str, ...]) -> LaurentSymbol:
     params = tuple(sp.Symbol(n) for n in names)
-    coeffs = [as_expr(c) for c in mask]  # srepr strings: exact, names are Symbol('...')
-    return LaurentSymbol.from_mask(coeffs, start=start, params=params)
+    return LaurentSymbol.from_mask(list(mask), start=start, params=params)
 
 
-def _payload(symbol: LaurentSymbol) -> tuple[tuple[str, ...], int, tuple[str, ...]]:
-    """The picklable description of ``symbol``: ``srepr`` of its mask, start, parameter names."""
-    return tuple(sp.srepr(c) for c in symbol.mask), symbol.start, tuple(p.name for p in symbol.params)
+def _payload(symbol: LaurentSymbol) -> tuple[tuple[sp.Expr, ...], int, tuple[str, ...]]:
+    """The picklable description of ``symbol``: its mask (sympy objects pickle), start, parameter names."""
+    return tuple(symbol.mask), symbol.start, tuple(p.name for p in symbol.params)
 
 
 def _verdicts(a: LaurentSymbol, h: Result | None, k: int | None, j_levels: Sequence[int],

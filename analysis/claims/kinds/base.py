@@ -37,19 +37,19 @@ import sympy as sp
 from ...algebra.symbol import LaurentSymbol, parse_coefficient
 from ...result import AnalysisError, Result
 from ..model import Evidence, Number, Verdict, certified, inconclusive, refuted
-from ...algebra.reader import as_expr
+from ...algebra.reader import as_expr, read_expression
 
 __all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence"]
 
 
 def parse_number(x, what: str = "number") -> sp.Expr:
     """An exact number (int, ``"1/16"``, ``"0.25"``, ``"(sqrt(5)-1)/8"``; ``"oo"``/``"-oo"`` allowed)."""
-    if isinstance(x, str) and x.strip() in ("oo", "+oo", "inf"):
-        return sp.oo
-    if isinstance(x, str) and x.strip() in ("-oo", "-inf"):
-        return -sp.oo
     try:
-        v = parse_coefficient(x)
+        if isinstance(x, str):
+            v = read_expression(x, what="number", free=False, allow_infinity=True,
+                                hint="a number is expected here (e.g. 1/16, pi/5, oo)")
+        else:
+            v = parse_coefficient(x)
     except AnalysisError as exc:
         raise AnalysisError(f"{what}: {exc}") from None
     if v.free_symbols:

@@ -95,6 +95,9 @@ class CurveComparison(Kind):
             raise AnalysisError(f"{self.where}: 'vary' is {{ name = [values] }} (one parameter)")
         self.vary_name, vals = next(iter(vary.items()), (None, [None]))
         self.vary_values = [None if v is None else parse_number(v, f"{self.where}: vary") for v in vals]
+        for c in comp:                               # bad values fail when the file is loaded
+            for curve in self.get("curves"):
+                self._values(c, curve, None)
 
     def _values(self, c: dict, curve: str, v) -> dict:
         lv = self.schemes[c["scheme"]].level

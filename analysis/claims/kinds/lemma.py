@@ -195,7 +195,11 @@ class Inequality(_Expressions):
             if not isinstance(p, dict):
                 raise AnalysisError(f"{self.where}: 'corrected' is a table {{ statement, lhs, relation, rhs }}")
             self._relation(p)
-            self._box(p.get("box", self.get("box")))
+            box = self._box(p.get("box", self.get("box")))
+            dil = p.get("dilation", self.get("dilation"))
+            if dil and dil not in box:
+                raise AnalysisError(f"{self.where}: dilation {dil!r} names no parameter of the box "
+                                    f"({', '.join(box) or 'none'}): give box {{ {dil} = \"(0, X)\" }}")
             if self.get("parts") is not None or p is self.get("corrected"):
                 self.expr(p["lhs"], "lhs"), self.expr(p["rhs"], "rhs")     # unknown names fail at load time
 
@@ -356,6 +360,8 @@ class Identity(_Expressions):
         self.statements()                    # unknown names fail at load time
         if not isinstance(self.get("numbers", {}), dict):
             raise AnalysisError(f"{self.where}: field 'numbers' is a table {{ name = \"expr\" }}")
+        for k, v in (self.get("numbers") or {}).items():
+            self.expr(v, f"number {k}", self.free_names())      # bad text fails when the file is loaded
         self.ranges = {}
         for k, v in (self.get("integers") or {}).items():
             lo, hi, _, _ = parse_interval(v, f"{self.where}: integers {k}")

@@ -145,13 +145,22 @@ class ExponentialReproduction(_LevelKind):
                 "at": "parameter values"}
     example = 'lambdas = ["0", "t", "-t"]\nat = { t = 1 }'
 
-    def evaluate(self) -> Verdict:
-        s = self.level()
-        loc = {p.name: p for p in s.params}
+    def check(self) -> None:
+        super().check()
+        self.lambdas()                               # bad text fails when the file is loaded
+
+    def lambdas(self) -> list:
+        loc = {p.name: p for p in self.level().params}
+        if not isinstance(self.get("lambdas"), list):
+            raise AnalysisError(f"{self.where}: field 'lambdas' is a list, e.g. [\"0\", \"t\", \"-t\"]")
         try:
-            lams = [read_in_context(x, loc, what="lambda", free=True) for x in self.get("lambdas")]
+            return [read_in_context(x, loc, what="lambda", free=True) for x in self.get("lambdas")]
         except AnalysisError as exc:
             raise AnalysisError(f"{self.where}: {exc}") from None
+
+    def evaluate(self) -> Verdict:
+        s = self.level()
+        lams = self.lambdas()
         vals = self.level_values()
         if self.arity == 2:
             fn = reproduction if self.get("reproduction") else generation

@@ -1,0 +1,175 @@
+"""Hostile input through every option of the command line: injection attempts, huge numbers, deep
+nesting, malformed text. Each must end in exit code 2, one line ``subdiv: error: ...`` on stderr
+and, with ``--json``, one JSON document ``{"error": {...}}`` on stdout — and no side effect: the
+marker file an injection would create never appears.
+
+The commands run in-process (``analysis.cli.main.main``) for speed; the resource test runs the
+huge inputs in one subprocess and checks its peak memory.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pytest
+
+from analysis.cli.main import main
+
+#: Where an injection would leave its mark (one folder for the whole corpus).
+MARK_DIR = Path(tempfile.mkdtemp(prefix="subdiv-hostile-"))
+MARK = MARK_DIR / "ran"
+
+#: Code that would run if any text reached eval (each creates MARK if it runs).
+INJECTIONS = [
+    f"__import__('os').system('touch {MARK}')",
+    f"__import__('pathlib').Path('{MARK}').touch()",
+    f"open('{MARK}', 'w')",
+    f"exec(\"open('{MARK}', 'w')\")",
+    f"eval(\"__import__('os').system('touch {MARK}')\")",
+    f"getattr(__builtins__, 'open')('{MARK}', 'w')",
+    f"[open('{MARK}', 'w') for x in (1,)]",
+    f"(lambda: open('{MARK}', 'w'))()",
+    f"1 if open('{MARK}', 'w') else 0",
+    f"z.__class__.__init__.__globals__['os'].system('touch {MARK}')",
+    "().__class__.__base__.__subclasses__()",
+    f"eval(chr(111)+chr(112)+chr(101)+chr(110)+'(\"{MARK}\",\"w\")')",
+    "compile('1', 'x', 'eval')",
+    "__builtins__",
+    "globals()",
+    f"Symbol('x').__class__.__mro__",
+    f"1; __import__('os').system('touch {MARK}')",
+    f"f'{{open(\"{MARK}\", \"w\")}}'",
+    "sympify('1')",
+    f"lambdify(z, '__import__(\"os\").system(\"touch {MARK}\")')(1)",
+]
+
+#: Sizes no input may ask for, and text that is no formula.
+HUGE = ["10**10**10", "9" * 5000, "z**(10**9)", "1/10**100000", "2**2**2**2**2**2", "(" * 400 + "1" + ")" * 400,
+        "+".join(["z"] * 50000), "((1+z)**100)**100", "1e999999", "-".join(["1"] * 200000), "x" * 300,
+        "sin(" * 150 + "1" + ")" * 150, "1" * 100001]
+MALFORMED = ["1//2", "abc,,1", "[1,2]", "1 2", "w=1", "'1'", "2z", "1/0", "oo", "nan", "True", "None", "...", "@",
+             "\x00", "1 < 2", "z if z else 1", "{1}", "x[0]", "-"]
+
+
+def _run(capsys, argv: list[str]) -> tuple[int, str, str, float]:
+    t0 = time.perf_counter()
+    code = main(argv)
+    dt = time.perf_counter() - t0
+    out, err = capsys.readouterr()
+    return code, out, err, dt
+
+
+def _assert_clean_error(argv, code, out, err, dt) -> None:
+    assert not MARK.exists(), f"{argv}: an injection ran"
+    assert code == 2, (argv, code, err)
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("subdiv: error: "), (argv, err)
+    doc = json.loads(out)                              # one JSON document, nothing else on stdout
+    assert set(doc) == {"error"} and doc["error"]["message"] and doc["error"]["kind"], (argv, doc)
+    assert dt < 5.0, f"{argv}: {dt:.1f} s"
+
+
+#: (command line with {} where the hostile text goes); every text option of every command.
+TARGETS = [
+    ["symbol", "--mask", "{}"],
+    ["symbol", "--mask", "1/2,{},1/2"],
+    ["symbol", "--symbol", "{}"],
+    ["symbol", "--even", "{}", "--odd", "1"],
+    ["symbol", "--mask", "1,1", "--param", "w={}"],
+    ["symbol", "--mask", "c,c", "--where", "c={}"],
+    ["symbol", "--mask", "1,1", "--start", "{}"],
+    ["factor", "--symbol", "{}"],
+    ["norm", "--scheme", "dfh-chaikin-perturbation", "--m", "3", "--L", "2", "--solve", "omega", "--within", "0,{}"],
+    ["norm", "--mask", "1/2,1,1/2", "--m", "1", "--L", "{}"],
+    ["refine", "--scheme", "chaikin", "--points", "0,0;{},1", "--steps", "1"],
+    ["refine", "--scheme", "chaikin", "--points", "0,0;1,1", "--steps", "{}"],
+    ["matrices", "--mask", "{}"],
+    ["holder", "--mask", "{}"],
+    ["holder", "--mask", "-1/16,0,9/16,1,9/16,0,{}", "--start", "-3"],
+    ["holder", "--scheme", "four-point", "--param", "w={}"],
+    ["holder", "--mask", "1/4,3/4,3/4,1/4", "--arity", "{}"],
+    ["holder", "--mask", "1/4,3/4,3/4,1/4", "--C", "{}"],
+    ["holder", "--mask", "1/4,3/4,3/4,1/4", "--budget", "{}"],
+    ["holder", "--scheme", "exp-bspline-3-trig", "--box", "theta={},1"],
+    ["range", "--scheme", "four-point", "--C", "1", "--within", "{},1/8"],
+    ["range", "--scheme", "four-point", "--C", "1", "--within", "0,1/8", "--grid", "{}"],
+    ["atlas", "--symbol", "(1+z)**2/(2*z)*(1 + s*(z-2+1/z) + t*(z**2-2+z**-2))", "--x", "s={}:1/8:3",
+     "--y", "t=-1/8:0:2", "--no-progress"],
+    ["series", "--scheme", "exp-bspline-3-trig", "--param", "theta={}", "--m", "1"],
+    ["bound", "--lhs", "{}", "--rhs", "1"],
+    ["bound", "--lhs", "1/2**n", "--rhs", "{}"],
+    ["reproduce", "--scheme", "exp-bspline-3-trig", "--param", "theta=1", "--lambdas", "{}"],
+    ["derive", "--support", "{}", "--sum-rules", "2"],
+]
+
+
+def _cases():
+    """Each target with a share of each corpus (every target gets injections; sizes and malformed
+    text rotate through the targets so that every value is used and the suite stays fast)."""
+    out = []
+    for i, t in enumerate(TARGETS):
+        vals = INJECTIONS[i % 4::4] + [HUGE[i % len(HUGE)], MALFORMED[i % len(MALFORMED)],
+                                       MALFORMED[(i + 7) % len(MALFORMED)]]
+        for j, v in enumerate(vals):
+            out.append(pytest.param([x.replace("{}", v) for x in t] + ["--json"], id=f"{t[0]}-{i}-{j}"))
+    return out
+
+
+@pytest.mark.parametrize("argv", _cases())
+def test_hostile_option_values(capsys, argv):
+    _assert_clean_error(argv, *_run(capsys, argv))
+
+
+@pytest.mark.parametrize("value", INJECTIONS + HUGE + MALFORMED, ids=lambda v: repr(v[:24]))
+def test_every_value_through_the_mask(capsys, value):
+    argv = ["holder", "--mask", f"1/4,{value},1/4", "--json"]
+    _assert_clean_error(argv, *_run(capsys, argv))
+
+
+def test_the_corpus_is_large_enough():
+    assert len(_cases()) + len(INJECTIONS + HUGE + MALFORMED) >= 200
+
+
+def test_huge_inputs_stay_small_in_a_fresh_process(tmp_path):
+    """The huge inputs in one fresh interpreter: every one a clean error, peak memory under 1 GB."""
+    script = tmp_path / "run.py"
+    script.write_text(
+        "import json, resource, sys\n"
+        "from analysis.cli.main import main\n"
+        f"values = {HUGE!r}\n"
+        "codes = [main(['symbol', '--symbol', v]) for v in values]\n"
+        "codes += [main(['holder', '--mask', '1/2,' + v + ',1/2']) for v in values]\n"
+        "peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024\n"
+        "print(json.dumps({'codes': codes, 'peak': peak}), file=sys.__stdout__)\n")
+    t0 = time.perf_counter()
+    p = subprocess.run([sys.executable, str(script)], capture_output=True, text=True, timeout=120,
+                       cwd=Path(__file__).resolve().parents[1])
+    dt = time.perf_counter() - t0
+    res = json.loads(p.stdout.strip().splitlines()[-1])
+    assert res["codes"] == [2] * (2 * len(HUGE)), p.stderr
+    assert res["peak"] < 1 << 30, res["peak"]
+    assert dt < 60, dt
+    assert "internal error" not in p.stderr and "MemoryError" not in p.stderr
+
+
+def test_mistyped_command_and_option(capsys):
+    code, out, err, _ = _run(capsys, ["holdr", "--mask", "1,1", "--json"])
+    assert code == 2 and "did you mean `subdiv holder`" in err and json.loads(out)["error"]["kind"] == "usage"
+    code, out, err, _ = _run(capsys, ["holder", "--maks", "1,1", "--json"])
+    assert code == 2 and "did you mean --mask" in err
+
+
+def test_unknown_name_in_a_mask_is_an_error_naming_it(capsys):
+    code, out, err, _ = _run(capsys, ["holder", "--mask", "-1/l6,0,9/16,1,9/16,0,-1/16", "--start", "-3"])
+    assert code == 2 and "'l6'" in err and "--param l6=" in err
+
+
+def test_marker_never_created():
+    assert not MARK.exists()
+    assert os.listdir(MARK_DIR) == []
