@@ -13,10 +13,12 @@ from pathlib import Path
 def load_bundled(init_file: str):
     """The ``PAPER`` of a bundled paper folder: its ``paper.toml`` (beside ``init_file``), with
     schemes given by catalogue name resolved in :mod:`schemes` (the engine may not import the
-    catalogue, so the paper supplies the lookup)."""
+    catalogue, so the paper supplies the lookup). Its ``python`` claims run: the evaluators of a
+    bundled paper are the tool's own code (a paper file from elsewhere runs none without
+    ``--allow-python``)."""
     from analysis.claims.paperfile import load_paper
 
-    paper = load_paper(Path(init_file).with_name("paper.toml"), catalogue=catalogue)
+    paper = load_paper(Path(init_file).with_name("paper.toml"), catalogue=catalogue, python="bundled")
     # the folder's package (so that golden_path finds verdicts.json without papers() having run)
     object.__setattr__(paper, "origin", f"{__name__}.{Path(init_file).parent.name}")
     return paper

@@ -49,7 +49,7 @@ def test_python_claim_args():
     """`args` are passed to the evaluator; a non-list is a one-line error."""
     base = ('[paper]\nid = "t"\ntitle = "t"\n[[claims]]\nid = "A"\nstatement = "s"\nkind = "python"\n'
             'evaluator = "analysis.claims.model:inconclusive"\n')
-    p = parse_paper(base + 'args = ["the arguments reach the evaluator", "both of them"]\n', "t.toml")
+    p = parse_paper(base + 'args = ["the arguments reach the evaluator", "both of them"]\n', "t.toml", python="allowed")
     v = p.claims[0].evaluate()
     assert v.status == "inconclusive" and (v.summary, v.settle) == ("the arguments reach the evaluator", "both of them")
     with pytest.raises(AnalysisError, match="args must be a list"):

@@ -89,8 +89,11 @@ def test_inequality_cited_python():
     assert run("inequality", lhs="2**(-n)", rhs="sin(2**(-n))", n0=1, strict=True).status == "refuted"
     v = run("cited", source="[3]", settle="the proof in [3]")
     assert v.status == "inconclusive" and v.settle == "the proof in [3]"
-    v = run("python", evaluator="analysis.claims.model:inconclusive", args=["a bespoke evaluator", "its own test"])
+    fields = dict(evaluator="analysis.claims.model:inconclusive", args=["a bespoke evaluator", "its own test"])
+    v = kind_class("python")(fields, S, "t", python="allowed").evaluate()
     assert (v.status, v.summary, v.settle) == ("inconclusive", "a bespoke evaluator", "its own test")
+    v = run("python", **fields)                  # a paper file's code runs only when allowed
+    assert v.status == "inconclusive" and v.summary.startswith("not run") and "--allow-python" in v.settle
 
 
 def test_level_dependent_kinds():

@@ -138,9 +138,15 @@ def test_new_paper_template_loads_and_evaluates(tmp_path, capsys):
     bad = [(e.claim.id, e.error) for e in evs if e.error]
     assert not bad, bad
     json.dumps(verdicts_json({paper.id: evs}, titles={paper.id: paper.title}))    # every key number serialises
-    # every example is true, except "cited" (inconclusive by design); a curve comparison is float64 (numerical)
+    # every example is true, except "cited" (inconclusive by design), "python" (a paper file runs no code
+    # without --allow-python: not run); a curve comparison is float64 (numerical)
     assert {e.claim.kind: e.verdict.status for e in evs if e.verdict.status != "certified"} == {
-        "cited": "inconclusive", "curve comparison": "numerical"}
+        "cited": "inconclusive", "python": "inconclusive", "curve comparison": "numerical"}
+    assert next(e for e in evs if e.claim.kind == "python").verdict.summary.startswith("not run")
+    # allowed, the template's python example runs (the bundled evaluator it names) and is true
+    trusted = load_paper(f, python="allowed")
+    claim = next(c for c in trusted.claims if c.kind == "python")
+    assert claim.runs_python and evaluate_paper(trusted, only=[claim.id])[0].verdict.status == "certified"
 
 
 def test_paper_file_without_catalogue_is_an_error():

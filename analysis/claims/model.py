@@ -79,7 +79,7 @@ from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, STATUSES, Resu
 from ..algebra.reader import as_expr
 
 __all__ = ["golden_path", "KINDS", "LABELS", "Number", "Evidence", "Series", "Figure", "Verdict", "Claim", "Paper",
-           "Evaluated", "papers", "get_paper", "evaluate_claim", "evaluate_paper", "verdicts_json",
+           "Evaluated", "papers", "get_paper", "evaluate_claim", "evaluate_paper", "verdicts_json", "python_notice",
            "compare_verdicts", "exact_set", "contains_interval", "certified", "refuted",
            "inconclusive", "exact_result"]
 
@@ -265,7 +265,9 @@ class Claim:
 
     ``evaluate()`` returns a :class:`Verdict`. ``reading`` is our reading of a garbled
     ``statement`` and ``reading_note`` explains it. ``command`` is the ``subdiv`` command line
-    that reproduces the computation.
+    that reproduces the computation. ``runs_python`` is the evaluator (``"package.module:function"``)
+    when evaluating the claim runs Python code from a paper file that the user allowed with
+    ``--allow-python`` (the report then says so); empty otherwise (bundled papers included).
     """
 
     id: str
@@ -279,6 +281,7 @@ class Claim:
     params: tuple = ()
     command: str = ""
     location: str = ""
+    runs_python: str = ""
 
     def __post_init__(self) -> None:
         if ":" not in self.id or not self.id.split(":", 1)[1]:
@@ -416,12 +419,28 @@ def evaluate_paper(paper: Paper, progress: Callable[[int, int, Evaluated], None]
     return out
 
 
+def python_notice(results: Sequence[Evaluated]) -> str | None:
+    """The notice a report carries when evaluating its claims ran Python code from the paper file
+    (claims with :attr:`Claim.runs_python`, allowed by ``--allow-python``); ``None`` when none did.
+
+    >>> c = Claim(id="9:a", kind="python", statement="s", evaluate=lambda: None, runs_python="mypkg.ev:check")
+    >>> python_notice([Evaluated(c, inconclusive("x", settle="y"), 0.0)])
+    'this report ran Python code from the paper file: evaluator mypkg.ev:check (claim 9:a)'
+    """
+    ran = [ev.claim for ev in results if ev.claim.runs_python]
+    if not ran:
+        return None
+    return "this report ran Python code from the paper file: " + "; ".join(
+        f"evaluator {c.runs_python} (claim {c.id})" for c in ran)
+
+
 def verdicts_json(results: Mapping[str, Sequence[Evaluated]], titles: Mapping[str, str] | None = None) -> dict:
     """The golden-file content: per paper, per claim, the status and key numbers.
 
     ``titles`` (paper id -> title) for papers that are not bundled (paper files).
 
-    Only what :func:`compare_verdicts` checks goes in (plus kind and summary, for reading); no
+    Only what :func:`compare_verdicts` checks goes in (plus kind and summary, for reading, and the
+    :func:`python_notice` as ``ran_python`` when the evaluation ran Python code from a paper file); no
     timings or dates, so that regenerating an unchanged report leaves the file unchanged.
     """
     out: dict = {"schema": 1, "papers": {}}
@@ -437,8 +456,13 @@ def verdicts_json(results: Mapping[str, Sequence[Evaluated]], titles: Mapping[st
                 "summary": ev.verdict.summary,
                 "numbers": {n.name: n.to_json() for n in ev.verdict.numbers},
             }
+            if ev.claim.runs_python:
+                claims[ev.claim.id]["ran_python"] = ev.claim.runs_python
         title = titles[pid] if titles is not None and pid in titles else (paper.title if paper else "")
         out["papers"][pid] = {"title": title, "claims": claims}
+        notice = python_notice(evs)
+        if notice:
+            out["papers"][pid]["ran_python"] = notice
     return out
 
 

@@ -37,6 +37,14 @@ refuse the claim when the file is loaded. A level-dependent m-ary scheme (``leve
 kinds weighted series, asymptotic equivalence and exponential reproduction evaluate it with
 :mod:`analysis.levels.mary` and :mod:`analysis.levels.reproduction_mary`.
 
+A paper file is data, never code. Its ``python`` claims (``evaluator = "package.module:function"``)
+are not imported or run unless the caller says so (``python="allowed"``: ``subdiv report/check
+--allow-python``; ``python="bundled"``: the papers shipped with the tool): otherwise they are
+inconclusive and say that they were not run. The evaluator string is checked (dotted Python names)
+before anything else. Names that become file names (``[paper] id``, scheme names, figure names) must be
+slugs (:mod:`analysis.claims.names`). Files above :data:`MAX_BYTES` or nesting deeper than
+:data:`MAX_DEPTH` are refused with a one-line error.
+
 Bad files are one-line :class:`~analysis.result.AnalysisError` messages: a TOML syntax error
 names the file and line; an unknown kind lists the kinds; an unknown scheme, parameter or field
 is named. A claim whose *evaluation* raises becomes inconclusive with the error
@@ -102,10 +110,12 @@ from ..algebra.symbol import LaurentSymbol, parse_coefficient
 from ..levels.level_dependent import H, N, LevelDependentScheme, to_h
 from ..result import AnalysisError
 from .kinds import Domain, SchemeSpec, kind_class
+from .kinds.other import PYTHON_MODES, Python
 from .model import Claim, Paper
 from ..algebra.reader import as_expr
+from .names import check_slug
 
-__all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META"]
+__all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META", "MAX_BYTES", "MAX_DEPTH"]
 
 PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
 SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "level_symbol", "where", "parameters",
@@ -116,6 +126,11 @@ _DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask", "level_symbol")
 
 Catalogue = Callable[[str], Any]
 
+#: the largest paper file read (the bundled ones are below 40 kB)
+MAX_BYTES = 1 << 20
+#: the deepest nesting of arrays and tables in a paper file (the bundled ones nest 6 deep)
+MAX_DEPTH = 16
+
 
 def golden_file(path: str | Path) -> Path:
     """The golden verdicts beside a paper file: ``FILE.verdicts.json`` for ``FILE.toml``."""
@@ -124,16 +139,23 @@ def golden_file(path: str | Path) -> Path:
     return p.with_name(stem + ".verdicts.json")
 
 
-def load_paper(path: str | Path, *, catalogue: Catalogue | None = None) -> Paper:
-    """Read and validate the paper file ``path`` (see the module docstring)."""
+def load_paper(path: str | Path, *, catalogue: Catalogue | None = None, python: str = "skip") -> Paper:
+    """Read and validate the paper file ``path`` (see the module docstring; ``python`` as in
+    :func:`parse_paper`). Files larger than :data:`MAX_BYTES` and anything but a regular file are refused."""
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise AnalysisError(f"no paper file {p}") from None
+        if not p.is_file():
+            raise AnalysisError(f"no paper file {p}" if not p.exists() else
+                                f"{p} is not a regular file: give the path of a paper file FILE.toml")
+        with open(p, "rb") as fh:
+            data = fh.read(MAX_BYTES + 1)
+        if len(data) > MAX_BYTES:
+            raise AnalysisError(f"the paper file {p} is larger than {MAX_BYTES // 1024} kB: split it into several "
+                                "paper files")
+        text = data.decode("utf-8")
     except (OSError, UnicodeDecodeError) as exc:
-        raise AnalysisError(f"cannot read the paper file {p}: {exc}") from None
-    return parse_paper(text, str(p), catalogue=catalogue)
+        raise AnalysisError(f"cannot read the paper file {p}: {getattr(exc, 'strerror', None) or exc}") from None
+    return parse_paper(text, str(p), catalogue=catalogue, python=python)
 
 
 def _syntax_error(exc: Exception, text: str, where: str) -> AnalysisError:
@@ -295,12 +317,39 @@ def _arity(t: Mapping, how: str, w: str) -> int | None:
     return m
 
 
-def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue | None = None) -> Paper:
-    """A :class:`~analysis.claims.model.Paper` from the TOML ``text`` (``where`` names it in errors)."""
+def _too_deep(data: Any) -> bool:
+    """Whether ``data`` nests arrays and tables more than :data:`MAX_DEPTH` deep (no recursion)."""
+    stack = [(data, 0)]
+    while stack:
+        x, d = stack.pop()
+        if isinstance(x, (dict, list)):
+            if d >= MAX_DEPTH:
+                return True
+            stack.extend((v, d + 1) for v in (x.values() if isinstance(x, dict) else x))
+    return False
+
+
+def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue | None = None,
+                python: str = "skip") -> Paper:
+    """A :class:`~analysis.claims.model.Paper` from the TOML ``text`` (``where`` names it in errors).
+
+    ``python`` says what happens to the file's ``python`` claims (:data:`~analysis.claims.kinds.other.PYTHON_MODES`):
+    ``"skip"`` (the default: a paper file is data; the claims are not run and say so), ``"allowed"`` (the user
+    passed ``--allow-python``: they run, and each such claim records its evaluator in ``Claim.runs_python`` so
+    that the report says it ran code from the file) or ``"bundled"`` (a paper shipped with the tool).
+    """
+    if python not in PYTHON_MODES:
+        raise ValueError(f"python must be one of {PYTHON_MODES}, not {python!r}")
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise _syntax_error(exc, text, where) from None
+    except RecursionError:
+        raise AnalysisError(f"{where}: arrays or tables nested too deeply (at most {MAX_DEPTH} levels): "
+                            "write the values as flat lists and tables") from None
+    if _too_deep(data):
+        raise AnalysisError(f"{where}: arrays or tables nested too deeply (at most {MAX_DEPTH} levels): "
+                            "write the values as flat lists and tables")
     _unknown(data, {"paper", "schemes", "claims"}, where)
     meta = data.get("paper")
     if not isinstance(meta, Mapping):
@@ -309,12 +358,15 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
     pid = meta.get("id")
     if not isinstance(pid, str) or not pid or ":" in pid:
         raise AnalysisError(f"{where}: [paper] id must be a short string without ':' (e.g. \"900\")")
+    check_slug(pid, f"{where}: [paper] id", '"900" or "my-paper"')     # it names <id>.md and <id>.html
     authors = meta.get("authors", [])
     if isinstance(authors, str):
         authors = [authors]
     tables = data.get("schemes", {})
     if not isinstance(tables, Mapping):
         raise AnalysisError(f"{where}: schemes are tables [schemes.NAME]")
+    for name in tables:                      # scheme names become figure file names (blf-<scheme>.png)
+        check_slug(name, f"{where}: scheme name", "[schemes.four-point]")
     schemes = {name: _scheme(name, t, where, catalogue) for name, t in tables.items()}
     claims_t = data.get("claims", [])
     if not isinstance(claims_t, list):
@@ -333,7 +385,8 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
             raise AnalysisError(f"{w}: missing 'kind'")
         cls = kind_class_named(kind, w)
         fields = {x: v for x, v in t.items() if x not in CLAIM_META}
-        obj = cls(fields, schemes, w)
+        obj = cls(fields, schemes, w, python=python) if cls is Python else cls(fields, schemes, w)
+        runs = str(obj.get("evaluator")) if cls is Python and python == "allowed" else ""
         objects = t.get("objects", [obj.fields["scheme"]] if obj.uses_scheme else [])
         if not isinstance(objects, list) or not all(isinstance(x, str) for x in objects):
             raise AnalysisError(f"{w}: 'objects' must be a list of names")
@@ -341,8 +394,9 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
                             evaluate=obj.evaluate, title=_text(t, "title", w), reading=_text(t, "reading", w) or None,
                             reading_note=_text(t, "reading_note", w) or None,
                             objects=tuple(objects),
-                            command=_text(t, "command", w) or f"subdiv report {where} --claim '{cid}'",
-                            location=_text(t, "location", w)))
+                            command=_text(t, "command", w) or f"subdiv report {where} --claim '{cid}'"
+                            + (" --allow-python" if runs else ""),
+                            location=_text(t, "location", w), runs_python=runs))
     notes = [_text(meta, "notes", f"{where}: [paper]")]
     if authors:
         notes.insert(0, "Authors: " + ", ".join(map(str, authors)) + ".")

@@ -68,14 +68,14 @@ def _ascii_map(result, js) -> list[str]:
 
 def cmd_atlas(args) -> None:
     from ..regularity.atlas import holder_atlas, parse_axis, plot_atlas
-    from .common import _emit, check_writable, scheme_arity, scheme_from_args
+    from .common import _emit, check_figure, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 
     from .family import apply_family
 
+    if args.figure:                              # before any computation: format and place
+        check_figure(args.figure, "the figure")
     apply_family(args)                           # --family FILE.json (issue 14)
-    if args.figure:
-        check_writable(args.figure, "the figure")
     m = scheme_arity(args)                       # m-ary families (issue 12)
     a, label = scheme_from_args(args, arity_ok=True)
     if args.x is None or args.y is None:
@@ -92,7 +92,10 @@ def cmd_atlas(args) -> None:
     r = holder_atlas(a, xn, (xlo, xhi), yn, (ylo, yhi), n1=xN, n2=yN, j_levels=js, refine_levels=refine,
                      executor=executor, workers=workers, budget_seconds=budget,
                      progress=not args.no_progress, **({"arity": m} if m != 2 else {}))
-    figure = plot_atlas(r, args.figure) if args.figure else None
+    try:
+        figure = plot_atlas(r, args.figure) if args.figure else None
+    except OSError as exc:
+        raise AnalysisError(f"cannot write the figure {args.figure!r}: {exc.strerror or exc}") from None
     w, c = r.witness, r.witness["counts"]
     js = list(w["grid"]["j_levels"])
     fixed = ", ".join(f"{p}" for p in (args.param or []))

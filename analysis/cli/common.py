@@ -1,7 +1,8 @@
 """What every command of ``subdiv`` shares: reading a scheme and its parameters from the
 command line, option values that begin with ``-`` (:func:`attach_dash_values`), printing through
 the guarded standard output (:func:`_print`, :func:`_emit`: one JSON document with ``--json``,
-nothing of a library), and checking output paths before any computation (:func:`check_writable`).
+nothing of a library), and checking output paths before any computation (:func:`check_writable`;
+:func:`check_figure` for figures: an extension matplotlib writes, and a writable place).
 
 A scheme is given in one of four ways — a catalogue name (``--scheme``), a mask (``--mask``,
 ``--start``), paper-style rules (``--rules``) or a symbol expression (``--symbol``) — with
@@ -293,15 +294,59 @@ def _print(*objects, **kw) -> None:
 
 
 def check_writable(path: str, option: str) -> None:
-    """Fail at once (one-line error) when ``path`` cannot be written — before any computation."""
+    """Fail at once (one-line error) when ``path`` cannot be written — before any computation. The
+    folder must exist and accept a new file (a temporary file is created there and removed: this also
+    catches read-only and pseudo file systems such as ``/proc``, where permission bits say nothing)."""
+    import tempfile
+
+    if not str(path).strip():
+        raise AnalysisError(f"{option} needs a file name")
     p = os.path.abspath(os.path.expanduser(str(path)))
     parent = os.path.dirname(p) or "."
     if os.path.isdir(p):
-        raise AnalysisError(f"cannot write {option} {path!r}: it is a directory")
+        raise AnalysisError(f"cannot write {option} {path!r}: it is a directory (give a file name in it)")
     if not os.path.isdir(parent):
-        raise AnalysisError(f"cannot write {option} {path!r}: directory {parent!r} does not exist")
+        raise AnalysisError(f"cannot write {option} {path!r}: directory {parent!r} does not exist "
+                            "(create it first, or give a path in an existing folder)")
+    if os.path.exists(p) and not os.path.isfile(p):
+        raise AnalysisError(f"cannot write {option} {path!r}: it exists and is not a regular file")
     if not os.access(parent, os.W_OK | os.X_OK) or (os.path.exists(p) and not os.access(p, os.W_OK)):
-        raise AnalysisError(f"cannot write {option} {path!r}: permission denied")
+        raise AnalysisError(f"cannot write {option} {path!r}: permission denied (give a path in a writable folder)")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".subdiv-probe-", dir=parent)
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise AnalysisError(f"cannot write {option} {path!r}: directory {parent!r} does not accept new files "
+                            f"({exc.strerror or exc}; give a path in a writable folder)") from None
+
+
+#: figure formats accepted by the ``--figure``/``--plot`` options: the ones matplotlib writes without
+#: extra programs (``pgf`` needs LaTeX; ``raw``/``rgba`` are headerless pixel dumps, ``avif`` a Pillow plugin)
+FIGURE_FORMATS = ("png", "svg", "pdf", "eps", "ps", "svgz", "jpg", "jpeg", "tif", "tiff", "webp", "gif")
+
+
+def figure_formats() -> tuple[str, ...]:
+    """The formats of :data:`FIGURE_FORMATS` that this matplotlib can write."""
+    from matplotlib.backend_bases import FigureCanvasBase
+
+    supported = FigureCanvasBase.get_supported_filetypes()
+    return tuple(f for f in FIGURE_FORMATS if f in supported)
+
+
+def check_figure(path: str, option: str) -> None:
+    """Fail at once (one-line error) when the figure ``path`` has no extension matplotlib can write
+    (``.png``, ``.svg``, ``.pdf``, ...) or cannot be written (:func:`check_writable`) — before any computation."""
+    if os.path.isdir(os.path.expanduser(str(path))):
+        raise AnalysisError(f"cannot write {option} {path!r}: it is a directory (give a file name in it, e.g. "
+                            f"{os.path.join(str(path), 'figure.png')})")
+    ext = os.path.splitext(str(path))[1].lower().lstrip(".")
+    formats = figure_formats()
+    if ext not in formats:
+        what = f"'.{ext}' is not an image format matplotlib writes" if ext else "the file name has no extension"
+        raise AnalysisError(f"cannot write {option} {path!r}: {what}; end the name in .png, .svg or .pdf "
+                            f"(also: {', '.join('.' + f for f in formats if f not in ('png', 'svg', 'pdf'))})")
+    check_writable(path, option)
 
 
 def _emit(args, data: dict, text: str) -> None:

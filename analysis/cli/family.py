@@ -68,6 +68,9 @@ def read_family(path: str) -> dict:
         raise AnalysisError(f"cannot read the family file {path}: {exc.strerror or exc}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
         raise AnalysisError(f"{path} is not a family file (invalid JSON: {str(exc).splitlines()[0]})") from None
+    except RecursionError:
+        raise AnalysisError(f"{path} is not a family file (arrays nested too deeply; write one with "
+                            "subdiv derive ... --output FILE.json)") from None
     if not isinstance(doc, dict) or doc.get("format") != FORMAT:
         raise AnalysisError(f"{path} is not a family file (write one with subdiv derive ... --output FILE.json)")
     for key, typ in (("arity", int), ("start", int), ("mask", list)):

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from .common import _emit, _parse_params, check_writable
+from .common import _emit, _parse_params, check_figure
 from .level_args import k_max_arg, param_box_values, parse_boxes, stationary_options_refused
 from .level_text import limit_line, series_line, verdict_lines
 from ..jsonable import fmt_lower, fmt_upper
@@ -194,7 +194,7 @@ def cmd_reproduce(args) -> None:
     from ..levels.reproduction import check_curve_options, curve_deviation, generation, reproduction
 
     if args.plot:
-        check_writable(args.plot, "the plot")
+        check_figure(args.plot, "the plot")
     s = _level_scheme(args)
     if args.curve:
         check_curve_options(args.points, args.steps, args.plot)

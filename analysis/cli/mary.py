@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..jsonable import exact_and_float
 from ..result import AnalysisError
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_writable, scheme_from_args
+from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_figure, scheme_from_args
 from ..algebra.reader import as_expr
 
 
@@ -265,7 +265,7 @@ def cmd_range(args, m: int) -> None:
     from ..regularity.mary import ck_range_mary
 
     if args.figure:
-        check_writable(args.figure, "the figure")
+        check_figure(args.figure, "the figure")
     a, label, head = _input(args, m)
     j = _int_arg(args.C, "--C")
     within = _parse_within(args.within)
@@ -333,6 +333,6 @@ def _figure(args, a, m: int, p: str, j: int, within, r, label: str, lines: list,
     try:
         plot_alpha_curve(curve, args.figure, j=j, boundaries=ends, label=f"{label} (arity {m})")
     except OSError as exc:
-        raise AnalysisError(f"cannot write {args.figure}: {exc.strerror or exc}") from None
+        raise AnalysisError(f"cannot write the figure {args.figure!r}: {exc.strerror or exc}") from None
     lines.append(f"figure written to {args.figure} (alpha at {len(curve.value)} points, {curve.status})")
     data["figure"] = args.figure

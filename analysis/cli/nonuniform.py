@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from .common import _print, check_writable
+from .common import _print, check_figure, check_writable
 from ..jsonable import fmt_lower, fmt_upper, jsonable
 from ..result import AnalysisError
 
@@ -185,7 +185,7 @@ def cmd_reproduce(args) -> None:
     d = _int(args.degree, "--degree", 2, 16)
     levels = _int(args.levels, "--levels", 0, 20)
     if args.figure:
-        check_writable(args.figure, "the figure")
+        check_figure(args.figure, "the figure")
     r = nu.reproduce(args.kind, degree=d, levels=levels)
     if args.figure:
         from ..report.plots import plot_blended
@@ -205,7 +205,7 @@ def cmd_chamfer(args) -> None:
 
     levels = _int(args.levels, "--levels", 0, 16)
     if args.figure:
-        check_writable(args.figure, "the figure")
+        check_figure(args.figure, "the figure")
     r = nu.chamfer_example(levels=levels, degree=_int(args.degree, "--degree", 2, 8))
     if args.figure:
         from ..report.plots import plot_chamfer

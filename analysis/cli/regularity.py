@@ -14,8 +14,8 @@ from __future__ import annotations
 import sympy as sp
 
 from . import mary as _mary
-from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_writable,
-                     scheme_arity, scheme_from_args, require_values)
+from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
+                     require_values, scheme_arity, scheme_from_args)
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -307,13 +307,13 @@ def _interior_lines(it: dict, j: int) -> list:
 def cmd_range(args) -> None:
     from .family import apply_family
 
+    if args.figure:                                   # before any computation: format and place
+        check_figure(args.figure, "the figure")
     apply_family(args)                                # --family FILE.json (issue 14)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_range(args, arity)
     from ..regularity.ranges import alpha_curve, ck_parameter_set
 
-    if args.figure:
-        check_writable(args.figure, "the figure")
     a, label = scheme_from_args(args)
     j = _int_arg(args.C, "--C")
     within = _parse_within(args.within)
@@ -375,7 +375,7 @@ def cmd_range(args) -> None:
         try:
             plot_alpha_curve(curve, args.figure, j=j, boundaries=r.witness["boundaries"], label=label)
         except OSError as exc:
-            raise AnalysisError(f"cannot write {args.figure}: {exc.strerror or exc}") from None
+            raise AnalysisError(f"cannot write the figure {args.figure!r}: {exc.strerror or exc}") from None
         lines.append(f"figure written to {args.figure}")
         data["figure"] = args.figure
     _emit(args, data, "\n".join(lines))

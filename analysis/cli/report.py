@@ -16,8 +16,16 @@
   (:mod:`analysis.claims.paperfile`, issue 11); its golden verdicts are ``FILE.verdicts.json``
   beside it (``--update-golden`` writes them).
 
-Every file is written atomically (temporary file, then rename). The golden files are what the
-code computed, reviewed in the diff of a commit — never typed by hand.
+A paper file is data: its ``python`` claims run only with ``--allow-python`` (or for a file of the
+bundled ``papers`` package); without it they are inconclusive ("not run") and the rest of the report
+is computed as usual. When Python code from a paper file ran, the verdict table, the Markdown and
+HTML reports and the JSON verdicts say so.
+
+``--output DIR`` is created when missing (parents too). Every file is written inside it (names are
+slugs; symbolic links leading out of it are refused), atomically (temporary file, then rename), and
+rewritten on every run; afterwards the figures of ``DIR/figures`` that no report in ``DIR`` refers to
+are removed (:func:`analysis.report.files.remove_orphans`). The golden files are what the code
+computed, reviewed in the diff of a commit — never typed by hand.
 
 Examples
 --------
@@ -28,6 +36,7 @@ Examples
     subdiv check
     subdiv report examples/four-point.toml --output /tmp/r
     subdiv check examples/four-point.toml
+    subdiv report my-paper.toml --allow-python --output /tmp/r     # runs the file's python claims
 """
 
 from __future__ import annotations
@@ -39,9 +48,11 @@ import sys
 import time
 from pathlib import Path
 
-from ..claims.model import compare_verdicts, evaluate_paper, get_paper, golden_path, papers, verdicts_json
+from ..claims.kinds.other import NOT_RUN_SETTLE
+from ..claims.model import (compare_verdicts, evaluate_paper, get_paper, golden_path, papers, python_notice,
+                            verdicts_json)
 from ..claims.paperfile import golden_file, load_paper
-from ..report.files import atomic_write_text
+from ..report.files import atomic_write_text, inside, output_folder, remove_orphans
 from ..result import AnalysisError
 from .common import _print
 
@@ -96,9 +107,32 @@ def _catalogue(name: str):
     return catalogue(name)
 
 
-def load_file(path):
-    """The paper file at ``path`` (catalogue names resolved by :mod:`schemes`)."""
-    return load_paper(path, catalogue=_catalogue)
+def is_bundled_file(path) -> bool:
+    """Whether ``path`` (symbolic links resolved) lies inside the installed ``papers`` package: a paper
+    shipped with the tool, whose evaluators are the tool's own code."""
+    import papers as bundled
+
+    root = Path(bundled.__file__).resolve().parent
+    return root in Path(path).resolve().parents
+
+
+def load_file(path, allow_python: bool = False):
+    """The paper file at ``path`` (catalogue names resolved by :mod:`schemes`). Its ``python`` claims
+    run for a bundled paper file or with ``allow_python`` (``--allow-python``); otherwise they are not run."""
+    mode = "bundled" if is_bundled_file(path) else "allowed" if allow_python else "skip"
+    return load_paper(path, catalogue=_catalogue, python=mode)
+
+
+def _python_lines(results, path=None, json_output: bool = False) -> None:
+    """Say on stdout that Python code from the paper file ran (with ``--json`` the verdicts carry it as
+    ``ran_python``), and on stderr how many ``python`` claims were not run and how to run them."""
+    notice = python_notice(results)
+    if notice and not json_output:
+        _print(f"\nWARNING: {notice}")
+    skipped = [ev.claim.id for ev in results if ev.verdict.settle == NOT_RUN_SETTLE]
+    if skipped:
+        print(f"{len(skipped)} python claim(s) not run ({', '.join(skipped[:3])}{', ...' if len(skipped) > 3 else ''}): "
+              f"a paper file is data; if you trust {path or 'it'}, run again with --allow-python", file=sys.stderr)
 
 
 def _print_details(results) -> None:
@@ -115,11 +149,11 @@ def _print_details(results) -> None:
 
 
 def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
-    combined = outdir / "verdicts.json"
+    combined = inside(outdir, "verdicts.json")
     if combined.exists() and merge:       # keep the other papers' entries
         try:
             old = json.loads(combined.read_text(encoding="utf-8"))
-        except (OSError, UnicodeDecodeError, json.JSONDecodeError):
+        except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError):   # replaced by a fresh one
             old = {}
         if not isinstance(old, dict) or not isinstance(old.get("papers"), dict):
             old = {"papers": {}}
@@ -129,16 +163,32 @@ def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
     print(f"wrote {combined}", file=sys.stderr)
 
 
+def _targets(outdir: Path, pids) -> None:
+    """Check, before any computation, that every file a report writes stays inside ``outdir``."""
+    for parts in (("verdicts.json",), ("figures",), ("figures", "formulas"),
+                  *((f"{pid}.{ext}",) for pid in pids for ext in ("md", "html"))):
+        inside(outdir, *parts)
+
+
+def _prune(outdir: Path, started: float) -> None:
+    for p in remove_orphans(outdir, older_than=started):
+        print(f"removed {p} (no report refers to it)", file=sys.stderr)
+
+
 def _report_file(args, outdir: Path, write: bool) -> None:
     """``subdiv report FILE.toml``: one paper file."""
+    started = time.time()
     path = Path(args.paper)
-    paper = load_file(path)
+    paper = load_file(path, args.allow_python)
     golden = golden_file(path)
     if args.update_golden and not os.access(golden.parent, os.W_OK):
         raise AnalysisError(f"cannot write the golden verdicts {golden}: {golden.parent} is not writable")
     only = _select(paper, args.claim)
     if only is not None and not only:
         raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
+    if write:
+        outdir = output_folder(outdir)
+        _targets(outdir, [paper.id])
     t0 = time.perf_counter()
     print(f"paper {paper.id} ({path}): {paper.title} ({len(only) if only is not None else len(paper.claims)} claims)",
           file=sys.stderr, flush=True)
@@ -151,12 +201,14 @@ def _report_file(args, outdir: Path, write: bool) -> None:
         _print(_table(results))
         if only is not None:
             _print_details(results)
+    _python_lines(results, path, args.json)
     if write:
         from ..report.render import render_paper
 
         for p in render_paper(paper, results, outdir, with_figures=not args.no_figures):
             print(f"wrote {p}", file=sys.stderr)
         _write_combined(outdir, data, merge=True)
+        _prune(outdir, started)
     if args.update_golden:
         atomic_write_text(golden, _dump(data))
         print(f"wrote {golden} (golden verdicts: review the diff)", file=sys.stderr)
@@ -171,18 +223,13 @@ def cmd_report(args) -> None:
     if args.claim and args.update_golden:
         raise AnalysisError("--update-golden needs every claim of the paper: drop --claim")
     write = args.claim is None or args.write
-    if args.output and not outdir.is_dir():
-        raise AnalysisError(f"output folder {outdir} does not exist")
-    if write and not args.output:
-        try:
-            outdir.mkdir(exist_ok=True)
-        except OSError as exc:
-            raise AnalysisError(f"cannot create the output folder {outdir}: {exc.strerror}") from None
-    if write and not os.access(outdir, os.W_OK | os.X_OK):
-        raise AnalysisError(f"cannot write to the output folder {outdir}: permission denied")
     if is_paper_file(args.paper):
         return _report_file(args, outdir, write)
+    started = time.time()
     selected = _papers_arg(args.paper)
+    if write:
+        outdir = output_folder(outdir)
+        _targets(outdir, [p.id for p in selected])
     if args.update_golden:
         for paper in selected:
             g = golden_path(paper)
@@ -212,6 +259,7 @@ def cmd_report(args) -> None:
             for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures):
                 print(f"wrote {p}", file=sys.stderr)
         _write_combined(outdir, verdicts_json(all_results), merge=args.paper != "all")
+        _prune(outdir, started)
     if args.update_golden:
         for pid, results in all_results.items():
             g = golden_path(get_paper(pid))
@@ -230,6 +278,9 @@ def _read_golden(path: Path) -> dict:
         golden = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
         raise AnalysisError(f"cannot read the golden file {path}: {str(exc).splitlines()[0]}") from None
+    except RecursionError:
+        raise AnalysisError(f"cannot read the golden file {path}: arrays or objects nested too deeply "
+                            "(regenerate it with `subdiv report ... --update-golden`)") from None
     if not isinstance(golden, dict) or not isinstance(golden.get("papers"), dict):
         raise AnalysisError(f"{path} is not a verdicts file (expected {{\"papers\": {{...}}}})")
     return golden
@@ -253,13 +304,13 @@ def cmd_check(args) -> None:
     files = [p for p in (args.paper or []) if is_paper_file(p)]
     if files and len(files) != len(args.paper):
         raise AnalysisError("check paper files and bundled papers separately")
-    loaded = {}
+    loaded, sources = {}, {}
     if files:
         for f in files:
-            paper = load_file(f)
+            paper = load_file(f, args.allow_python)
             if paper.id in loaded:
                 raise AnalysisError(f"two paper files define paper {paper.id}")
-            loaded[paper.id] = paper
+            loaded[paper.id], sources[paper.id] = paper, f
         if args.verdicts:
             golden, where = _read_golden(Path(args.verdicts)), args.verdicts
         else:
@@ -288,6 +339,8 @@ def cmd_check(args) -> None:
                                               if k in sel}} for pid in fresh_results}}
     diffs = compare_verdicts(golden, fresh, papers_=list(fresh_results))
     n = sum(len(v) for v in fresh_results.values())
+    for pid, evs in fresh_results.items():
+        _python_lines(evs, sources.get(pid), args.json)
     if args.json:
         _print(json.dumps({"golden": where, "claims": n, "agree": not diffs,
                            "differences": [str(d) for d in diffs], "verdicts": fresh}, indent=1, ensure_ascii=False))
@@ -304,6 +357,10 @@ def cmd_check(args) -> None:
     _print(f"subdiv check: {n} claims agree with {where} ({time.perf_counter() - t0:.1f} s)")
 
 
+ALLOW_PYTHON_HELP = ("run the `python` claims of a paper file (they import and run the Python code the file names: "
+                     "only for files you trust; the report then says so). Without it they are not run")
+
+
 def register(subparsers) -> None:
     """Add ``report`` and ``check`` to the ``subdiv`` command."""
     s = subparsers.add_parser("report", help="proof-check report of a paper (or all): verdicts, Markdown, HTML")
@@ -315,6 +372,7 @@ def register(subparsers) -> None:
                    help="also write each paper's golden verdicts (papers/<paper>/verdicts.json, or FILE.verdicts.json "
                         "beside a paper file) for review")
     s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
+    s.add_argument("--allow-python", action="store_true", help=ALLOW_PYTHON_HELP)
     s.add_argument("--quiet", action="store_true", help="no per-claim progress")
     s.add_argument("--json", action="store_true", help="print the verdicts as JSON")
     s.set_defaults(func=cmd_report)
@@ -324,6 +382,7 @@ def register(subparsers) -> None:
     c.add_argument("--verdicts", metavar="FILE",
                    help="golden file to compare with (default: each paper's papers/<paper>/verdicts.json)")
     c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")
+    c.add_argument("--allow-python", action="store_true", help=ALLOW_PYTHON_HELP)
     c.add_argument("--quiet", action="store_true")
     c.add_argument("--json", action="store_true", help="print the comparison (and the fresh verdicts) as JSON")
     c.set_defaults(func=cmd_check)

@@ -8,9 +8,20 @@ Formulas
 MathJax/KaTeX need network or bundled JavaScript, which the reports must not depend on. Each
 formula's LaTeX is rendered by **matplotlib mathtext to a small SVG** (no TeX installation, no
 JavaScript; every browser and Markdown viewer shows SVG offline), stored under
-``reports/figures/formulas/`` with a name derived from a hash of the formula (so re-rendering
-an unchanged report changes no file). The Unicode/plain-text form is always printed beside it
-(and is the image's ``alt`` text); when mathtext cannot parse a formula, only the text is shown.
+``reports/figures/formulas/`` with a name derived from a hash of the formula. Every run rewrites
+every file it refers to (atomically: a damaged or stale file is replaced; the output is
+deterministic, so re-rendering an unchanged report leaves the bytes unchanged), and the CLI then
+removes the figures no report refers to (:func:`analysis.report.files.remove_orphans`). The
+Unicode/plain-text form is always printed beside it (and is the image's ``alt`` text); when
+mathtext cannot parse a formula, only the text is shown.
+
+Files
+-----
+Every file is written inside the output folder (:func:`analysis.report.files.inside`): the paper id
+and the figure names must be slugs (:mod:`analysis.claims.names`), and a symbolic link leading out of
+the folder is refused. When evaluating the claims ran Python code from a paper file
+(``--allow-python``), the report says so at the top and at each such claim
+(:func:`analysis.claims.model.python_notice`).
 
 Examples
 --------
@@ -36,8 +47,9 @@ import os
 from pathlib import Path
 from typing import Mapping, Sequence
 
-from ..claims.model import Evaluated, Figure, Paper
-from .files import atomic_write_bytes, atomic_write_text
+from ..claims.model import Evaluated, Figure, Paper, python_notice
+from ..claims.names import MAX_GENERATED, check_slug
+from .files import atomic_write_bytes, atomic_write_text, inside
 
 __all__ = ["render_paper", "markdown", "html", "render_figure", "render_formula", "summary_table"]
 
@@ -55,31 +67,33 @@ def _mpl():
 
 
 def render_formula(latex: str, outdir: Path) -> str | None:
-    """Render ``$latex$`` with mathtext to ``outdir/f-<hash>.svg``; the file name, or None."""
+    """Render ``$latex$`` with mathtext to ``outdir/f-<hash>.svg`` (always rewritten, atomically); the
+    file name, or None when mathtext cannot parse the formula (a stale file of that name is removed)."""
     name = "f-" + hashlib.sha1(latex.encode()).hexdigest()[:12] + ".svg"
-    path = outdir / name
-    if path.exists():
-        return name
+    path = inside(outdir, name)
     plt = _mpl()
     fig = plt.figure(figsize=(0.01, 0.01))
     try:
         fig.text(0, 0, f"${latex}$", fontsize=12)
-        outdir.mkdir(parents=True, exist_ok=True)
         buf = io.BytesIO()
         fig.savefig(buf, format="svg", bbox_inches="tight", pad_inches=0.03, transparent=True,
                     metadata={"Date": None})
-        atomic_write_bytes(path, buf.getvalue())
     except Exception:  # noqa: BLE001 - mathtext cannot parse this formula: text only
-        if path.exists():
+        if path.is_file():
             path.unlink()
         return None
     finally:
         plt.close(fig)
+    outdir.mkdir(parents=True, exist_ok=True)
+    atomic_write_bytes(path, buf.getvalue())
     return name
 
 
 def render_figure(fig: Figure, outdir: Path) -> str:
-    """Draw a :class:`~analysis.claims.model.Figure` to ``outdir/<name>.png``; returns the file name."""
+    """Draw a :class:`~analysis.claims.model.Figure` to ``outdir/<name>.png`` (the name a slug; written
+    atomically); returns the file name."""
+    name = check_slug(fig.name, "figure name", '"blf-four-point"', MAX_GENERATED) + ".png"
+    path = inside(outdir, name)
     plt = _mpl()
     f, ax = plt.subplots(figsize=(7, 4.2), dpi=110)
     for lo, hi, label, colour in fig.bands:
@@ -98,12 +112,11 @@ def render_figure(fig: Figure, outdir: Path) -> str:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="best")
     outdir.mkdir(parents=True, exist_ok=True)
-    name = f"{fig.name}.png"
     f.tight_layout()
     buf = io.BytesIO()
     f.savefig(buf, format="png", metadata={"Software": None})
     plt.close(f)
-    atomic_write_bytes(outdir / name, buf.getvalue())
+    atomic_write_bytes(path, buf.getvalue())
     return name
 
 
@@ -137,7 +150,7 @@ def _formula_files(results, outdir: Path) -> dict[str, str | None]:
     for ev in results:
         for e in ev.verdict.evidence:
             if e.latex and e.latex not in out:
-                out[e.latex] = render_formula(e.latex, outdir / "formulas")
+                out[e.latex] = render_formula(e.latex, inside(outdir, "formulas"))
     return out
 
 
@@ -148,6 +161,10 @@ def markdown(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, s
     L = [f"# Proof-check report {paper.id}: {paper.title}", "",
          f"*Source:* {paper.citation}  ", f"*Text:* `{paper.source}`  ",
          "*Generated by* `subdiv report " + paper.id + "` — do not edit by hand.", ""]
+    notice = python_notice(results)
+    if notice:
+        L += [f"> **Warning: {notice[0].upper() + notice[1:]}.** The verdicts of those claims are what that code "
+              "returned, not computations of this tool.", ""]
     if paper.notes:
         L += [paper.notes, ""]
     L += ["Statuses: **CERTIFIED TRUE** (exact arithmetic or rigorous enclosures prove it), **REFUTED** "
@@ -169,6 +186,8 @@ def markdown(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, s
             L += [f"**As read:** {c.reading}", ""]
         if c.reading_note:
             L += [f"*Reading:* {c.reading_note}", ""]
+        if c.runs_python:
+            L += [f"*Ran Python code from the paper file:* evaluator `{c.runs_python}`.", ""]
         L += [f"**Verdict: {v.label}.** {v.summary}", ""]
         if v.corrected:
             L += [f"**Corrected statement:** {v.corrected}", ""]
@@ -212,7 +231,8 @@ table{border-collapse:collapse;margin:.5em 0;font-size:.9em}td,th{border:1px sol
 th{background:#f3f3f3}.badge{color:#fff;padding:1px 6px;border-radius:4px;font-weight:bold;white-space:nowrap}
 blockquote{border-left:4px solid #ccc;margin:0;padding:.3em 1em;color:#444;font-family:monospace;font-size:.85em;word-break:break-all}
 code{background:#f6f8fa;padding:1px 3px;font-size:.85em;word-break:break-all}.claim{border-top:2px solid #ddd;margin-top:1.5em}
-img.formula{vertical-align:middle;max-width:100%}img.fig{max-width:100%;border:1px solid #eee}"""
+img.formula{vertical-align:middle;max-width:100%}img.fig{max-width:100%;border:1px solid #eee}
+.warning{background:#fff8c5;border:1px solid #d4a72c;padding:.4em .8em}"""
 
 
 def _badge(status: str, label: str) -> str:
@@ -229,6 +249,10 @@ def html(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, str],
          f"<h1>Proof-check report {e_(paper.id)}: {e_(paper.title)}</h1>",
          f"<p><em>Source:</em> {e_(paper.citation)}<br><em>Text:</em> <code>{e_(paper.source)}</code><br>"
          f"<em>Generated by</em> <code>subdiv report {e_(paper.id)}</code> — do not edit by hand.</p>"]
+    notice = python_notice(results)
+    if notice:
+        H.append(f'<p class="warning" id="ran-python"><strong>Warning: {e_(notice[0].upper() + notice[1:])}.</strong> '
+                 "The verdicts of those claims are what that code returned, not computations of this tool.</p>")
     if paper.notes:
         H.append(f"<p>{e_(paper.notes)}</p>")
     H.append(f"<p><strong>{len(results)} claims:</strong> {e_(_counts(results))}.</p>")
@@ -247,6 +271,9 @@ def html(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, str],
             H.append(f"<p><strong>As read:</strong> {e_(c.reading)}</p>")
         if c.reading_note:
             H.append(f"<p><em>Reading:</em> {e_(c.reading_note)}</p>")
+        if c.runs_python:
+            H.append(f'<p class="warning"><em>Ran Python code from the paper file:</em> evaluator '
+                     f"<code>{e_(c.runs_python)}</code>.</p>")
         H.append(f"<p>{_badge(v.status, v.label)} {e_(v.summary)}</p>")
         for title, text in (("Corrected statement", v.corrected), ("Sharpness", v.sharpness),
                             ("What would settle it", v.settle)):
@@ -292,15 +319,17 @@ def html(paper: Paper, results: Sequence[Evaluated], figures: Mapping[str, str],
 
 def render_paper(paper: Paper, results: Sequence[Evaluated], outdir: str | os.PathLike,
                  *, with_figures: bool = True) -> list[Path]:
-    """Write ``<outdir>/<paper>.md``, ``<outdir>/<paper>.html`` and the figures; the paths."""
+    """Write ``<outdir>/<paper>.md``, ``<outdir>/<paper>.html`` and the figures (every file inside
+    ``outdir``, rewritten atomically); the paths."""
+    check_slug(paper.id, "paper id", '"900"')
     out = Path(outdir)
-    figdir = out / "figures"
     out.mkdir(parents=True, exist_ok=True)
+    figdir = inside(out, "figures")
     figures = {f.name: render_figure(f, figdir) for f in _all_figures(results)} if with_figures else {}
     formulas = _formula_files(results, figdir) if with_figures else {}
     written = []
     for ext, fn in (("md", markdown), ("html", html)):
-        p = out / f"{paper.id}.{ext}"
+        p = inside(out, f"{paper.id}.{ext}")
         atomic_write_text(p, fn(paper, results, figures, formulas))
         written.append(p)
     return written

@@ -169,5 +169,5 @@ def _v_regularity():
 
 #: the claims and metadata are data (issue 11): papers/seed000/paper.toml; S_2 and tau_d are identities
 #: (kind identity), the other claims `python` claims naming their evaluators above (imported by name)
-PAPER = load_paper(Path(__file__).with_name("paper.toml"))
+PAPER = load_paper(Path(__file__).with_name("paper.toml"), python="bundled")   # the tool's own evaluators
 PAPER_CLAIMS = list(PAPER.claims)

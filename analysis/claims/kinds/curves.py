@@ -49,6 +49,7 @@ from ...levels.reproduction import CURVES, _curve, curve_deviation, generation, 
 from ...result import AnalysisError
 from ..model import Figure, Number, Series, Verdict
 from ...algebra.reader import read_in_context
+from ..names import check_slug
 from .base import Kind, evidence, parse_number
 
 __all__ = ["CurveComparison"]
@@ -93,6 +94,13 @@ class CurveComparison(Kind):
         vary = self.get("vary", {})
         if not isinstance(vary, dict) or len(vary) > 1:
             raise AnalysisError(f"{self.where}: 'vary' is {{ name = [values] }} (one parameter)")
+        for key in ("figure", "draw"):          # the names become figure files, figures/<name>.png
+            t = self.get(key)
+            if t is None:
+                continue
+            if not isinstance(t, dict) or "name" not in t:
+                raise AnalysisError(f"{self.where}: '{key}' is a table {{ name = \"...\", ... }}")
+            check_slug(t["name"], f"{self.where}: {key} name", '"conics-003"')
         self.vary_name, vals = next(iter(vary.items()), (None, [None]))
         self.vary_values = [None if v is None else parse_number(v, f"{self.where}: vary") for v in vals]
         for c in comp:                               # bad values fail when the file is loaded
