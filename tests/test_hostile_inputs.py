@@ -173,3 +173,117 @@ def test_unknown_name_in_a_mask_is_an_error_naming_it(capsys):
 def test_marker_never_created():
     assert not MARK.exists()
     assert os.listdir(MARK_DIR) == []
+
+
+# ------------------------------------------------------------------------------------------------
+# paper files: every string field of every claim kind's example, replaced by hostile text
+# ------------------------------------------------------------------------------------------------
+
+_PAPER_BASE = '''[paper]
+id = "990"
+title = "hostile"
+citation = "none"
+
+[schemes.four-point]
+mask = ["-w", 0, "1/2+w", 1, "1/2+w", 0, "-w"]
+start = -3
+parameters = { w = "(0, 1/4)" }
+
+[schemes.exp-chaikin]
+level_symbol = "(1+z)*(1+2*v*z+z**2)/(2*(1+v)*z**2)"
+where = { v = "cosh(t/2**(n+1))" }
+parameters = { t = "(0, oo)" }
+'''
+
+#: Fields that are free text (printed, never read as a formula or a name).
+_FREE_TEXT = {"label", "source", "settle", "evaluator"}
+_LEVEL_KINDS = {"weighted series", "asymptotic equivalence", "exponential reproduction"}
+
+
+def _toml(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, str):
+        return json.dumps(v)
+    if isinstance(v, (int, float)):
+        return repr(v)
+    if isinstance(v, list):
+        return "[" + ", ".join(_toml(x) for x in v) + "]"
+    return "{ " + ", ".join(f"{json.dumps(k)} = {_toml(x)}" for k, x in v.items()) + " }"
+
+
+def _string_paths(v, pre=()):
+    if isinstance(v, str):
+        yield pre
+    elif isinstance(v, list):
+        for i, x in enumerate(v):
+            yield from _string_paths(x, pre + (i,))
+    elif isinstance(v, dict):
+        for k, x in v.items():
+            yield from _string_paths(x, pre + (k,))
+
+
+def _paper_cases():
+    import copy
+    import tomllib
+
+    from analysis.claims.kinds import KIND_CLASSES
+
+    out = []
+    values = [INJECTIONS[0], INJECTIONS[3], HUGE[0], HUGE[2], MALFORMED[0]]
+    n = 0
+    for name, cls in sorted(KIND_CLASSES.items()):
+        example = tomllib.loads(cls.example)
+        for path in _string_paths(example):
+            if path[-1] in _FREE_TEXT or (len(path) > 1 and path[-2] in _FREE_TEXT):
+                continue
+            fields = copy.deepcopy(example)
+            target = fields
+            for k in path[:-1]:
+                target = target[k]
+            target[path[-1]] = values[n % len(values)]
+            n += 1
+            scheme = fields.pop("scheme", None) if cls.uses_scheme else None
+            scheme = scheme or ("exp-chaikin" if name in _LEVEL_KINDS else "four-point")
+            body = "\n".join(f"{k} = {_toml(v)}" for k, v in fields.items())
+            text = (_PAPER_BASE + f'\n[[claims]]\nid = "c1"\nstatement = "s"\nkind = "{name}"\n'
+                    + (f'scheme = "{scheme}"\n' if cls.uses_scheme else "") + body + "\n")
+            out.append(pytest.param(text, id=f"{name}-{'.'.join(map(str, path))}"))
+    for field, value in [("mask", f'["{INJECTIONS[0]}", 1]'), ("mask", '["10**10**10", 1]'),
+                         ("symbol", json.dumps(INJECTIONS[2])), ("symbol", '"z**(10**9)"'),
+                         ("parameters", '{ w = "(0, __import__(\'os\'))" }')]:
+        text = (f'[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n[schemes.s]\n{field} = {value}\nstart = 0\n'
+                '[[claims]]\nid = "c1"\nstatement = "s"\nkind = "sum rules"\nfactors = 1\n')
+        if field == "parameters":
+            text = text.replace("start = 0", 'mask = ["w", "1-w"]\nstart = 0')
+        out.append(pytest.param(text, id=f"scheme-{field}-{value[:12]}"))
+    return out
+
+
+@pytest.mark.parametrize("text", _paper_cases())
+def test_hostile_paper_file_fields(capsys, tmp_path, text):
+    f = tmp_path / "p.toml"
+    f.write_text(text, encoding="utf-8")
+    argv = ["report", str(f), "--output", str(tmp_path / "out"), "--json"]
+    _assert_clean_error(argv, *_run(capsys, argv))
+    assert not (tmp_path / "out" / "990.md").exists()
+
+
+def test_no_text_reaches_sympy_in_the_source():
+    """The reader is the only place that turns text into expressions: no module of the engine,
+    the catalogue or the papers calls ``sympify``/``parse_expr``/``eval``/``exec`` (the results
+    contract converts its own values with ``sympify(..., strict=True)``, which refuses text)."""
+    import re
+
+    root = Path(__file__).resolve().parents[1]
+    bad = []
+    for pkg in ("analysis", "schemes", "papers"):
+        for f in (root / pkg).rglob("*.py"):
+            if f.name == "reader.py" and f.parent.name == "algebra":
+                continue
+            for i, line in enumerate(f.read_text(encoding="utf-8").splitlines(), 1):
+                code = line.split("#")[0]
+                if re.search(r"(?<![.\w])(parse_expr|eval|exec)\(|sympify\(|\bS\(\s*['\"]", code) and \
+                        not (f.name == "jsonable.py" and "strict=True" in code):
+                    bad.append(f"{f.relative_to(root)}:{i}: {line.strip()}")
+    assert not bad, "\n".join(bad)

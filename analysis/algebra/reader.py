@@ -243,8 +243,8 @@ class _Reader:
             if isinstance(v, complex):
                 self.fail("write complex numbers with I, e.g. 1 + 2*I")
             self.fail(f"{v!r} is not a number")
-        src = ast.get_source_segment(self.src, node) or repr(v)
-        src = src.strip()
+        # one line: the column offsets (UTF-8 bytes) cut the literal's own text out of the source
+        src = self.src_bytes[node.col_offset:node.end_col_offset].decode("utf-8", "replace").strip() or repr(v)
         if not _NUMBER.match(src):
             self.fail(f"the number {src!r} must be written in decimal, e.g. 16 or 0.25")
         digits = sum(ch.isdigit() for ch in src.split("e")[0].split("E")[0])
@@ -282,9 +282,19 @@ class _Reader:
 
     # ------------------------------------------------------------------ arithmetic
     def check(self, e: sp.Expr) -> sp.Expr:
+        """Size of a rational result; an atom that is not finite. Structural tests only: asking
+        sympy whether a large algebraic expression is infinite can take minutes."""
         if e.is_Rational and _bits(e) > self.limits.bits:
             self.limit("bits", "a number of", f"{_bits(e)} bits", f"{self.limits.bits} bits")
-        if e in (sp.zoo, sp.nan) or (e.is_infinite and not self.infinity):
+        if e.is_Atom and (e in (sp.zoo, sp.nan) or (e in (sp.oo, -sp.oo) and not self.infinity)):
+            self.fail("the value is not finite (a division by zero?)", "value")
+        return e
+
+    def check_finite(self, e: sp.Expr) -> sp.Expr:
+        """The whole result (and each function value): no ``zoo``/``nan`` (``log(0)``, ``tan(pi/2)``)
+        and no infinity inside an expression."""
+        bad = (sp.zoo, sp.nan) if self.infinity else (sp.zoo, sp.nan, sp.oo, -sp.oo)
+        if e.has(*bad) and not (self.infinity and e in (sp.oo, -sp.oo)):
             self.fail("the value is not finite (a division by zero?)", "value")
         return e
 
@@ -334,7 +344,7 @@ class _Reader:
         if len(node.args) != 2 or node.keywords:
             self.fail("write CRootOf(POLYNOMIAL, INDEX), e.g. CRootOf(x**3 - x - 1, 0)")
         inner = _Reader(self.text, {}, True, self.functions, self.what, False, self.limits, self.hint)
-        inner.src = self.src
+        inner.src, inner.src_bytes = self.src, self.src_bytes
         poly_expr = inner.build(node.args[0], depth + 1)
         index = self.build(node.args[1], depth + 1)
         syms = poly_expr.free_symbols
@@ -363,6 +373,7 @@ class _Reader:
         if "\n" in src or "\r" in src:
             self.fail("a formula is one line")
         self.src = src
+        self.src_bytes = src.encode("utf-8")
         run = max((len(m) for m in re.findall(r"\d+", src)), default=0)
         if run > self.limits.digits:
             self.limit("digits", "a number with", f"{run} digits", f"{self.limits.digits} digits")
@@ -374,7 +385,7 @@ class _Reader:
             self.limit("depth", "the nesting depth", "of the formula", self.limits.depth)
         except ValueError as exc:      # e.g. an integer literal over Python's digit limit
             self.fail(str(exc).split("\n")[0], "limit")
-        return self.build(tree.body)
+        return self.check_finite(self.build(tree.body))
 
     def syntax_hint(self, src: str, exc: SyntaxError) -> str:
         if src.startswith("[") or src.endswith("]"):
@@ -496,7 +507,7 @@ class _Reader:
                     self.fail(f"{name}(...) cannot take these arguments ({type(exc).__name__})", "value")
                 if not isinstance(r, sp.Expr):
                     r = sp.sympify(r, strict=True)
-                o.append(self.check(r))
+                o.append(self.check_finite(self.check(r)))
             stack.append(("apply", apply_call))
             for a in reversed(node.args):
                 stack.append(("visit", a, depth + 1))
