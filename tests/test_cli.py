@@ -81,7 +81,7 @@ def test_numeric_norm_json(capsys):
     (["symbol", "--even", "1"], "--even needs --odd"),
     (["refine", "--scheme", "chaikin", "--points", "0,0;1"], "same number of coordinates"),
     (["refine", "--scheme", "chaikin"], "exactly one of --points"),
-    (["frobnicate"], "invalid choice"),
+    (["frobnicate"], "unknown command 'frobnicate'"),
     (["symbol", "--mask", "inf,1"], "not a finite number"),
     (["refine", "--scheme", "chaikin", "--points", "0,0;1,0;1,1", "--output", "/nonexistent/x.csv"], "cannot write"),
     (["range", "--scheme", "four-point", "--C", "1", "--within=0,1/4", "--tol", "0"], "--tol must be between"),

@@ -85,7 +85,7 @@ TARGETS = [
     ["symbol", "--mask", "c,c", "--where", "c={}"],
     ["symbol", "--mask", "1,1", "--start", "{}"],
     ["factor", "--symbol", "{}"],
-    ["norm", "--scheme", "dfh-chaikin-perturbation", "--m", "3", "--L", "2", "--solve", "omega", "--within", "0,{}"],
+    ["norm", "--scheme", "dfh-chaikin-perturbation", "--m", "3", "--L", "2", "--solve", "omega", "--within", "{},1"],
     ["norm", "--mask", "1/2,1,1/2", "--m", "1", "--L", "{}"],
     ["refine", "--scheme", "chaikin", "--points", "0,0;{},1", "--steps", "1"],
     ["refine", "--scheme", "chaikin", "--points", "0,0;1,1", "--steps", "{}"],

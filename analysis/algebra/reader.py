@@ -271,8 +271,8 @@ class _Reader:
         if len(nm) > self.limits.name:
             self.limit("name", "a name of", f"{len(nm)} characters", f"{self.limits.name} characters")
         if nm in _RESERVED:
-            self.fail(f"{nm!r} is not a number" + (" (infinity is allowed only as an interval end)"
-                                                   if nm in ("oo", "inf", "infinity") else ""), "value")
+            self.fail(f"{nm!r} is not a finite number" + (" (infinity is allowed only as an interval end)"
+                                                          if nm in ("oo", "inf", "infinity") else ""), "value")
         free = self.free(nm) if callable(self.free) else self.free
         if not free:
             raise InputError(f"unknown name {nm!r} in {self.where()}: "
@@ -287,7 +287,7 @@ class _Reader:
         if e.is_Rational and _bits(e) > self.limits.bits:
             self.limit("bits", "a number of", f"{_bits(e)} bits", f"{self.limits.bits} bits")
         if e.is_Atom and (e in (sp.zoo, sp.nan) or (e in (sp.oo, -sp.oo) and not self.infinity)):
-            self.fail("the value is not finite (a division by zero?)", "value")
+            self.fail("the value is not a finite number (a division by zero?)", "value")
         return e
 
     def check_finite(self, e: sp.Expr) -> sp.Expr:
@@ -295,7 +295,7 @@ class _Reader:
         and no infinity inside an expression."""
         bad = (sp.zoo, sp.nan) if self.infinity else (sp.zoo, sp.nan, sp.oo, -sp.oo)
         if e.has(*bad) and not (self.infinity and e in (sp.oo, -sp.oo)):
-            self.fail("the value is not finite (a division by zero?)", "value")
+            self.fail("the value is not a finite number (a division by zero?)", "value")
         return e
 
     def power(self, base: sp.Expr, exp: sp.Expr) -> sp.Expr:
@@ -307,7 +307,7 @@ class _Reader:
                     self.limit("exponent", "the exponent", exp, self.limits.exponent)
             if base.is_Rational:
                 if base == 0 and exp < 0:
-                    self.fail("division by zero (0 to a negative power)", "value")
+                    self.fail("division by zero (0 to a negative power: not a finite number)", "value")
                 if exp.is_Integer and _bits(base) * abs(int(exp)) > self.limits.bits:
                     self.limit("bits", "a power of about", f"{_bits(base) * abs(int(exp))} bits",
                                f"{self.limits.bits} bits")
@@ -328,7 +328,7 @@ class _Reader:
             r = x * y
         elif op is ast.Div:
             if y == 0:
-                self.fail("division by zero", "value")
+                self.fail("division by zero (not a finite number)", "value")
             r = x / y
         else:
             return self.power(x, y)

@@ -238,6 +238,10 @@ def _stability_part(args, a, budget):
 def cmd_holder(args) -> None:
     from .holder_box import holder_box, refuse_box_options
 
+    if args.C is not None:                           # options are checked before any computation
+        j = _int_arg(args.C, "--C")
+        if not 0 <= j <= 30:
+            raise AnalysisError(f"--C must be between 0 and 30, not {j}")
     if getattr(args, "box", None):                   # C^k on a parameter box, level-dependent (issue 13)
         return holder_box(args)
     refuse_box_options(args)
