@@ -238,3 +238,56 @@ def test_ck_from_certified_enclosure(capsys):
     assert d["value"] is True and d["status"] == "certified"
     d = _json(capsys, ["holder", "--scheme", "d6", "--C", "2"])["smoothness"]
     assert d["value"] is False and d["status"] == "certified"
+
+
+# ------------------------------------------------------------------ tables as people copy them
+
+#: PyWavelets 1.x, ``pywt.Wavelet("db4").dec_lo`` as ``repr`` prints it (4 vanishing moments, our D8;
+#: normalised to sum sqrt(2), in reverse order): the doubles are within half an ulp of the true filter.
+PYWT_DB4 = ["-0.010597401785069032", "0.0328830116668852", "0.030841381835560764", "-0.18703481171909309",
+            "-0.027983769416859854", "0.6308807679298589", "0.7148465705529157", "0.2303778133088965"]
+
+
+def test_d8_from_a_42_digit_table_is_never_certified_wrong(capsys):
+    """At 42 digits the true D8 sits at 0.998 radii: the least-norm correction of order 4 leaves the
+    balls, the Chebyshev one does not. Before, N = 1 was taken and alpha in [0.99999, 1.0000]
+    was 'certified' -- the ceiling N of k - log2 rho, not the exponent of D8 (1.6179)."""
+    alpha = _json(capsys, ["holder", "--mask", ",".join(_d8_digits(42)), "--approx"])["alpha"]
+    lo, hi = _interval(alpha)
+    assert alpha["status"] == "certified" and alpha["witness"]["sum_rules"] == 4
+    assert lo < 1.6179263112 and hi > 1.6179263111 and float(hi - lo) < 1e-8
+    every = alpha["witness"]["every_convergent_mask"]            # what holds for every mask in the balls
+    assert every["status"] == "certified" and 0.9 < float(sp.Rational(every["lower"])) <= 1
+
+
+def test_the_ceiling_of_a_partial_factorisation_is_only_a_lower_bound():
+    """With fewer factors than the masks in the balls may have, k - log2 rho(c_k) = min(alpha, k+1):
+    reaching k + 1 = N gives alpha >= lower only (cubic B-spline, alpha = 3, read with N = 1)."""
+    from analysis.algebra.approx import ApproximateMask
+    from analysis.regularity import holder_exponent
+
+    m = ApproximateMask(["0.125", "0.5", "0.75", "0.5", "0.125"])
+    assert m.sum_rules == 4
+    m.sum_rules = 1
+    r = holder_exponent(m, budget_seconds=5)
+    assert r.upper is None and r.value is None and float(r.lower) <= 1 and r.witness["ceiling_reached"]
+    assert "lower" in r.provenance["message"] or ">=" in r.provenance["message"]
+
+
+def test_pywavelets_filter_as_pasted(capsys):
+    """Doubles with sum sqrt(2), pasted as printed: read as the mask times sqrt(2), 4 ulps each, and
+    the same alpha as the catalogue's D8; the same through numpy floats in Python."""
+    import numpy as np
+
+    from analysis.algebra.approx import ApproximateMask
+
+    alpha = _json(capsys, ["holder", "--mask", ",".join(PYWT_DB4), "--approx"])["alpha"]
+    ref = _interval(_json(capsys, ["holder", "--scheme", "d8"])["alpha"])
+    lo, hi = _interval(alpha)
+    assert alpha["status"] == "certified" and alpha["witness"]["normalisation"] == "sqrt(2)"
+    assert lo <= ref[1] and ref[0] <= hi
+    m = ApproximateMask(np.array([float(x) for x in PYWT_DB4]))
+    assert m.sum_rules == 4 and m.normalisation == "sqrt(2)"
+    # a radius given by the user
+    assert main(["holder", "--mask", ",".join(PYWT_DB4), "--approx", "--approx-radius", "1e-15", "--json"]) == 0
+    assert "radius 1/1000000000000000" in json.loads(capsys.readouterr().out)["alpha"]["provenance"]["message"]

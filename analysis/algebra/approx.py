@@ -36,14 +36,61 @@ from ..result import AnalysisError
 _DECIMAL = re.compile(r"^\s*[+-]?(\d*)\.(\d+)(?:[eE]([+-]?\d+))?\s*$|^\s*[+-]?(\d+)\.?()[eE]([+-]?\d+)\s*$")
 
 
+#: Radius of a coefficient that is a double (a Python/numpy float, or its shortest text such as
+#: ``0.7148465705529157``): this many units in its last place. Tables computed in double precision
+#: are correctly rounded at best (PyWavelets' ``db4`` is within half an ulp); a few ulps leave room
+#: for the rounding of the algorithm that produced them.
+FLOAT64_ULPS = 4
+
+
+def is_float64_text(text) -> bool:
+    """Is ``text`` the shortest decimal of a double with 15 or more significant digits (what Python,
+    numpy and most tools print for a float64), rather than a value typed to its digits?
+
+    >>> is_float64_text("0.7148465705529157"), is_float64_text("0.25"), is_float64_text("0.3258034280512983482745")
+    (True, False, False)
+    """
+    import math
+
+    if not isinstance(text, str) or not _DECIMAL.match(text):
+        return False
+    t = text.strip()
+    try:
+        x = float(t)
+    except ValueError:
+        return False
+    if not math.isfinite(x) or repr(x) != t.lstrip("+"):
+        return False
+    digits = len(t.lower().split("e")[0].replace("-", "").replace("+", "").replace(".", "").lstrip("0"))
+    return digits >= 15
+
+
+def float64_radius(x: float) -> Fraction:
+    """:data:`FLOAT64_ULPS` units in the last place of the double ``x``.
+
+    >>> float64_radius(0.5) == 4 * Fraction(2) ** -53
+    True
+    """
+    import math
+
+    return FLOAT64_ULPS * Fraction(math.ulp(float(x)))
+
+
 def typed_radius(text) -> Fraction:
-    """Half a unit in the last typed digit of a decimal literal; 0 for anything else (exact).
+    """Half a unit in the last typed digit of a decimal literal (a double's shortest text: a few
+    ulps, :func:`float64_radius`); 0 for anything else (exact).
 
     >>> typed_radius("0.125"), typed_radius("1.5e-3"), typed_radius("1/3"), typed_radius("2")
     (Fraction(1, 2000), Fraction(1, 20000), Fraction(0, 1), Fraction(0, 1))
+    >>> typed_radius("0.7148465705529157") == float64_radius(0.7148465705529157)
+    True
     """
+    if isinstance(text, float):
+        return float64_radius(text)
     if not isinstance(text, str):
         return Fraction(0)
+    if is_float64_text(text):
+        return float64_radius(float(text))
     m = _DECIMAL.match(text)
     if not m:
         return Fraction(0)
@@ -59,6 +106,9 @@ def _centres(mask: Sequence) -> list[Fraction]:
 
     out = []
     for c in mask:
+        if isinstance(c, float):
+            out.append(Fraction(c))                # the double's exact binary value
+            continue
         e = parse_coefficient(c)
         if not e.is_Rational:
             raise AnalysisError(f"--approx reads decimal tables: coefficient {sp.sstr(e)} is not a rational number")
@@ -101,6 +151,62 @@ def least_norm_correction(centre: Sequence[Fraction], radius: Sequence[Fraction]
     return [c + d for c, d in zip(centre, delta)]
 
 
+def chebyshev_correction(centre: Sequence[Fraction], radius: Sequence[Fraction], N: int):
+    """An exact rational mask ``a`` with ``a(1) = 2``, ``(1+z)^N | a`` and the smallest largest
+    deviation in radii ``max_k |a_k - c_k| / r_k`` we can find, with that deviation (exact); None
+    when no such mask exists with the exact coefficients fixed.
+
+    The least-norm correction (:func:`least_norm_correction`) minimises a sum of squares, so it can
+    leave a ball although a mask of the same order lies inside all of them (a table's true mask sits
+    at 0.99 radii): the largest deviation is what decides membership. Algorithm: the linear program
+    ``min t, M u = d, |u_k| <= t`` in the scaled unknowns ``u = (a - c)/r`` (rows scaled to unit
+    size, so double precision resolves deviations of 1e-40) is solved in floating point by HiGHS;
+    its solution is then projected **exactly** (rational least-norm step) onto ``M u = d``, and the
+    deviation is computed exactly: the float solve only proposes, the rationals decide.
+
+    >>> a, t = chebyshev_correction([Fraction(1, 4), Fraction(3, 4), Fraction(3, 4), Fraction(1, 4)],
+    ...                             [Fraction(1, 200)] * 4, 3)
+    >>> a, t
+    ([Fraction(1, 4), Fraction(3, 4), Fraction(3, 4), Fraction(1, 4)], Fraction(0, 1))
+    """
+    import numpy as np
+    from scipy.optimize import linprog
+
+    m = len(centre)
+    A, b = _constraints(m, N)
+    free = [k for k in range(m) if radius[k]]
+    if not free:
+        return None
+    M = [[row[k] * radius[k] for k in free] for row in A]
+    d = [bi - sum(x * c for x, c in zip(row, centre)) for row, bi in zip(A, b)]
+    scale = [max((abs(x) for x in row), default=Fraction(1)) or Fraction(1) for row in M]
+    Mf = np.array([[float(x / s) for x in row] for row, s in zip(M, scale)])
+    df = np.array([float(x / s) for x, s in zip(d, scale)])
+    n = len(free)
+    # variables (u_1..u_n, t): minimise t, M u = d, u - t <= 0, -u - t <= 0
+    cost = np.zeros(n + 1)
+    cost[-1] = 1.0
+    A_ub = np.vstack([np.hstack([np.eye(n), -np.ones((n, 1))]), np.hstack([-np.eye(n), -np.ones((n, 1))])])
+    res = linprog(cost, A_ub=A_ub, b_ub=np.zeros(2 * n), A_eq=np.hstack([Mf, np.zeros((len(M), 1))]), b_eq=df,
+                  bounds=[(None, None)] * n + [(0, None)], method="highs")
+    if res.status != 0:
+        return None
+    u = [Fraction(float(x)) for x in res.x[:n]]
+    # exact projection onto M u = d: u += M^T (M M^T)^-1 (d - M u)
+    resid = [di - sum(x * y for x, y in zip(row, u)) for row, di in zip(M, d)]
+    G = [[sum(x * y for x, y in zip(ri, rj)) for rj in M] for ri in M]
+    y = _solve(G, resid)
+    if y is None:
+        return None
+    u = [uk + sum(M[i][k] * y[i] for i in range(len(M))) for k, uk in enumerate(u)]
+    a = list(centre)
+    for k, uk in zip(free, u):
+        a[k] = centre[k] + radius[k] * uk
+    if sum(a) != 2 or any(sum((-1) ** k * k ** j * x for k, x in enumerate(a)) != 0 for j in range(N)):
+        return None                                                      # pragma: no cover
+    return a, max(abs(uk) for uk in u)
+
+
 class ApproximateMask:
     """A typed decimal mask under the approximate reading (module docstring): each decimal a
     ball of half a unit in its last digit, ``sum_rules`` (N) the largest order for which an exact
@@ -118,28 +224,50 @@ class ApproximateMask:
 
     slug = "mask (approximate reading)"
 
-    def __init__(self, mask: Sequence, start: int = 0):
+    def __init__(self, mask: Sequence, start: int = 0, *, radius=None):
+        try:
+            import numpy as np
+
+            if isinstance(mask, np.ndarray):
+                mask = [float(x) if np.issubdtype(mask.dtype, np.floating) else int(x) for x in mask.ravel()]
+        except ImportError:  # pragma: no cover
+            pass
         if isinstance(mask, (str, bytes)) or len(mask) == 0:
             raise AnalysisError("a mask is a non-empty list of coefficients")
-        self.typed = list(mask)
+        self.typed = [float(x) if type(x).__module__ == "numpy" and isinstance(x, float) else x for x in mask]
         self.start = int(start)
-        self.centre = _centres(mask)
-        self.radius = [typed_radius(c) for c in mask]
+        self.centre = _centres(self.typed)
+        if radius is None:
+            self.radius = [typed_radius(c) for c in self.typed]
+            self.radius_rule = "typed"
+        else:
+            r = _centres([radius])[0] if not isinstance(radius, Fraction) else radius
+            if not r > 0:
+                raise AnalysisError(f"the radius must be a positive number, not {radius!r}")
+            self.radius = [r if typed_radius(c) or isinstance(c, float) else Fraction(0) for c in self.typed]
+            self.radius_rule = f"given: {r}"
         if not any(self.radius):
             raise AnalysisError("--approx: no coefficient is a decimal with a last digit to be read "
                                 "approximately (integers, fractions and formulas are exact)")
+        self.normalisation = _sqrt2_normalised(self.centre, self.radius)
+        if self.normalisation is not None:                 # a table with sum sqrt(2): times sqrt(2)
+            self.centre, self.radius = self.normalisation
+            self.normalisation = "sqrt(2)"
         best, why_not = None, None
         for N in range(1, len(self.centre)):
             a = least_norm_correction(self.centre, self.radius, N)
-            if a is None:
-                why_not = f"order {N}: the exact coefficients cannot satisfy it"
-                break
-            dev = [abs(x - c) for x, c in zip(a, self.centre)]
-            if any(d > r for d, r in zip(dev, self.radius)):
-                worst = max(float(d / r) for d, r in zip(dev, self.radius) if r)
-                why_not = (f"order {N}: the least-norm exact correction leaves the balls ({worst:.3g} radii); "
-                           "a mask of that order in the balls is not excluded")
-                break
+            dev = None if a is None else [abs(x - c) for x, c in zip(a, self.centre)]
+            if dev is None or any(d > r for d, r in zip(dev, self.radius)):
+                cheb = chebyshev_correction(self.centre, self.radius, N)
+                if cheb is not None and cheb[1] <= 1:
+                    a = cheb[0]
+                    dev = [abs(x - c) for x, c in zip(a, self.centre)]
+                else:
+                    why_not = (f"order {N}: the exact coefficients cannot satisfy it" if a is None and cheb is None
+                               else f"order {N}: no exact mask of that order found in the balls"
+                                    + (f" (the nearest found deviates {float(cheb[1]):.3g} radii)" if cheb else "")
+                                    + "; one is not excluded")
+                    break
             best = (N, a, dev)
         if best is None:
             raise AnalysisError("--approx: the balls of the typed digits contain no mask with a(1) = 2 and "
@@ -168,9 +296,16 @@ class ApproximateMask:
         """One sentence: what the balls are and the witness that they contain a convergent mask."""
         maxdev = max(self.deviation)
         in_radii = max((d / r for d, r in zip(self.deviation, self.radius) if r), default=Fraction(0))
-        digits = sorted({_digits(x) for x in self.typed if typed_radius(x)})
-        return (f"approximate reading: each decimal a ball of half a unit in its last digit "
-                f"({'/'.join(map(str, digits))} digits); the result holds for every mask in the balls with "
+        if self.radius_rule != "typed":
+            how = f"each decimal a ball of radius {self.radius_rule.removeprefix('given: ')} (--approx-radius)"
+        elif any(isinstance(x, float) or is_float64_text(x) for x in self.typed):
+            how = f"each double a ball of {FLOAT64_ULPS} units in its last place"
+        else:
+            digits = sorted({_digits(x) for x in self.typed if typed_radius(x)})
+            how = f"each decimal a ball of half a unit in its last digit ({'/'.join(map(str, digits))} digits)"
+        if self.normalisation:
+            how += "; the coefficients sum to sqrt(2) (a wavelet filter): read as the mask times sqrt(2)"
+        return (f"approximate reading: {how}; the result holds for every mask in the balls with "
                 f"a(1) = 2 and (1+z)^{self.sum_rules} | a; the balls contain one (an exact rational mask, "
                 f"max deviation {float(maxdev):.3g} = {float(in_radii):.3g} radii); "
                 + (self.next_order or f"N = {self.sum_rules} is the largest order"))
@@ -180,12 +315,28 @@ class ApproximateMask:
         the balls, its deviation (absolute and in radii), the radii, why N + 1 was not taken."""
         maxdev = max(self.deviation)
         in_radii = max((d / r for d, r in zip(self.deviation, self.radius) if r), default=Fraction(0))
-        return {"reading": "approximate", "sum_rules": self.sum_rules,
+        return {"reading": "approximate", "sum_rules": self.sum_rules, "normalisation": self.normalisation,
                 "witness_mask": [sp.Rational(x.numerator, x.denominator) for x in self.witness_mask],
                 "max_deviation": sp.Rational(maxdev.numerator, maxdev.denominator),
                 "max_deviation_in_radii": sp.Rational(in_radii.numerator, in_radii.denominator),
                 "radii": [sp.Rational(r.numerator, r.denominator) for r in self.radius],
                 "next_order": self.next_order}
+
+
+def _sqrt2_normalised(centre: list[Fraction], radius: list[Fraction]):
+    """``(centre, radius)`` of the mask times sqrt(2) when the typed coefficients sum to sqrt(2)
+    within their radii (wavelet tables, PyWavelets' ``dec_lo``: filters normalised to sum
+    sqrt(2)), else None. The product is enclosed rigorously: ``q`` a rational within ``eps`` of
+    sqrt(2), centre ``q c``, radius ``q r + (|c| + r) eps``."""
+    import math
+
+    total, slack = sum(centre), sum(radius)
+    s2 = Fraction(math.sqrt(2))
+    if abs(total - 2) <= slack or abs(total - s2) > slack + Fraction(1, 10 ** 15):
+        return None
+    num, ok = sp.integer_nthroot(2 * 10 ** 120, 2)
+    q, eps = Fraction(int(num), 10 ** 60), Fraction(1, 10 ** 59)          # |sqrt(2) - q| < eps
+    return [q * c for c in centre], [q * r + (abs(c) + r) * eps for c, r in zip(centre, radius)]
 
 
 def _digits(text: str) -> int:
@@ -216,5 +367,6 @@ def sum_rule_hint(mask: Sequence) -> str | None:
                               ("1", 1.0, "multiply every coefficient by 2")):
         if abs(float(s1) - target) <= float(res) + 1e-15 and abs(sm1) <= res * 2:
             return (f"the coefficients sum to {float(s1):.6g} ~ {name}, not 2 (our masks have a(1) = 2): "
-                    f"{fix}" + (", or type them with more digits and use --approx" if name == "sqrt(2)" else ""))
+                    f"{fix}" + (", or use --approx, which reads a filter with sum sqrt(2) as the mask times sqrt(2)"
+                                if name == "sqrt(2)" else ""))
     return None

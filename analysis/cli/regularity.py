@@ -11,6 +11,8 @@ Examples
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 import sympy as sp
 
 from . import mary as _mary
@@ -86,6 +88,8 @@ def _alpha_part(args, a, budget):
     lines = []
     if h.value is not None:
         lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
+    elif h.upper is None and h.lower is not None:
+        lines.append(f"Hölder exponent alpha >= {_fmt(h.lower, 'lower')}   [{h.status}: a lower bound, not the value]")
     else:
         lines.append(f"Hölder exponent alpha in [{_fmt(h.lower, 'lower')}, {_fmt(h.upper, 'upper')}]   [{h.status}]")
     w = h.witness
@@ -95,6 +99,9 @@ def _alpha_part(args, a, budget):
                      + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
     if "message" in h.provenance:
         lines.append(f"  {h.provenance['message']}")
+    if (every := w.get("every_convergent_mask")) is not None:
+        lines.append(f"  every convergent mask in the balls (a(1) = 2, (1+z) | a): alpha >= "
+                     f"{_fmt(every['lower'], 'lower')}   [{every['status']}: a lower bound]")
     data = h.to_json()
     data["convergent"] = True
     return lines, data
@@ -152,8 +159,16 @@ def _alternative_reading(args):
     if getattr(args, "approx", False):
         from ..algebra.approx import ApproximateMask
 
-        return (ApproximateMask(mask, start), "mask (approximate reading)",
-                "scheme: mask   (approximate reading: each decimal a ball of half a unit in its last digit)")
+        radius = None
+        if getattr(args, "approx_radius", None) is not None:
+            from .common import read_number
+
+            radius = read_number(args.approx_radius, "--approx-radius")
+            if not (radius.is_Rational and radius > 0):
+                raise AnalysisError(f"--approx-radius must be a positive rational number, e.g. 1e-12, not {args.approx_radius}")
+            radius = Fraction(int(radius.p), int(radius.q))
+        m = ApproximateMask(mask, start, radius=radius)
+        return (m, "mask (approximate reading)", "scheme: mask   (" + m.description().split(";")[0] + ")")
     from ..algebra.closed_form import ClosedFormMask, needs_ball_route
 
     if needs_ball_route(mask):
@@ -393,7 +408,11 @@ def register(sub) -> None:
     s.add_argument("--budget", default="20", help="seconds for the joint spectral radius (default 20)")
     s.add_argument("--approx", action="store_true",
                    help="approximate reading of a decimal --mask: each coefficient a ball of half a unit in its "
-                        "last digit, sum rules imposed inside the balls (alpha certified for every such mask)")
+                        "last digit (a double's 17 digits: 4 ulps), sum rules imposed inside the balls (alpha "
+                        "certified for every such mask); a filter with sum sqrt(2) is read as the mask times sqrt(2)")
+    s.add_argument("--approx-radius", metavar="R",
+                   help="with --approx: the radius of every decimal coefficient's ball (e.g. 1e-12), instead of "
+                        "the one its digits imply")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
                    help="level-dependent scheme: C^k at every point of a closed parameter box (repeatable: two "
                         "parameters)")

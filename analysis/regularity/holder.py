@@ -121,12 +121,35 @@ def _closed_form_route(m, *, prec: int | None = None, **kw) -> Result:
 
 def _approximate_route(m, **kw) -> Result:
     """A decimal table under the approximate reading: alpha for every mask in the balls with
-    ``a(1) = 2`` and ``(1+z)^N | a`` (``N`` proven attainable by an exact witness mask)."""
+    ``a(1) = 2`` and ``(1+z)^N | a`` (``N`` the highest order of an exact witness mask found in
+    the balls), and a lower bound for every convergent mask in them.
+
+    ``k - log2 rho(c_k)`` is ``min(alpha, k + 1)``: the factors ``(1+z)`` that ``c_k`` keeps give its
+    transition matrices the eigenvalue 1/2. So the enclosure is the exponent of every mask of the
+    set only when its upper end is below ``N``; when it reaches ``N`` (the balls may hold masks with
+    more factors than the witness has), only ``alpha >= lower`` is certified and said so. Masks in
+    the balls with fewer factors are convergent too (one factor suffices): for all of them only the
+    one-factor bound ``alpha >= -log2 rho(c_0)`` holds, reported in ``witness["every_convergent_mask"]``.
+    """
     N = m.sum_rules
     prec = 128 + 4 * N
     h = ball_route(m.enclosure(prec), sum_rules=N, prec=prec, **kw)
-    return Result(value=None, lower=h.lower, upper=h.upper, status=h.status, witness={**h.witness, **m.witness()},
-                  provenance={**h.provenance, "message": m.description()})
+    lower, upper, message = h.lower, h.upper, m.description()
+    ceiling = upper is not None and upper >= N
+    if ceiling:
+        upper = None
+        message += (f"; alpha of these masks is >= {float(lower):.10g} only: {N} - log2 rho reaches its ceiling {N} "
+                    f"(a mask with more than {N} factors (1+z) in the balls is not excluded)")
+    witness = {**h.witness, **m.witness(), "ceiling_reached": ceiling}
+    if N > 1:
+        # a bound, not a value (its ceiling is 1): a small budget; the polytope would chase the
+        # many products tied at 1/2
+        one = ball_route(m.enclosure(132), sum_rules=1, prec=132, **{**kw, "budget_seconds": 2.0, "max_length": 8})
+        witness["every_convergent_mask"] = {"sum_rules": 1, "lower": one.lower, "status": CERTIFIED,
+                                            "statement": "alpha >= lower (a rigorous bound; one factor caps it at 1)",
+                                            "valid_for": "every mask in the balls with a(1) = 2 and (1+z) | a"}
+    return Result(value=None, lower=lower, upper=upper, status=h.status, witness=witness,
+                  provenance={**h.provenance, "message": message})
 
 
 def _exact_route(a: LaurentSymbol, *, budget_seconds: float = 20.0, max_length: int = 12,
