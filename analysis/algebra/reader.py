@@ -16,7 +16,7 @@ Grammar
 * the names the context allows (``z``, the level ``n``, ``h``, declared parameters, ``--where``
   names) and, where free parameters are expected, any other plain name (``omega``, ``w``, ``t1``);
 * the constants ``pi``, ``E``, ``I`` (and ``oo`` where an interval end may be infinite);
-* the functions of :data:`FUNCTIONS` (``sqrt``, ``cos``, ``sinh``, ``log``, ``Abs``, ...;
+* the functions of :data:`FUNCTIONS` (``sqrt``, ``cos``, ``sinh``, ``log``, ``log2``, ``Abs``, ...;
   ``diff(EXPR, NAME)`` and ``subs(EXPR, NAME, VALUE, ...)``) and the ones a context adds (e.g.
   ``a(k)``, a mask coefficient, in a paper's lemma); ``CRootOf(POLYNOMIAL, k)``, the form in which a
   computer algebra system prints a root of a rational polynomial.
@@ -130,6 +130,17 @@ def _log(x, base=None):
     return sp.log(x) if base is None else sp.log(x, base)
 
 
+def _log2(x):
+    """``log2(x) = log(x)/log(2)``, exact (the form papers write Hölder exponents in).
+
+    >>> read_expression("2 - log2(1 + sqrt(3))")
+    -log(1 + sqrt(3))/log(2) + 2
+    >>> read_expression("log2(8)")
+    3
+    """
+    return sp.log(x, 2)
+
+
 def _diff(expr, var):
     if not isinstance(var, sp.Symbol):
         raise InputError("diff(EXPR, NAME): the second argument must be a name, e.g. diff(sin(t)/t, t)", "value")
@@ -146,7 +157,7 @@ def _subs(expr, *pairs):
 #: Named functions every formula may use: name -> (function, allowed numbers of arguments).
 FUNCTIONS: dict[str, tuple[Callable, tuple[int, ...]]] = {
     "sqrt": (_sqrt, (1,)), "cbrt": (sp.cbrt, (1,)), "root": (sp.root, (2,)),
-    "exp": (sp.exp, (1,)), "log": (_log, (1, 2)), "ln": (sp.log, (1,)),
+    "exp": (sp.exp, (1,)), "log": (_log, (1, 2)), "log2": (_log2, (1,)), "ln": (sp.log, (1,)),
     "sin": (sp.sin, (1,)), "cos": (sp.cos, (1,)), "tan": (sp.tan, (1,)), "cot": (sp.cot, (1,)),
     "sec": (sp.sec, (1,)), "csc": (sp.csc, (1,)),
     "sinh": (sp.sinh, (1,)), "cosh": (sp.cosh, (1,)), "tanh": (sp.tanh, (1,)), "coth": (sp.coth, (1,)),
