@@ -219,6 +219,24 @@ def _emit(args, data: dict, text: str) -> None:
         _print(text)
 
 
+#: the largest work budget an option takes
+MAX_WORK = 10 ** 9
+#: what a work unit is, for --help texts
+WORK_HELP = "counted, not timed: about a millisecond each on the reference machine"
+
+
+def work_arg(text, option: str, *, minimum: int = 1) -> int:
+    """A work-budget option (``--budget``, ``--strip-budget``): a number of work units such as ``20000``
+    or ``2e4``. Work is counted, never timed, so the same input gives the same verdict on every machine."""
+    try:
+        v = float(str(text).strip().replace("_", ""))
+    except ValueError:
+        raise AnalysisError(f"{option} must be a number of work units, not {text!r}") from None
+    if not minimum <= v <= MAX_WORK:
+        raise AnalysisError(f"{option} must be between {minimum} and {MAX_WORK} work units")
+    return int(v)
+
+
 def _parse_Ls(text: str) -> list[int]:
     Ls = [_int_arg(t, "--L") for t in _split_list(text, "--L")]
     if any(L < 1 or L > 24 for L in Ls):
