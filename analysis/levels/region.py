@@ -71,8 +71,8 @@ def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max:
 
     Exact: the Dyn–Levin norm test ``||(1/2 S_{a_{m+1}})^L||_inf < 1`` holds on an exact sublevel
     set containing ``(lo, hi)`` for some ``L <= L_max``; failing that, on pieces with their own L
-    (:func:`analysis.regularity.interior.ck_interior`, L <= 12); otherwise inconclusive with the
-    exact strips that remain.
+    (:func:`analysis.regularity.interior.ck_interior`, L <= 12, with ``budget`` work units: counted,
+    never timed); otherwise inconclusive with the exact strips that remain.
 
     >>> w = sp.Symbol("omega")
     >>> a = LaurentSymbol.from_mask([-5*w, -7*w, sp.Rational(1,4)+3*w, sp.Rational(3,4)+9*w,

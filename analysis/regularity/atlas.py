@@ -66,7 +66,6 @@ SciPy 2015 (the ``distributed`` scheduler).
 from __future__ import annotations
 
 import functools
-import math
 import os
 import sys
 import time

@@ -114,6 +114,10 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     (open) or certified (closed) ends, is covered by exact parametric norm tests
     (:func:`analysis.regularity.interior.ck_interior`, L <= ``interior_L_max``): ``run["interior"]``
     gives the certified part and the strips left (next to ends of eigenvalue type).
+
+    Budgets are work units, counted, never timed (about a millisecond each on the reference machine):
+    ``budget`` per certified verdict (:func:`~analysis.regularity.holder.smoothness`), ``strip_budget``
+    for closing the strips (:func:`~analysis.regularity.strips.close_strip`).
     """
     p = _single_parameter(a, param)
     lo, hi = (sp.Rational(sp.nsimplify(w)) for w in within)
