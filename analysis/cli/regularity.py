@@ -407,7 +407,7 @@ def register(sub) -> None:
     s.add_argument("--strip-budget", default="30000", metavar="UNITS",
                    help="work budget for closing the strips next to ends of eigenvalue type by the parametric "
                         "invariant polytope, in work units (default 30000; the 6-point family's C^1 set needs "
-                        "about 300000)")
+                        "about 800000)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.add_argument("--maximize", choices=("holder",), help="also the smoothest member on --within (certified gap)")
