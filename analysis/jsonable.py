@@ -70,6 +70,40 @@ def _own_value(x: Any):
     return sp.sympify(x, strict=True)
 
 
+def hoist_timing(doc: Any, seconds: float | None = None) -> Any:
+    """A JSON-ready document with every ``"timing"`` entry (wall-clock times, which differ from run
+    to run) moved to one top-level ``"timing"`` key, keyed by where it was (a dotted path, ``[i]``
+    for list items), so that two runs of a command can be compared by dropping that one key.
+    ``seconds`` (the whole command's) is added as ``timing["seconds"]``. A document without any
+    timing and without ``seconds`` is returned unchanged.
+
+    >>> hoist_timing({"alpha": {"provenance": {"method": "m", "timing": {"seconds": 0.5}}}})
+    {'alpha': {'provenance': {'method': 'm'}}, 'timing': {'alpha.provenance': {'seconds': 0.5}}}
+    """
+    found: dict = {}
+
+    def walk(x: Any, path: str) -> Any:
+        if isinstance(x, dict):
+            out = {}
+            for k, v in x.items():
+                if k == "timing":
+                    found[path or "."] = v
+                else:
+                    out[k] = walk(v, f"{path}.{k}" if path else str(k))
+            return out
+        if isinstance(x, list):
+            return [walk(v, f"{path}[{i}]") for i, v in enumerate(x)]
+        return x
+
+    body = walk(doc, "")
+    if not isinstance(body, dict) or (not found and seconds is None):
+        return doc
+    timing: dict = {} if seconds is None else {"seconds": round(seconds, 3)}
+    timing.update(found)
+    body["timing"] = timing
+    return body
+
+
 def exact_and_float(x: Any) -> dict:
     """``{"exact": "...", "float": 0.123}`` for a real exact number ``x``."""
     x = _own_value(x)

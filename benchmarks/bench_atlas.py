@@ -29,7 +29,7 @@ def main() -> None:
     ap.add_argument("--n", type=int, default=20, help="grid points per axis (default 20)")
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--refine", type=int, default=0, help="refinement levels (default 0: plain grid)")
-    ap.add_argument("--budget", type=float, default=2.0, help="JSR budget per point, seconds")
+    ap.add_argument("--budget", type=int, default=2000, help="JSR work budget per point, work units")
     ap.add_argument("--executor", default="local")
     ap.add_argument("--figure")
     ap.add_argument("--json")
@@ -48,14 +48,15 @@ def main() -> None:
     t0 = time.perf_counter()
     r = holder_atlas(a, "mu", ("-1/5", "1/5"), "nu", (0, 2), n1=args.n, n2=args.n, j_levels=(1, 2, 3),
                      refine_levels=args.refine, executor=args.executor, workers=args.workers,
-                     budget_seconds=args.budget, progress=True)
+                     budget=args.budget, progress=True)
     wall = time.perf_counter() - t0
     c = r.witness["counts"]
-    secs = sorted(s["seconds"] for s in r.value)
+    timing = r.provenance["timing"]
+    secs = sorted(timing["samples"])
     print(f"seed004-design-control, omega = 0, mu in [-1/5, 1/5] x nu in [0, 2], {args.n} x {args.n}, "
-          f"refine {args.refine}, budget {args.budget} s, {r.witness['executor']}"
+          f"refine {args.refine}, budget {args.budget} work units, {r.witness['executor']}"
           + ("  [exact_rho_expression stubbed]" if args.without_exact_rho else ""))
-    print(f"  wall {wall:.1f} s   summed per-point {r.witness['task_seconds']:.1f} s   "
+    print(f"  wall {wall:.1f} s   summed per-point {timing['task_seconds']:.1f} s   "
           f"{c['samples'] / wall:.2f} points/s   samples {c['samples']} (per level {c['per_level']})")
     print(f"  certified {c['certified']}   inconclusive {c['inconclusive']}   "
           f"exceptional samples {r.witness['exceptional_samples']}")

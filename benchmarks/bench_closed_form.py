@@ -73,7 +73,7 @@ def main_bench(orders=(2, 3, 4, 5, 6)) -> None:
     for N in orders:
         mask = daubechies_closed_form(N)
         t = time.perf_counter()
-        rc, data = _run(["holder", "--mask", ",".join(mask), "--start", "0", "--budget", "20"])
+        rc, data = _run(["holder", "--mask", ",".join(mask), "--start", "0", "--budget", "20000"])
         dt = time.perf_counter() - t
         _, ref = _run(["holder", "--scheme", f"d{2 * N}"])
         if rc != 0:

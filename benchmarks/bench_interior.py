@@ -31,7 +31,7 @@ def _interior(a, j, lo, hi):
 
 def _maximize(a, box, arity, gap):
     def run():
-        r = maximize_holder_box(a, box, arity=arity, gap=gap, budget_seconds=120)
+        r = maximize_holder_box(a, box, arity=arity, gap=gap, budget=120_000)
         pt = ", ".join(f"{k} = {v}" for k, v in r.value.items())
         return (f"{r.status}: {pt}, alpha >= {float(r.lower):.6f}, <= {float(r.upper):.6f} on the box, "
                 f"gap {float(r.witness['gap']):.2e}")

@@ -13,8 +13,8 @@
    <= 1e-6 or the time cap; the speed-up is textbook time / certified time (a lower bound ">"
    when the textbook method did not reach the gap).
 
-Run:  python benchmarks/bench_regularity.py [--daub-budget S] [--cap S] [--max-daub N] [--quick]
-      python benchmarks/bench_regularity.py --only-daub --min-daub 10 --max-daub 20 --daub-budget 150
+Run:  python benchmarks/bench_regularity.py [--daub-budget UNITS] [--cap S] [--max-daub N] [--quick]
+      python benchmarks/bench_regularity.py --only-daub --min-daub 10 --max-daub 20 --daub-budget 150000
 """
 
 from __future__ import annotations
@@ -90,7 +90,7 @@ def textbook_alpha_gap(k: int, norm_upper, floats: list[np.ndarray], cap: float,
 
 def catalogue_row(label, a, cap):
     t = time.perf_counter()
-    h = holder_exponent(a, budget_seconds=60, rel_gap=5e-7, max_length=16)
+    h = holder_exponent(a, budget=60_000, rel_gap=5e-7, max_length=16)
     dt = time.perf_counter() - t
     k, c = difference_mask(a)
     T = transition_matrices(c, numeric=True)
@@ -106,7 +106,7 @@ def catalogue_row(label, a, cap):
 def daubechies_row(N, budget, cap):
     e = schemes.get(f"daubechies-{2 * N}")
     t = time.perf_counter()
-    h = holder_exponent(e, budget_seconds=budget, rel_gap=5e-7)
+    h = holder_exponent(e, budget=budget, rel_gap=5e-7)
     dt = time.perf_counter() - t
     import flint
     with flint.ctx.workprec(256):
@@ -132,7 +132,7 @@ def fmt_tb(tb, dt):
 
 def main() -> None:
     ap = argparse.ArgumentParser()
-    ap.add_argument("--daub-budget", type=float, default=120.0)
+    ap.add_argument("--daub-budget", type=int, default=120_000, help="work units of holder_exponent")
     ap.add_argument("--cap", type=float, default=20.0, help="time cap of the textbook method")
     ap.add_argument("--max-daub", type=int, default=20, help="largest N (D2N)")
     ap.add_argument("--min-daub", type=int, default=2, help="smallest N (D2N)")

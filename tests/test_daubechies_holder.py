@@ -27,9 +27,9 @@ DATA = Path(__file__).parent / "data" / "daubechies_holder.csv"
 PUBLISHED = {row["slug"]: row for row in csv.DictReader(DATA.open())}
 
 
-def _certified(slug: str, budget: float = 30.0):
+def _certified(slug: str, budget: int = 30_000):
     t = time.perf_counter()
-    r = holder_exponent(schemes.get(slug), budget_seconds=budget, rel_gap=1e-8)
+    r = holder_exponent(schemes.get(slug), budget=budget, rel_gap=1e-8)
     return r, time.perf_counter() - t
 
 
@@ -77,8 +77,8 @@ def test_intervals_agree_across_precisions_and_tighten():
     fine = holder_exponent(e, prec=200)
     assert coarse.lower <= fine.upper and fine.lower <= coarse.upper
     assert float(coarse.upper - coarse.lower) >= float(fine.upper - fine.lower)
-    loose = holder_exponent(e, rel_gap=1e-2, budget_seconds=5)
-    tight = holder_exponent(e, rel_gap=1e-10, budget_seconds=30)
+    loose = holder_exponent(e, rel_gap=1e-2, budget=5000)
+    tight = holder_exponent(e, rel_gap=1e-10, budget=30000)
     assert loose.lower <= tight.lower <= tight.upper <= loose.upper or (
         float(tight.upper - tight.lower) <= float(loose.upper - loose.lower))
 
@@ -90,7 +90,7 @@ def test_ball_family_bounds_cover_every_member():
     with flint.ctx.workprec(200):
         c = [x * 4 for x in ball_divide_by_one_plus_z(e.enclosure(60), 3)]
         T0, T1 = ball_transition_matrices([flint.arb(x.mid(), flint.arb(2) ** -30) for x in c])
-    r = jsr_bounds([T0, T1], budget_seconds=10)
+    r = jsr_bounds([T0, T1], budget=10000)
     assert r.provenance["input_kind"] == "ball" and r.lower <= r.upper
     import numpy as np
     for shift in (-1, 0, 1):
@@ -116,7 +116,7 @@ def test_larger_daubechies_certified(N):
     """D14, D16, D18: certified (invariant polytope, high-precision certificate), consistent with
     the float values of Guglielmi–Protasov (2016)."""
     expected = {7: 2.4604, 8: 2.7608, 9: 3.0736}[N]
-    r, dt = _certified(f"daubechies-{2 * N}", budget=60)
+    r, dt = _certified(f"daubechies-{2 * N}", budget=60_000)
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
     assert abs(float(r.lower) - expected) < 1e-4
 
@@ -124,7 +124,7 @@ def test_larger_daubechies_certified(N):
 def test_d22_thin_polytope_certified_after_preconditioning():
     """D22: the invariant polytope is thin (vertex matrix condition ~1e13); it is certified only
     after the exact similarity that rounds it (``analysis.jsr._precondition``)."""
-    r, dt = _certified("daubechies-22", budget=60)
+    r, dt = _certified("daubechies-22", budget=60_000)
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-8
     assert abs(float(r.lower) - 3.6035) < 1e-4
     assert "preconditioning" in r.witness["jsr"].witness
@@ -138,7 +138,7 @@ def test_d40_two_smps_balanced_and_certified():
     import numpy as np
     from analysis.jsr import brute_force_bounds
 
-    r, dt = _certified("daubechies-40", budget=150)
+    r, dt = _certified("daubechies-40", budget=150_000)
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-9
     jw = r.witness["jsr"].witness
     assert jw["closed"] and jw["balancing"]["groups"] >= 2 and len(r.witness["product"]) == 1
@@ -164,7 +164,7 @@ def test_high_orders_certified(slug, word):
     tie (0,0,1,1) (relative 5e-6 below the s.m.p.) must be a balanced root as well. Each is
     certified to the precision of the arithmetic (the s.m.p. search was exhaustive to length
     >= 8; the closed polytope proves that no longer product does better)."""
-    r, dt = _certified(slug, budget=120)
+    r, dt = _certified(slug, budget=120_000)
     assert r.status == "certified" and float(r.upper - r.lower) < 1e-10
     assert r.witness["product"] == word
     assert r.witness["jsr"].witness["search"]["exhaustive_to_length"] >= 8

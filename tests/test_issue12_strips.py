@@ -184,12 +184,12 @@ def test_bad_arity_is_one_line(bad):
         close_strip(difference_symbol_mary(_t4(), 2, 3), MU, R(-1, 5), R(-11455, 65536), arity=bad)
 
 
-@pytest.mark.parametrize("value, message", [("abc", "--strip-seconds must be a number"),
-                                            ("-1", "--strip-seconds must be between 0 and 86400")])
-def test_mary_strip_seconds_bad_input_is_one_line(value, message, capsys):
+@pytest.mark.parametrize("value, message", [("abc", "--strip-budget must be a number of work units"),
+                                            ("-1", "--strip-budget must be between 0 and 1000000000 work units")])
+def test_mary_strip_budget_bad_input_is_one_line(value, message, capsys):
     from analysis.cli.main import main
 
     assert main(["range", "--scheme", "ternary-four-point", "--C", "1", "--within=-1/4,1/2",
-                 "--strip-seconds", value]) == 2
+                 "--strip-budget", value]) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1

@@ -77,7 +77,7 @@ def test_four_point_beyond_the_published_C1_range_is_not_certified():
     """Past w* ~ 0.19273 the scheme is not C^1: the cover must stop before it, and it does go
     past the classical sufficient bound (sqrt(5) - 1)/8 ~ 0.1545."""
     r = ck_interior(FOUR_POINT, 1, sp.Rational(1, 10), sp.Rational(1, 4), lo_open=False, hi_open=False,
-                    L_max=8, budget_seconds=20)
+                    L_max=8, budget=20000)
     assert r.status == "inconclusive"
     (lo, hi, _, _), = r.value["certified"].parts
     assert lo.compare(RealAlgebraic.rational(sp.Rational(1, 10))) == 0
@@ -201,7 +201,7 @@ def test_maximize_ternary_family():
     a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
     t = a.params[0]
     r = maximize_holder_box(a, {"t1": (sp.Rational(-1, 16), 0)}, arity=3, gap=sp.Rational(1, 1000),
-                            budget_seconds=60)
+                            budget=60000)
     assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 1000)
     for q in (sp.Rational(-1, 16), sp.Rational(-1, 20), r.value["t1"] + sp.Rational(1, 500), sp.Rational(-1, 100)):
         h = holder_exponent_mary(a.subs({t: q}), 3)
@@ -221,7 +221,7 @@ def test_maximize_two_parameters_finds_the_exceptional_line():
 
     a = derive_mask(support=11, interpolatory=True, symmetric="primal", reproduction=1).value
     r = maximize_holder_box(a, {"t1": (0, sp.Rational(1, 32)), "t2": (sp.Rational(-1, 8), 0)},
-                            gap=sp.Rational(1, 100), budget_seconds=120)
+                            gap=sp.Rational(1, 100), budget=120000)
     assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 100)
     t1, t2 = r.value["t1"], r.value["t2"]
     assert t1 == -t2 / 3 - sp.Rational(1, 48)

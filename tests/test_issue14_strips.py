@@ -87,13 +87,13 @@ def test_four_point_c1_set_is_the_published_open_interval():
     assert not lc and not hc
 
 
-@pytest.mark.parametrize("value, message", [("abc", "--strip-seconds must be a number"),
-                                            ("-1", "--strip-seconds must be between 0 and 86400")])
-def test_strip_seconds_bad_input_is_one_line(value, message, capsys):
+@pytest.mark.parametrize("value, message", [("abc", "--strip-budget must be a number of work units"),
+                                            ("-1", "--strip-budget must be between 0 and 1000000000 work units")])
+def test_strip_budget_bad_input_is_one_line(value, message, capsys):
     from analysis.cli.main import main
 
     argv = ["range", "--mask", "-w,0,w+1/2,1,w+1/2,0,-w", "--start", "-3", "--C", "1", "--within=0,1/4",
-            "--strip-seconds", value]
+            "--strip-budget", value]
     assert main(argv) == 2
     err = capsys.readouterr().err
     assert message in err and err.count("\n") == 1

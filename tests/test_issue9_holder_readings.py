@@ -80,7 +80,7 @@ def test_masks_with_nested_radicals_finish(capsys):
     cf = ClosedFormMask(_daubechies_radicals(3))
     assert cf.sum_rules == 3 and any("decided exactly" in h for h in cf.how)
     assert any("proven real" in h for h in cf.how)
-    h = holder_exponent(cf, budget_seconds=10)
+    h = holder_exponent(cf, budget=10000)
     assert "enclosed in Arb balls" in h.provenance["source"]
 
 
@@ -132,7 +132,7 @@ def test_daubechies_d8_wrong_closed_form_is_never_certified(capsys):
     assert cf.undecided is None and cf.failure is not None
     assert "a(-1) in [2.82842712475e-100 +/- " in cf.failure
     with pytest.raises(NotConvergent):
-        holder_exponent(cf, budget_seconds=5)
+        holder_exponent(cf, budget=5000)
     # a true identity that is neither formal (it needs Vieta: the roots of the D12 quintic sum to
     # -1/2) nor within the root-separation budget (degree <= 23040): inconclusive, with the reason
     roots = "+".join(f"CRootOf(252*x**5 + 126*x**4 + 56*x**3 + 21*x**2 + 6*x + 1, {j})" for j in range(5))
@@ -269,7 +269,7 @@ def test_the_ceiling_of_a_partial_factorisation_is_only_a_lower_bound():
     m = ApproximateMask(["0.125", "0.5", "0.75", "0.5", "0.125"])
     assert m.sum_rules == 4
     m.sum_rules = 1
-    r = holder_exponent(m, budget_seconds=5)
+    r = holder_exponent(m, budget=5000)
     assert r.upper is None and r.value is None and float(r.lower) <= 1 and r.witness["ceiling_reached"]
     assert "lower" in r.provenance["message"] or ">=" in r.provenance["message"]
 

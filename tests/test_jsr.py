@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import math
-import time
 from fractions import Fraction
 
 import numpy as np
@@ -17,7 +16,7 @@ import pytest
 import sympy as sp
 
 from analysis import AnalysisError
-from analysis.jsr import brute_force_bounds, canonical_word, jsr_bounds, parse_family
+from analysis.jsr import Work, brute_force_bounds, canonical_word, jsr_bounds, parse_family
 from analysis.jsr._balance import balanced_roots
 from analysis.jsr._polytope import build_polytope, certify_polytope, complete_reps
 
@@ -62,7 +61,7 @@ def test_commuting_family_is_max_spectral_radius():
     r = jsr_bounds(fam)
     assert r.status == "certified" and r.value == 3
     # the general machinery (no structural shortcut) must agree
-    rp = jsr_bounds(fam, method="polytope", budget_seconds=5)
+    rp = jsr_bounds(fam, method="polytope", budget=5000)
     assert rp.status == "certified" and contains(rp, 3) and gap(rp) < 1e-10
     assert rp.witness["closed"] and rp.witness["product"] == (1,)
 
@@ -71,7 +70,7 @@ def test_triangular_families():
     A = [[[2, 5], [0, 1]], [[1, -3], [0, "3/2"]]]    # JSR = max |diagonal| = 2
     r = jsr_bounds(A)
     assert r.value == 2 and "block" in r.provenance["method"]
-    rp = jsr_bounds(A, method="polytope", budget_seconds=5)
+    rp = jsr_bounds(A, method="polytope", budget=5000)
     assert rp.status == "certified" and contains(rp, 2)
     # lower-triangular, 3x3, with a product that has larger diagonal than either factor? no:
     # diagonals multiply, so JSR = max |d|; check against brute force as well
@@ -83,7 +82,7 @@ def test_triangular_families():
 
 
 def test_golden_ratio_pair():
-    r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], budget_seconds=5)
+    r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], budget=5000)
     assert r.status == "certified"
     assert contains(r, PHI) and gap(r) < 1e-12
     assert r.witness["product"] == (0, 1) and r.witness["length"] == 2
@@ -97,7 +96,7 @@ def test_identity_like_families():
     I = [[1, 0], [0, 1]]
     for other in ([[0, 1], [1, 0]], [[0, -1], [1, 0]], [["1/2", 0], [0, "1/2"]], I):
         for method in ("auto", "polytope"):
-            r = jsr_bounds([I, other], method=method, budget_seconds=5)
+            r = jsr_bounds([I, other], method=method, budget=5000)
             assert r.status == "certified" and contains(r, 1) and gap(r) < 1e-10, (other, method)
     r = jsr_bounds([I, I, I])
     assert r.value == 1 and r.provenance["duplicates_removed"] == 2
@@ -123,7 +122,7 @@ def test_daubechies_d4_holder_exponent():
     assert [sp.simplify(x) for x in c] == [sp.simplify((1 + s3) / 4), sp.Rational(1, 2),
                                            sp.simplify((1 - s3) / 4)]
     T0, T1 = transition_matrices(c)
-    r = jsr_bounds([T0, T1], budget_seconds=10)
+    r = jsr_bounds([T0, T1], budget=10000)
     assert r.status == "certified"
     assert "Arb" in r.provenance["arithmetic"]       # irrational entries: ball arithmetic
     assert contains(r, (1 + s3) / 4) and gap(r) < 1e-9
@@ -143,9 +142,9 @@ def test_four_point_scheme_holder_exponent_two():
     """4-point scheme: a(z) = -(1/16) z^-3 (1+z)^4 (z^2 - 4z + 1). For k = 2 and k = 3 the two
     difference masks must give the same alpha = 2 (JSR 1 and 2)."""
     c2 = [sp.Rational(-1, 4), sp.Rational(3, 4), sp.Rational(3, 4), sp.Rational(-1, 4)]
-    r2 = jsr_bounds(list(transition_matrices(c2)), budget_seconds=5)
+    r2 = jsr_bounds(list(transition_matrices(c2)), budget=5000)
     c3 = [sp.Rational(-1, 2), 2, sp.Rational(-1, 2)]
-    r3 = jsr_bounds(list(transition_matrices(c3)), method="polytope", budget_seconds=5)
+    r3 = jsr_bounds(list(transition_matrices(c3)), method="polytope", budget=5000)
     assert r2.status == r3.status == "certified"
     assert contains(r2, 1) and gap(r2) < 1e-12
     assert contains(r3, 2) and gap(r3) < 1e-12
@@ -166,7 +165,7 @@ def _random_rational_family(seed: int, n: int = 3, k: int = 2) -> list[list[list
 @pytest.mark.parametrize("seed", [0, 1, 2, 3, 4, 5])
 def test_random_3x3_certified_and_consistent_with_brute_force(seed):
     fam = _random_rational_family(seed)
-    r = jsr_bounds(fam, budget_seconds=5)
+    r = jsr_bounds(fam, budget=5000)
     assert r.lower <= r.upper
     assert r.status in ("certified", "inconclusive")
     floats = parse_family(fam).floats
@@ -190,7 +189,7 @@ def test_longer_products_never_worsen_the_interval(seed):
     for method in ("norms", "auto"):
         prev = None
         for L in (1, 2, 4, 8):
-            r = jsr_bounds(fam, method=method, max_length=L, budget_seconds=5)
+            r = jsr_bounds(fam, method=method, max_length=L, budget=5000)
             assert r.lower <= r.upper
             if prev is not None:
                 assert r.lower >= prev.lower, (method, L)
@@ -198,7 +197,7 @@ def test_longer_products_never_worsen_the_interval(seed):
             prev = r
     # and the polytope is far sharper than the textbook bound at the same length
     rn = jsr_bounds(fam, method="norms", max_length=8)
-    ra = jsr_bounds(fam, max_length=8, budget_seconds=5)
+    ra = jsr_bounds(fam, max_length=8, budget=5000)
     assert gap(ra) < gap(rn)
 
 
@@ -207,7 +206,7 @@ def test_complex_leading_eigenvalue_complex_polytope():
     rotation): the real polytope cannot close exactly; the complex polytope (started from u and
     conj(u)) closes and is certified in Arb complex balls, to the precision of the arithmetic."""
     fam = _random_rational_family(10)
-    r = jsr_bounds(fam, budget_seconds=20, rel_gap=1e-8)
+    r = jsr_bounds(fam, budget=20000, rel_gap=1e-8)
     assert r.status == "certified" and gap(r) <= 1e-12
     assert r.witness["leading_eigenvalue_real"] is False
     assert "complex invariant polytope" in r.provenance["method"]
@@ -224,7 +223,7 @@ def test_complex_certificate_is_rigorous_for_a_rotation():
     fam = [[[R(6, 5), R(-8, 5)], [R(8, 5), R(6, 5)]], [[R(1, 2), 0], [0, R(1, 4)]]]
     F = parse_family(fam)
     u = np.array([1.0, -1.0j])
-    st = build_complex_polytope(F.floats, 2.0, [u, u.conj()], deadline=time.perf_counter() + 10)
+    st = build_complex_polytope(F.floats, 2.0, [u, u.conj()], work=Work(10_000))
     assert st.closed
     c = certify_complex_polytope(F, Fraction(2), st)
     assert 2 <= c.upper <= 2 * (1 + Fraction(1, 10 ** 12))
@@ -251,7 +250,7 @@ def test_certificate_is_not_fooled_by_wrong_coefficients():
     F = parse_family([[[1, 1], [0, 1]], [[1, 0], [1, 1]]])
     rho = float(PHI)
     st = build_polytope(F.floats, rho, balanced_roots(F.floats, rho, [(0, 1)])[0],
-                        deadline=time.perf_counter() + 5)
+                        work=Work(5_000))
     assert st.closed
     good = certify_polytope(F, Fraction(rho), st)
     assert good.upper >= Fraction(str(sp.N(PHI, 30))) * (1 - Fraction(1, 10 ** 25))
@@ -268,21 +267,21 @@ def test_certificate_of_a_too_small_scale_is_still_an_upper_bound():
     F = parse_family([[[1, 1], [0, 1]], [[1, 0], [1, 1]]])
     r = 1.5
     st = build_polytope(F.floats, r, balanced_roots(F.floats, r, [(0, 1)])[0],
-                        deadline=time.perf_counter() + 1, max_vertices=20, check_better=False)
+                        work=Work(1_000), max_vertices=20, check_better=False)
     assert not st.closed
-    assert complete_reps(F.floats, r, st, deadline=time.perf_counter() + 5)
+    assert complete_reps(F.floats, r, st, work=Work(5_000))
     cert = certify_polytope(F, Fraction(r), st)
     assert float(cert.upper) >= float(PHI)
 
 
 def test_float_input_is_numerical_unless_declared_exact():
     A = [np.array([[1., 1], [0, 1]]), np.array([[1., 0], [1, 1]])]
-    r = jsr_bounds(A, budget_seconds=5)
+    r = jsr_bounds(A, budget=5000)
     assert r.status == "numerical" and contains(r, PHI)
-    r2 = jsr_bounds(A, budget_seconds=5, floats_exact=True)
+    r2 = jsr_bounds(A, budget=5000, floats_exact=True)
     assert r2.status == "certified" and "binary rationals" in r2.provenance["arithmetic"]
     # exact inputs in several spellings give the same rigorous bounds
-    r3 = jsr_bounds([sp.Matrix([[1, 1], [0, 1]]), [["1", "0"], ["1.0", 1]]], budget_seconds=5)
+    r3 = jsr_bounds([sp.Matrix([[1, 1], [0, 1]]), [["1", "0"], ["1.0", 1]]], budget=5000)
     assert (r3.lower, r3.upper) == (r2.lower, r2.upper)
 
 
@@ -290,7 +289,7 @@ def test_inconclusive_outcome_keeps_rigorous_bounds():
     # a Jordan block with a contraction: JSR = 1 is not attained by any extremal norm, so the
     # polytope cannot close (the structural shortcut would settle it; method="polytope" skips it)
     r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [0, "1/2"]]], method="polytope",
-                   budget_seconds=1.0, max_length=4)
+                   budget=1000, max_length=4)
     assert r.status == "inconclusive"
     assert contains(r, 1) and r.upper > 1
     assert "settle" in r.provenance["message"]
@@ -328,11 +327,11 @@ def test_ball_family_certified_and_contains_every_member():
 
     eps = arb(2) ** -60
     one = arb(1, eps)
-    r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget_seconds=5)
+    r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget=5000)
     assert r.status == "certified" and r.provenance["input_kind"] == "ball"
     assert contains(r, PHI) and gap(r) < 1e-15
     # exactly known balls (radius 0) are read exactly: same result as the rational family
-    re_ = jsr_bounds([[[arb(1), 1], [0, 1]], [[1, 0], [1, arb(1)]]], budget_seconds=5)
+    re_ = jsr_bounds([[[arb(1), 1], [0, 1]], [[1, 0], [1, arb(1)]]], budget=5000)
     assert re_.provenance["input_kind"] == "rational" and contains(re_, PHI)
 
 
@@ -341,7 +340,7 @@ def test_ball_entries_containing_zero_are_not_structural_zeros():
     from flint import arb
 
     tiny = arb(0, arb(2) ** -40)
-    r = jsr_bounds([[[2, 0], [tiny, 1]], [[1, 1], [0, 3]]], budget_seconds=5)
+    r = jsr_bounds([[[2, 0], [tiny, 1]], [[1, 1], [0, 3]]], budget=5000)
     assert "block" not in r.provenance["method"]
     assert r.lower <= 3 <= r.upper and gap(r) < 1e-6       # the member tiny = 0 has JSR 3
     rb = jsr_bounds([[[2, 0], [0, 1]], [[1, 1], [0, 3]]])   # exactly 0: block triangular
@@ -374,14 +373,14 @@ def test_similarity_preconditioning_preserves_the_jsr():
     assert S is not None
     G = transform_family(F, S)
     assert G.kind == "rational"
-    r = jsr_bounds(G.exact_q, budget_seconds=5)
+    r = jsr_bounds(G.exact_q, budget=5000)
     assert r.status == "certified" and contains(r, PHI)
     one = arb(1, arb(2) ** -100)
     Fb = parse_family([[[one, 1], [0, 1]], [[1, 0], [1, one]]])
     Gb = transform_family(Fb, S)
     assert Gb.kind == "ball"
     rb = jsr_bounds([[[M[a, b] for b in range(2)] for a in range(2)] for M in Gb.balls],
-                    budget_seconds=5)
+                    budget=5000)
     assert rb.lower <= PHI <= rb.upper and float(rb.upper / rb.lower - 1) < 1e-9
 
 

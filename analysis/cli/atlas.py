@@ -18,6 +18,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ..result import AnalysisError
+from .common import WORK_HELP, work_arg
 
 
 def _int(text: str, what: str, lo: int, hi: int | None = None) -> int:
@@ -27,16 +28,6 @@ def _int(text: str, what: str, lo: int, hi: int | None = None) -> int:
         raise AnalysisError(f"{what} must be an integer, not {text!r}") from None
     if v < lo or (hi is not None and v > hi):
         raise AnalysisError(f"{what} must be between {lo} and {hi}" if hi is not None else f"{what} must be >= {lo}")
-    return v
-
-
-def _float(text: str, what: str) -> float:
-    try:
-        v = float(text)
-    except (TypeError, ValueError):
-        raise AnalysisError(f"{what} must be a number of seconds, not {text!r}") from None
-    if not v > 0 or v == float("inf"):
-        raise AnalysisError(f"{what} must be a positive number of seconds")
     return v
 
 
@@ -84,13 +75,13 @@ def cmd_atlas(args) -> None:
     yn, ylo, yhi, yN = parse_axis(args.y)
     refine = _int(args.refine, "--refine", 0, 8)
     workers = None if args.workers is None else _int(args.workers, "--workers", 1)
-    budget = _float(args.budget, "--budget")
+    budget = work_arg(args.budget, "--budget")
     js = [_int(t.strip(), "--j", 0, 64) for t in args.j.split(",") if t.strip()]
     if not js:
         raise AnalysisError("--j needs a list of integers, e.g. 1,2,3")
     executor = None if args.executor == "serial" else args.executor
     r = holder_atlas(a, xn, (xlo, xhi), yn, (ylo, yhi), n1=xN, n2=yN, j_levels=js, refine_levels=refine,
-                     executor=executor, workers=workers, budget_seconds=budget,
+                     executor=executor, workers=workers, budget=budget,
                      progress=not args.no_progress, **({"arity": m} if m != 2 else {}))
     try:
         figure = plot_atlas(r, args.figure) if args.figure else None
@@ -101,10 +92,12 @@ def cmd_atlas(args) -> None:
     fixed = ", ".join(f"{p}" for p in (args.param or []))
     lines = [f"scheme: {label}" + (f"   ({fixed})" if fixed else "") + (f"   (arity {m})" if m != 2 else ""),
              f"atlas of alpha over {xn} in [{sp.sstr(xlo)}, {sp.sstr(xhi)}] ({xN} points) x "
-             f"{yn} in [{sp.sstr(ylo)}, {sp.sstr(yhi)}] ({yN} points), refine {refine}, budget {budget:g} s",
+             f"{yn} in [{sp.sstr(ylo)}, {sp.sstr(yhi)}] ({yN} points), refine {refine}, budget {budget} work units "
+             "per point",
              f"samples: {c['samples']} (per level {c['per_level']}); certified {c['certified']}, "
              f"inconclusive {c['inconclusive']}   [{r.status}]",
-             f"time: {w['seconds']:.1f} s wall, {w['task_seconds']:.1f} s in point evaluations; {w['executor']}"]
+             f"time: {r.provenance['timing']['seconds']:.1f} s wall, "
+             f"{r.provenance['timing']['task_seconds']:.1f} s in point evaluations; {w['executor']}"]
     for key, v in c["verdicts"].items():
         lines.append(f"{key}: yes {v['yes']}, no {v['no']}, undecided {v['undecided']}")
     for ex in w["exceptional"]:
@@ -142,7 +135,7 @@ def cmd_atlas(args) -> None:
         from .common import parse_coefficient
         from .maximize import maximize_part
 
-        maximize_part(a, {xn: (xlo, xhi), yn: (ylo, yhi)}, m, parse_coefficient(args.gap), 120.0, lines, data)
+        maximize_part(a, {xn: (xlo, xhi), yn: (ylo, yhi)}, m, parse_coefficient(args.gap), 120_000, lines, data)
     _emit(args, data, "\n".join(lines))
 
 
@@ -160,7 +153,8 @@ def register(subparsers) -> None:
     s.add_argument("--executor", default="local", metavar="KIND",
                    help="local (process pool, default), serial, or dask://HOST:PORT (a running scheduler)")
     s.add_argument("--workers", metavar="N", help="local processes (default: all cores)")
-    s.add_argument("--budget", default="2", metavar="SECONDS", help="JSR time budget per point (default 2)")
+    s.add_argument("--budget", default="2000", metavar="UNITS",
+                   help=f"work budget of the joint spectral radius per point, in work units (default 2000; {WORK_HELP})")
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")
     s.add_argument("--no-progress", action="store_true", help="no progress bar")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")

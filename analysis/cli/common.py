@@ -21,7 +21,7 @@ from typing import Sequence
 
 import sympy as sp
 
-from ..jsonable import jsonable
+from ..jsonable import hoist_timing, jsonable
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol, parse_coefficient
 
@@ -349,11 +349,35 @@ def check_figure(path: str, option: str) -> None:
     check_writable(path, option)
 
 
+def json_document(data) -> str:
+    """The JSON text of a command's document: wall-clock times only under its top-level ``"timing"``
+    key (:func:`analysis.jsonable.hoist_timing`), so that two runs differ only there."""
+    return json.dumps(hoist_timing(jsonable(data)), indent=2)
+
+
 def _emit(args, data: dict, text: str) -> None:
     if args.json:
-        _print(json.dumps(jsonable(data), indent=2))
+        _print(json_document(data))
     else:
         _print(text)
+
+
+#: the largest work budget an option takes
+MAX_WORK = 10 ** 9
+#: what a work unit is, for --help texts
+WORK_HELP = "counted, not timed: about a millisecond each on the reference machine"
+
+
+def work_arg(text, option: str, *, minimum: int = 1) -> int:
+    """A work-budget option (``--budget``, ``--strip-budget``): a number of work units such as ``20000``
+    or ``2e4``. Work is counted, never timed, so the same input gives the same verdict on every machine."""
+    try:
+        v = float(str(text).strip().replace("_", ""))
+    except ValueError:
+        raise AnalysisError(f"{option} must be a number of work units, not {text!r}") from None
+    if not minimum <= v <= MAX_WORK:
+        raise AnalysisError(f"{option} must be between {minimum} and {MAX_WORK} work units")
+    return int(v)
 
 
 def _parse_Ls(text: str) -> list[int]:

@@ -48,7 +48,9 @@ def register(subparsers) -> None:
     s.add_argument("--box", action="append", metavar="NAME=LO,HI",
                    help="range of one parameter for --maximize with several parameters (repeatable)")
     s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap in alpha (default 1/1000)")
-    s.add_argument("--budget", default="60", metavar="SECONDS", help="time budget of --maximize (default 60)")
+    s.add_argument("--budget", default="60000", metavar="UNITS",
+                   help="work budget of --maximize, in work units (default 60000; counted, not timed: about a "
+                        "millisecond each on the reference machine)")
     s.add_argument("--output", metavar="FAMILY.json",
                    help="also write the family (read back by subdiv range|atlas --family FAMILY.json)")
     s.add_argument("--C", metavar="J", help="also the certified C^J set of a one-parameter family on --within")
@@ -141,19 +143,14 @@ def cmd_derive(args) -> None:
         lo, hi = _parse_within(args.within)
         if not (lo.is_finite and hi.is_finite):
             raise AnalysisError("--within needs a finite box for --maximize")
-        try:
-            budget = float(args.budget)
-        except ValueError:
-            raise AnalysisError(f"--budget must be a number of seconds, not {args.budget!r}") from None
-        if not budget > 0:
-            raise AnalysisError("--budget must be positive")
-        from .common import parse_coefficient
+        from .common import parse_coefficient, work_arg
 
-        m = maximize_holder(r.value, within=(lo, hi), gap=parse_coefficient(args.gap), budget_seconds=budget)
+        budget = work_arg(args.budget, "--budget")
+        m = maximize_holder(r.value, within=(lo, hi), gap=parse_coefficient(args.gap), budget=budget)
         data["maximize"] = {"status": m.status, "maximiser": m.value, "alpha_lower_at_maximiser": m.lower,
                             "alpha_upper_on_box": m.upper, "gap": m.witness.get("gap"),
-                            "intervals": m.witness.get("intervals"), "seconds": m.provenance.get("seconds"),
-                            "message": m.provenance.get("message")}
+                            "intervals": m.witness.get("intervals"), "work": m.provenance.get("work"),
+                            "message": m.provenance.get("message"), "timing": m.provenance.get("timing")}
         if m.value is None:
             lines.append(f"maximize holder: {m.status} ({m.provenance.get('message')})")
         else:
@@ -163,7 +160,7 @@ def cmd_derive(args) -> None:
                          f"[{float(h.lower):.6f}, {float(h.upper):.6f}] ({h.status})")
             lines.append(f"alpha <= {float(m.upper):.6f} on the whole box [{lo}, {hi}]: certified gap "
                          f"{float(m.witness['gap']):.2e} ({m.status}; {m.witness['intervals']} sub-intervals, "
-                         f"{m.provenance['seconds']} s)" + (f"; {m.provenance['message']}" if "message" in m.provenance else ""))
+                         f"{m.provenance['timing']['seconds']} s)" + (f"; {m.provenance['message']}" if "message" in m.provenance else ""))
     _emit(args, data, "\n".join(lines))
 
 
@@ -218,8 +215,6 @@ def _maximize_box(args, r, arity: int, lines: list, data: dict) -> None:
             raise AnalysisError("--maximize needs a box: --within LO,HI (one parameter) or --box NAME=LO,HI for "
                                 "each of " + ", ".join(names))
         box = {names[0]: _parse_within(args.within)}
-    try:
-        budget = float(args.budget)
-    except ValueError:
-        raise AnalysisError(f"--budget must be a number of seconds, not {args.budget!r}") from None
-    maximize_part(r.value, box, arity, parse_coefficient(args.gap), budget, lines, data)
+    from .common import work_arg
+
+    maximize_part(r.value, box, arity, parse_coefficient(args.gap), work_arg(args.budget, "--budget"), lines, data)

@@ -19,7 +19,7 @@ import sympy as sp
 
 from ..jsonable import exact_and_float
 from ..result import AnalysisError
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_figure, scheme_from_args
+from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_figure, check_writable, scheme_from_args, work_arg
 from ..algebra.reader import as_expr
 
 
@@ -207,10 +207,10 @@ def cmd_holder(args, m: int) -> None:
     from .common import require_values
 
     require_values(a, label, "holder")
-    budget = float(args.budget)
+    budget = work_arg(args.budget, "--budget")
     lines, data = [head], {"scheme": label, "arity": m}
     try:
-        h = holder_exponent_mary(a, m, budget_seconds=budget)
+        h = holder_exponent_mary(a, m, budget=budget)
     except NotConvergentMary as exc:
         r = exc.result()
         lines.append(f"{r.witness['reason']}   [{r.status}]")
@@ -226,7 +226,7 @@ def cmd_holder(args, m: int) -> None:
     data["alpha"] = {"value": h.value, "lower": h.lower, "upper": h.upper, "status": h.status, "k": h.witness["k"]}
     if args.C is not None:
         j = _int_arg(args.C, "--C")
-        s = smoothness_mary(a, m, j, budget_seconds=budget)
+        s = smoothness_mary(a, m, j, budget=budget)
         verdict = {True: f"C^{j}", False: f"not C^{j}", None: "undecided"}[s.value]
         lines.append(f"{verdict}: {s.witness['reason']}   [{s.status}]")
         data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness["reason"]}
@@ -271,14 +271,9 @@ def cmd_range(args, m: int) -> None:
     within = _parse_within(args.within)
     if args.figure and not all(w.is_finite for w in within):
         raise AnalysisError("--figure needs finite bounds in --within, e.g. --within=-1,1")
-    try:
-        strip_seconds = float(getattr(args, "strip_seconds", 30))
-    except ValueError:
-        raise AnalysisError(f"--strip-seconds must be a number, not {args.strip_seconds!r}") from None
-    if not 0 <= strip_seconds <= 86400:
-        raise AnalysisError("--strip-seconds must be between 0 and 86400")
+    strip_budget = work_arg(getattr(args, "strip_budget", 30_000), "--strip-budget", minimum=0)
     Ls = [1, 2]
-    r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within, strip_seconds=strip_seconds)
+    r = ck_range_mary(a, m, j, args.param_name, Ls=Ls, within=within, strip_budget=strip_budget)
     p = r.witness["parameter"]
     tests = r.witness.get("interior_tests") or []
     extra = " and parametric norm tests, L <= 8" if tests else ""
@@ -307,7 +302,7 @@ def cmd_range(args, m: int) -> None:
         from .common import parse_coefficient
         from .maximize import maximize_part
 
-        maximize_part(a, {p: within}, m, parse_coefficient(args.gap), 60.0, lines, data)
+        maximize_part(a, {p: within}, m, parse_coefficient(args.gap), 60_000, lines, data)
     if args.figure:
         _figure(args, a, m, p, j, within, r, label, lines, data)
     _emit(args, data, "\n".join(lines))
@@ -322,11 +317,8 @@ def _figure(args, a, m: int, p: str, j: int, within, r, label: str, lines: list,
     grid = _int_arg(args.grid, "--grid")
     if grid < 2 or grid > 400:
         raise AnalysisError("--grid must be between 2 and 400")
-    try:
-        budget = float(args.budget)
-    except ValueError:
-        raise AnalysisError(f"--budget must be a number, not {args.budget!r}") from None
-    curve = alpha_curve_mary(a, m, p, within=within, samples=max(grid, 8), budget_seconds=budget)
+    budget = work_arg(args.budget, "--budget")
+    curve = alpha_curve_mary(a, m, p, within=within, samples=max(grid, 8), budget=budget)
     parts = r.value.args if isinstance(r.value, sp.Union) else (() if r.value == sp.EmptySet else (r.value,))
     ends = [{"exact_float": float(x)} for I in parts if isinstance(I, sp.Interval)
             for x in (I.start, I.end) if x.is_finite and x not in within]

@@ -37,15 +37,15 @@ def parse_boxes(items) -> dict:
     return out
 
 
-def maximize_part(a, box: dict, arity: int, gap, budget: float, lines: list, data: dict) -> None:
-    """Run the box maximisation and append its lines and JSON data."""
+def maximize_part(a, box: dict, arity: int, gap, budget: int, lines: list, data: dict) -> None:
+    """Run the box maximisation (``budget`` in work units) and append its lines and JSON data."""
     from ..regularity.maximize_box import maximize_holder_box
 
-    m = maximize_holder_box(a, box, arity=arity, gap=gap, budget_seconds=budget)
+    m = maximize_holder_box(a, box, arity=arity, gap=gap, budget=budget)
     data["maximize"] = {"status": m.status, "maximiser": m.value, "alpha_lower_at_maximiser": m.lower,
                         "alpha_upper_on_box": m.upper, "gap": m.witness.get("gap"),
-                        "exceptional": m.witness.get("exceptional"), "seconds": m.provenance.get("seconds"),
-                        "message": m.provenance.get("message")}
+                        "exceptional": m.witness.get("exceptional"), "work": m.provenance.get("work"),
+                        "message": m.provenance.get("message"), "timing": m.provenance.get("timing")}
     where = ", ".join(f"{k} in [{sp.sstr(lo)}, {sp.sstr(hi)}]" for k, (lo, hi) in box.items())
     if m.value is None or m.lower is None:
         lines.append(f"maximize holder: {m.status} ({m.provenance.get('message')})")
@@ -54,7 +54,7 @@ def maximize_part(a, box: dict, arity: int, gap, budget: float, lines: list, dat
     lines.append(f"smoothest member: {point}; alpha there >= {float(m.lower):.6f} (certified)")
     if m.upper is not None:
         lines.append(f"alpha <= {float(m.upper):.6f} on the whole box {where}: certified gap "
-                     f"{float(m.witness['gap']):.2e} ({m.status}; {m.provenance.get('seconds')} s)"
+                     f"{float(m.witness['gap']):.2e} ({m.status}; {(m.provenance.get('timing') or {}).get('seconds')} s)"
                      + (f"; {m.provenance['message']}" if "message" in m.provenance else ""))
     for e in m.witness.get("exceptional") or []:
         if e.get("upper") is not None:

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from .common import _print, check_figure, check_writable
+from .common import _print, check_figure, check_writable, json_document
 from ..jsonable import fmt_lower, fmt_upper, jsonable
 from ..result import AnalysisError
 
@@ -75,7 +75,7 @@ def _figure(plot, path: str, **kw) -> None:
 
 def _out(args, data, text: str) -> None:
     if args.json:
-        _print(json.dumps(jsonable(data), indent=2))
+        _print(json_document(data))
     else:
         _print(text)
 

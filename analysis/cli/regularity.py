@@ -16,8 +16,8 @@ from fractions import Fraction
 import sympy as sp
 
 from . import mary as _mary
-from .common import (_add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
-                     require_values, scheme_arity, scheme_from_args)
+from .common import (WORK_HELP, _add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
+                     check_writable, require_values, scheme_arity, scheme_from_args, work_arg)
 from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
 from ..algebra.symbol import LaurentSymbol
@@ -114,7 +114,7 @@ def _holder(a, budget, args=None):
     cache = getattr(args, "_holder_cache", None) if args is not None else None
     if cache is not None and cache[0] is a:
         return cache[1]
-    h = holder_exponent(a, budget_seconds=budget)
+    h = holder_exponent(a, budget=budget)
     if args is not None:
         args._holder_cache = (a, h)
     return h
@@ -135,7 +135,7 @@ def _smoothness_part(args, a, budget):
         else:
             s = verdict_from_enclosure(h, j)
     else:
-        s = smoothness(a, j, budget_seconds=budget)
+        s = smoothness(a, j, budget=budget)
     verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
     return ([f"{verdict}   [{s.status}] — {s.witness.get('reason')}"],
             {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason"),
@@ -262,7 +262,7 @@ def cmd_holder(args) -> None:
     refuse_box_options(args)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_holder(args, arity)
-    budget = float(args.budget)
+    budget = work_arg(args.budget, "--budget")
     from .level_input import is_stationary, level_scheme_from_args
 
     from .levels import holder_growing_support, holder_level_dependent
@@ -347,14 +347,10 @@ def cmd_range(args) -> None:
         raise AnalysisError(f"--tol must be a number, not {args.tol!r}") from None
     if not (1e-30 <= tol <= 1):
         raise AnalysisError("--tol must be between 1e-30 and 1")
-    try:
-        strip_seconds = float(args.strip_seconds)
-    except ValueError:
-        raise AnalysisError(f"--strip-seconds must be a number, not {args.strip_seconds!r}") from None
-    if not 0 <= strip_seconds <= 86400:
-        raise AnalysisError("--strip-seconds must be between 0 and 86400")
+    strip_budget = work_arg(args.strip_budget, "--strip-budget", minimum=0)
+    budget = work_arg(args.budget, "--budget")
     r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
-                         budget_seconds=float(args.budget), interior_L_max=12, strip_seconds=strip_seconds)
+                         budget=budget, interior_L_max=12, strip_budget=strip_budget)
     p = r.witness["parameter"]
     lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
              f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
@@ -386,9 +382,9 @@ def cmd_range(args) -> None:
         from .common import parse_coefficient
         from .maximize import maximize_part
 
-        maximize_part(a, {p: within}, 2, parse_coefficient(args.gap), 60.0, lines, data)
+        maximize_part(a, {p: within}, 2, parse_coefficient(args.gap), 60_000, lines, data)
     if args.figure:
-        curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget_seconds=float(args.budget))
+        curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget=budget)
         from ..report.plots import plot_alpha_curve
 
         try:
@@ -405,7 +401,8 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
     s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
-    s.add_argument("--budget", default="20", help="seconds for the joint spectral radius (default 20)")
+    s.add_argument("--budget", default="20000", metavar="UNITS",
+                   help=f"work budget of the joint spectral radius, in work units (default 20000; {WORK_HELP})")
     s.add_argument("--approx", action="store_true",
                    help="approximate reading of a decimal --mask: each coefficient a ball of half a unit in its "
                         "last digit (a double's 17 digits: 4 ulps), sum rules imposed inside the balls (alpha "
@@ -430,10 +427,12 @@ def register(sub) -> None:
     s.add_argument("--within", metavar="LOW,HIGH", required=True, help="finite parameter interval (use --within=-1,1)")
     s.add_argument("--grid", default="16", help="number of grid cells (default 16)")
     s.add_argument("--tol", default="1e-8", help="boundary tolerance (default 1e-8)")
-    s.add_argument("--budget", default="20", help="seconds per joint spectral radius (default 20)")
-    s.add_argument("--strip-seconds", default="30", metavar="S",
-                   help="seconds for closing the strips next to ends of eigenvalue type by the parametric "
-                        "invariant polytope (default 30; the 6-point family's C^1 set needs about 300)")
+    s.add_argument("--budget", default="20000", metavar="UNITS",
+                   help=f"work budget per joint spectral radius, in work units (default 20000; {WORK_HELP})")
+    s.add_argument("--strip-budget", default="30000", metavar="UNITS",
+                   help="work budget for closing the strips next to ends of eigenvalue type by the parametric "
+                        "invariant polytope, in work units (default 30000; the 6-point family's C^1 set needs "
+                        "about 800000)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.add_argument("--maximize", choices=("holder",), help="also the smoothest member on --within (certified gap)")

@@ -26,7 +26,8 @@ from ..algebra.symbol import parse_coefficient
 
 
 from . import mary as _mary
-from .common import check_refined_size, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls, _parse_within, _print, check_writable, scheme_from_args
+from .common import (check_refined_size, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls,
+                     _parse_within, _print, check_writable, json_document, scheme_from_args)
 from ..algebra.reader import as_expr
 
 
@@ -193,7 +194,7 @@ def cmd_refine(args) -> None:
     data_out = {"scheme": label, "steps": steps, "closed": not args.open, "end_rule": args.end_rule if args.open else None,
                 "count": len(out), "points": [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]}
     if args.json:
-        _print(json.dumps(jsonable(data_out), indent=2))
+        _print(json_document(data_out))
         return
     _print(f"scheme: {label}; {len(data)} -> {len(out)} points after {steps} step(s)"
            + (f" (open polygon, end rule {args.end_rule})" if args.open else " (closed polygon)"))

@@ -12,7 +12,7 @@ Examples
 --------
 The classic pair whose JSR is the golden ratio, attained by ``A_0 A_1`` (length 2):
 
->>> r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], budget_seconds=5)
+>>> r = jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], budget=5000)
 >>> r.status, r.witness["product"], r.witness["length"], r.witness["closed"]
 ('certified', (0, 1), 2, True)
 >>> import sympy as sp
@@ -93,7 +93,7 @@ import sympy as sp
 from flint import fmpq_mat
 
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
-from ._bounds import _Bounds, _lower_from_word, _rho_word, _time_left
+from ._bounds import _Bounds, _lower_from_word, _rho_word
 from ._norms import _solve_norms, arithmetic_of, rigorous_norm_upper
 from ._exact import Family, exact_rho_expression, parse_family, rho_enclosure, round_down, round_up
 from ._hp import certify_polytope_hp
@@ -103,8 +103,9 @@ from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family
 from ._search import brute_force_bounds, canonical_word, smp_search
+from ._work import Work
 
-__all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word"]
+__all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word", "Work", "DEFAULT_BUDGET"]
 
 METHODS = ("auto", "polytope", "norms")
 #: products within this relative distance of the best one also start the polytope (balanced)
@@ -114,6 +115,10 @@ SUBSPACE_MAX_N = 40
 #: a float polytope whose vertex matrix is worse conditioned than this is rebuilt for a
 #: similar family that rounds it (see :mod:`analysis.jsr._precondition`)
 THIN_COND = 1e10
+#: default work budget of :func:`jsr_bounds` (units: see its docstring)
+DEFAULT_BUDGET = 10_000
+#: the fallback norm bound always gets at least this many units
+MIN_UNITS = 50
 
 
 # --------------------------------------------------------------------------------------------
@@ -153,7 +158,7 @@ def _commuting(F: Family) -> bool:
     return True
 
 
-def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap: float,
+def _solve(F: Family, *, method: str, max_length: int, work: Work, rel_gap: float,
            max_vertices: int) -> _Bounds:
     k = F.k
     if k == 1:
@@ -162,12 +167,12 @@ def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap:
         blocks = _blocks(F) if F.n > 1 else [[0]]
         if len(blocks) > 1:
             return _solve_blocks(F, blocks, method=method, max_length=max_length,
-                                 deadline=deadline, rel_gap=rel_gap, max_vertices=max_vertices)
+                                 work=work, rel_gap=rel_gap, max_vertices=max_vertices)
         if F.exact_q is not None and 2 <= F.n <= SUBSPACE_MAX_N:
             W = invariant_subspace(F.exact_q)
             if W is not None:
                 return _solve_subspace(F, W, method=method, max_length=max_length,
-                                       deadline=deadline, rel_gap=rel_gap,
+                                       work=work, rel_gap=rel_gap,
                                        max_vertices=max_vertices)
         if _commuting(F):
             parts = [_single(F, i) for i in range(k)]
@@ -177,8 +182,8 @@ def _solve(F: Family, *, method: str, max_length: int, deadline: float, rel_gap:
                            "commuting family: JSR = max_i rho(A_i)", arithmetic_of(F),
                            {"closed": True, "polytope_vertices": 0})
     if method == "norms":
-        return _solve_norms(F, max_length=max_length, deadline=deadline)
-    return _solve_polytope(F, max_length=max_length, deadline=deadline, rel_gap=rel_gap,
+        return _solve_norms(F, max_length=max_length, work=work)
+    return _solve_polytope(F, max_length=max_length, work=work, rel_gap=rel_gap,
                            max_vertices=max_vertices)
 
 
@@ -198,14 +203,9 @@ def _combine(F: Family, parts: list[tuple[Any, _Bounds]], method: str, key: str,
 
 
 def _solve_parts(subs: list[tuple[Any, Family]], kw: dict) -> list[tuple[Any, _Bounds]]:
-    """Solve the diagonal blocks, sharing the time in proportion to their squared sizes."""
-    t_total = max(_time_left(kw["deadline"]), 0.0)
-    weights = [sub.n ** 2 for _, sub in subs]
-    parts = []
-    for (label, sub), wgt in zip(subs, weights):
-        share = t_total * wgt / sum(weights)
-        parts.append((label, _solve(sub, **dict(kw, deadline=time.perf_counter() + share))))
-    return parts
+    """Solve the diagonal blocks, sharing the work budget in proportion to their squared sizes."""
+    shares = kw["work"].split([sub.n ** 2 for _, sub in subs])
+    return [(label, _solve(sub, **dict(kw, work=share))) for (label, sub), share in zip(subs, shares)]
 
 
 def _solve_blocks(F: Family, blocks: list[list[int]], **kw: Any) -> _Bounds:
@@ -271,12 +271,19 @@ def _start_vertices(mats: Sequence[np.ndarray], r: float, cands, theta: float = 
     return roots + interior_fillers(mats, r, words, info, theta=theta), info
 
 
-def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: float,
+def _at_least(work: Work, units: int) -> Work:
+    """``work`` itself, or a fresh budget of ``units`` when less than that is left (the fallback
+    bounds always get a minimum)."""
+    return work if work.left >= units else Work(units)
+
+
+def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
                     max_vertices: int) -> _Bounds:
-    t_start = time.perf_counter()
-    total = max(deadline - t_start, 0.05)
+    # the phases share the budget as fractions of what is left (the search a quarter, the
+    # polytope half of the rest, ...), counted in work units (see jsr_bounds)
+    total = max(work.left, MIN_UNITS)
     notes: list[str] = []
-    sr = smp_search(F.floats, max_length, deadline=t_start + 0.25 * total, near=NEAR_ROOTS)
+    sr = smp_search(F.floats, max_length, work=work.share(0.25), near=NEAR_ROOTS)
     # roots: the exact ties, and the near ties no longer than the best word (a near tie such as
     # (0,0,1,1) next to the s.m.p. (0,0,1,1,1,1) of Daubechies D44 must be a balanced root, or
     # the polytope crawls towards its eigenvector; long concatenations add nothing)
@@ -286,12 +293,12 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
     witness: dict[str, Any] = {"search": {"levels": sr.levels_done,
                                           "products_evaluated": sr.products_evaluated,
                                           "exhaustive_to_length": sr.exhaustive_to,
-                                          "seconds": round(sr.seconds, 4)},
+                                          "work": sr.work},
                                "candidates": [c[1] for c in cands]}
     lower, rp = _lower_from_word(F, word)
 
     if sr.best_rho <= 0 or lower == 0:
-        return _solve_zero(F, word, lower, rp, witness, max_length, deadline)
+        return _solve_zero(F, word, lower, rp, witness, max_length, work)
 
     # a badly scaled family (fast-decaying spectrum, e.g. Daubechies D20+) gives a thin polytope
     # decided on rounding noise: work from the start in the exactly similar family in which the
@@ -315,7 +322,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         # a complex leading eigenvalue rotates the root: the real polytope closes exactly only
         # for a rational rotation, so the exact attempt gets less time
         real_lead = all(leading_is_real(mats, w) for _, w in cands)
-        poly_deadline = time.perf_counter() + (0.5 if real_lead else 0.15) * _time_left(deadline)
+        poly_work = work.share(0.5 if real_lead else 0.15)
         # values recomputed from the words alone, so that the scale (hence the certificate)
         # does not depend on how a candidate was found
         cands = [(_rho_word(mats, w), w) for _, w in cands]
@@ -324,7 +331,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         roots, balance = _start_vertices(mats, rho_f, cands)
         # after the ellipsoid rounding an early polytope (few directions filled) is thin
         # legitimately: no early stop then
-        st = build_polytope(mats, rho_f, roots, deadline=poly_deadline,
+        st = build_polytope(mats, rho_f, roots, work=poly_work,
                             max_vertices=max_vertices,
                             thin_stop=THIN_COND if Fw is F else None)
         if st.better_word is not None and restarts < 6:
@@ -366,7 +373,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
     # noise in the thin directions; rebuild it for an exactly similar, rounder family
     Fc, stc = Fw, st
     for _round in range(3):
-        if gap_ok(upper) or _time_left(deadline) <= 0.15 * total:
+        if gap_ok(upper) or work.left <= 0.15 * total:
             break
         Vc = stc.matrix()
         sv = np.linalg.svd(Vc, compute_uv=False) if Vc.shape[1] else np.zeros(1)
@@ -378,8 +385,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         if G is None:
             break
         roots, _ = _start_vertices(G.floats, float(r), cands, theta=0.125)
-        t_pc = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
-        st3 = build_polytope(G.floats, float(r), roots, deadline=t_pc,
+        st3 = build_polytope(G.floats, float(r), roots, work=work.sub(0.6 * max(work.left - 0.1 * total, 0)),
                              max_vertices=max_vertices, check_better=False,
                              thin_stop=THIN_COND if _round < 2 else None)
         info = {"cond_before": float(sv[0] / sv[-1]), "vertices": len(st3.V),
@@ -403,11 +409,11 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         witness["preconditioning"] = precond
 
     # a complex leading eigenvalue: the complex (elliptic) polytope can close exactly
-    if not gap_ok(upper) and not real_lead and _time_left(deadline) > 0.1 * total:
+    if not gap_ok(upper) and not real_lead and work.left > 0.1 * total:
         # (no interior fillers here: in the complex hull they slowed closure in the tests)
         croots, _ = balanced_roots(Fw.floats, float(r), [w for _, w in cands], complex_roots=True)
-        t_c = time.perf_counter() + 0.6 * max(_time_left(deadline) - 0.1 * total, 0.0)
-        stx = build_complex_polytope(Fw.floats, float(r), croots, deadline=t_c,
+        stx = build_complex_polytope(Fw.floats, float(r), croots,
+                                     work=work.sub(0.6 * max(work.left - 0.1 * total, 0)),
                                      max_vertices=min(max_vertices, 800), check_better=False)
         cinfo: dict[str, Any] = {"vertices": len(stx.V), "closed": stx.closed,
                                  "stop": stx.stop_reason, "socp_calls": stx.lp_calls}
@@ -437,12 +443,12 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         rho_f = float(r)
         for eps in sorted({e for e in (1e-2, 1e-4, rel_gap / 4) if e >= rel_gap / 4},
                           reverse=True):
-            if _time_left(deadline) <= 0.02 * total:
+            if work.left <= 0.02 * total:
                 break
             re = r * (1 + Fraction(eps))
             roots, _ = _start_vertices(Fc.floats, rho_f, cands)
-            t_eps = time.perf_counter() + max(_time_left(deadline) - 0.1 * total, 0.0) / 2
-            st2 = build_polytope(Fc.floats, float(re), roots, deadline=t_eps,
+            st2 = build_polytope(Fc.floats, float(re), roots,
+                                 work=work.sub(max(work.left - 0.1 * total, 0) / 2),
                                  max_vertices=max_vertices, check_better=False)
             if not st2.closed:
                 relaxed = {"eps_failed": eps, "vertices": len(st2.V), "stop": st2.stop_reason}
@@ -460,7 +466,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
         if relaxed:
             witness["relaxed_polytope"] = relaxed
     if not gap_ok(upper):
-        nu, nl_ = rigorous_norm_upper(F, max_length, max(deadline, time.perf_counter() + 0.05))
+        nu, nl_ = rigorous_norm_upper(F, max_length, _at_least(work, MIN_UNITS))
         if upper is None or nu < upper:
             upper = nu
             method = "norms of products in a balanced basis (polytope inconclusive)"
@@ -469,7 +475,7 @@ def _solve_polytope(F: Family, *, max_length: int, deadline: float, rel_gap: flo
     return _Bounds(lower, upper, word, rp, method, arithmetic_of(F), witness, notes)
 
 
-def _solve_zero(F: Family, word, lower, rp, witness, max_length, deadline) -> _Bounds:
+def _solve_zero(F: Family, word, lower, rp, witness, max_length, work: Work) -> _Bounds:
     """Best product has spectral radius 0: the family may be jointly nilpotent."""
     n, k = F.n, F.k
     if k ** n <= 1 << 14:
@@ -488,7 +494,7 @@ def _solve_zero(F: Family, word, lower, rp, witness, max_length, deadline) -> _B
             return _Bounds(Fraction(0), Fraction(0), word, rp,
                            f"jointly nilpotent: every product of length n = {n} vanishes (exact)",
                            arithmetic_of(F), witness)
-    up, l = rigorous_norm_upper(F, max_length, deadline)
+    up, l = rigorous_norm_upper(F, max_length, work)
     witness.update({"closed": False, "polytope_vertices": 0, "norm_length": l})
     return _Bounds(lower, up, word, rp, "norms of products (no product with rho > 0 found)",
                    arithmetic_of(F), witness)
@@ -502,7 +508,7 @@ def _q(x: Fraction | None) -> sp.Rational | None:
     return None if x is None else sp.Rational(x.numerator, x.denominator)
 
 
-def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 10.0,
+def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUDGET,
                method: str = "auto", rel_gap: float = 1e-6, floats_exact: bool = False,
                max_vertices: int = 1500) -> Result:
     """Rigorous bounds ``lower <= JSR(A_0, ..., A_{k-1}) <= upper`` (see the module docstring).
@@ -519,8 +525,21 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
         polytope or norm certificate evaluated in ball arithmetic over the balls).
     max_length
         Longest product examined by the s.m.p. search and by the norm bounds.
-    budget_seconds
-        Wall-clock budget (soft: the certificate of a closed polytope always completes).
+    budget
+        Work budget in work units (default ``DEFAULT_BUDGET`` = 10 000). Work is counted, never
+        timed, so the same input gives the same result on every machine, idle or loaded; a unit is
+        calibrated to about a millisecond of CPU on the reference machine (2 cores). What one unit
+        is, phase by phase: in the s.m.p. search, 4000 product entries evaluated (a product of
+        ``n x n`` matrices counts ``n^2 + 8``; at least one unit per level); in the invariant
+        polytope, two membership tests (0.5 each), a quarter of a small LP, ``500 / (m n)`` of a
+        full LP over ``m`` vertices, and a new vertex ``m n^2 / 30000``; in the complex polytope, two
+        tests or ``1 / (5 + m n / 20)`` of a cone program; in the rigorous norm bound,
+        ``14000 / (n^3 + 8 n^2 + 400)`` Arb products. The search gets a quarter of the budget, the
+        polytope half of what is left (0.15 for a complex leading eigenvalue), the rebuilt, complex
+        and relaxed polytopes shares of the rest, the norm bound what remains (at least
+        ``MIN_UNITS``). Soft: a phase may overrun its share by one step, and the certificate of a
+        closed polytope always completes (it is not counted). ``provenance["work"]`` says how many
+        units were spent, ``provenance["timing"]`` the wall-clock seconds (reported only).
     method
         ``"auto"`` (all reductions, search, invariant polytope), ``"polytope"`` (no structural
         shortcuts), ``"norms"`` (the textbook exhaustive method).
@@ -558,7 +577,7 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
 
     >>> from flint import arb
     >>> one = arb(1, arb(2) ** -100)
-    >>> r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget_seconds=5)
+    >>> r = jsr_bounds([[[one, 1], [0, 1]], [[1, 0], [1, one]]], budget=5000)
     >>> import sympy as sp
     >>> phi = (1 + sp.sqrt(5)) / 2
     >>> r.status, r.provenance["input_kind"], bool(r.lower <= phi <= r.upper)
@@ -568,10 +587,10 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
         raise AnalysisError(f"unknown method {method!r}; expected one of {METHODS}")
     if not (isinstance(max_length, int) and max_length >= 1):
         raise AnalysisError("max_length must be a positive integer")
-    if not budget_seconds > 0:
-        raise AnalysisError("budget_seconds must be positive")
-    t0 = time.perf_counter()
-    deadline = t0 + float(budget_seconds)
+    if isinstance(budget, bool) or not isinstance(budget, (int, float)) or not 0 < budget < float("inf"):
+        raise AnalysisError(f"budget must be a positive number of work units, not {budget!r}")
+    t0 = time.perf_counter()            # reported under provenance["timing"], decides nothing
+    work = Work(max(int(budget), 1))
     F = parse_family(matrices)
     # exact duplicates
     members: list[int] = []
@@ -579,7 +598,7 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
         if not any(F.equal(i, j) for j in members):
             members.append(i)
     G = F.subfamily(range(F.n), members) if len(members) < F.k else F
-    b = _solve(G, method=method, max_length=max_length, deadline=deadline, rel_gap=rel_gap,
+    b = _solve(G, method=method, max_length=max_length, work=work, rel_gap=rel_gap,
                max_vertices=max_vertices)
     word = tuple(members[i] for i in b.word)
 
@@ -627,9 +646,9 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
                        " intended matrices, so the status is at most numerical")
     prov: dict[str, Any] = {
         "method": b.method, "arithmetic": arithmetic, "input_kind": F.kind,
-        "max_length": max_length, "budget_seconds": budget_seconds, "rel_gap_target": rel_gap,
-        "relative_gap": gap, "seconds": round(time.perf_counter() - t0, 4),
-        "duplicates_removed": F.k - len(members),
+        "max_length": max_length, "budget": int(budget), "work": work.spent,
+        "rel_gap_target": rel_gap, "relative_gap": gap, "duplicates_removed": F.k - len(members),
+        "timing": {"seconds": round(time.perf_counter() - t0, 4)},
     }
     if F.kind == "ball":
         prov["input_max_radius"] = _q(round_up(F.max_radius()))
@@ -639,7 +658,7 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget_seconds: float = 1
     if status == INCONCLUSIVE:
         prov["message"] = (
             f"upper/lower - 1 = {gap:.3g} > {rel_gap:g}: the invariant polytope did not close "
-            f"({b.witness.get('stop_reason', 'not attempted')}). A larger budget_seconds or "
+            f"({b.witness.get('stop_reason', 'not attempted')}). A larger budget or "
             "max_vertices, or a longer max_length (a better s.m.p. candidate) may settle it; "
             "families with many near-tied products (the polytope grows towards each of them) "
             "or a reducible family without an exact invariant subspace (ball or algebraic "

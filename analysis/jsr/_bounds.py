@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Sequence
@@ -25,10 +24,6 @@ class _Bounds:
     arithmetic: str
     witness: dict = field(default_factory=dict)
     notes: list[str] = field(default_factory=list)
-
-
-def _time_left(deadline: float) -> float:
-    return deadline - time.perf_counter()
 
 
 def _lower_from_word(F: Family, word: Sequence[int]) -> tuple[Fraction, tuple[Fraction, Fraction]]:

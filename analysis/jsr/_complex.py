@@ -42,7 +42,8 @@ polytope cannot close; the complex one closes with the two vertices ``u`` and ``
 >>> import numpy as np
 >>> A = [np.array([[1.2, -1.6], [1.6, 1.2]]), np.array([[0.5, 0.0], [0.0, 0.25]])]
 >>> u = np.array([1.0, -1.0j])
->>> st = build_complex_polytope(A, 2.0, [u, u.conj()], deadline=1e18)
+>>> from analysis.jsr._work import Work
+>>> st = build_complex_polytope(A, 2.0, [u, u.conj()], work=Work(1000))
 >>> st.closed, len(st.V)
 (True, 2)
 
@@ -58,7 +59,6 @@ Calcolo 60 (2023) 56.
 
 from __future__ import annotations
 
-import time
 import warnings
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -71,6 +71,14 @@ from flint import acb, acb_mat, arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
 from ._polytope import COEF_BITS, VERTEX_BITS, Certificate, better_product
+from ._work import Work
+
+#: work units of the complex polytope (about a millisecond of CPU each on the reference machine): a
+#: membership test (the cheap pre-tests) ``CTEST_UNITS``, plus each cone program (Clarabel, interior
+#: point) ``SOCP_UNITS + m n / SOCP_ENTRIES_PER_UNIT`` for ``m`` vertices in ``C^n``
+CTEST_UNITS = 0.5
+SOCP_UNITS = 5.0
+SOCP_ENTRIES_PER_UNIT = 20.0
 
 
 def _round_complex(x: np.ndarray) -> tuple[np.ndarray, int]:
@@ -105,6 +113,9 @@ class ComplexPolytopeState:
     better_rho: float = 0.0
     lp_calls: int = 0
     stop_reason: str = ""
+    tests: int = 0                        # membership tests made
+    work_units: float = 0.0               # their cost in work units (CTEST_UNITS, SOCP_UNITS)
+    work_charged: int = 0
 
     def matrix(self) -> np.ndarray:
         return np.array(self.V).T if self.V else np.zeros((self.n, 0), dtype=complex)
@@ -138,6 +149,7 @@ def socp_norm(Vm: np.ndarray, x: np.ndarray) -> tuple[float, np.ndarray, np.ndar
     settings.verbose = False
     settings.tol_gap_abs = settings.tol_gap_rel = 1e-11
     settings.tol_feas = 1e-11
+    settings.max_threads = 1              # deterministic, and the machine is shared
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         sol = clarabel.DefaultSolver(P, q, A, b, cones, settings).solve()
@@ -173,6 +185,8 @@ class _CMember:
 
     def norm(self, x: np.ndarray):
         st = self.st
+        st.tests += 1
+        st.work_units += CTEST_UNITS
         if float(np.vdot(x, x).real) > self._r2 * (1 + 1e-9):
             return np.inf, None, None          # ||x||_2 <= max ||v_j||_2 on P
         if self._basis is not None:
@@ -183,6 +197,7 @@ class _CMember:
                 return s, idx, z
         Vm = st.matrix()
         st.lp_calls += 1
+        st.work_units += SOCP_UNITS + Vm.shape[1] * st.n / SOCP_ENTRIES_PER_UNIT
         out = socp_norm(Vm, x)
         if out is None:
             return np.inf, None, None
@@ -203,10 +218,14 @@ class _CMember:
 
 
 def build_complex_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndarray], *,
-                           deadline: float, max_vertices: int = 600, tol: float = 1e-11,
+                           work: Work, max_vertices: int = 600, tol: float = 1e-11,
                            check_better: bool = True) -> ComplexPolytopeState:
     """Float phase of the complex polytope algorithm (module docstring); ``roots`` are complex
-    vectors (leading eigenvectors of the candidate products, balanced)."""
+    vectors (leading eigenvectors of the candidate products, balanced). ``work`` is charged for
+    every membership test (``CTEST_UNITS`` and the cone programs); no image is tested once it is
+    exhausted."""
+    from ._polytope import _charge
+
     n, k = mats[0].shape[0], len(mats)
     B = [np.asarray(A, dtype=float) / r for A in mats]
     st = ComplexPolytopeState(n, k)
@@ -224,17 +243,19 @@ def build_complex_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence
     frontier = []
     for ri, x in enumerate(roots):
         nx, _, _ = mem.norm(np.asarray(x, dtype=complex))
+        _charge(work, st)
         if nx > 1 + tol:
             frontier.append(add(x, ri, ()))
     while frontier:
         new = []
         for j in frontier:
             for i in range(k):
-                if time.perf_counter() > deadline:
-                    st.stop_reason = "time budget exhausted"
+                if work.exhausted:
+                    st.stop_reason = "work budget exhausted"
                     return st
                 x = B[i] @ st.V[j]
                 nx, supp, z = mem.norm(x)
+                _charge(work, st)
                 if nx <= 1 + tol:
                     st.reps[(i, j)] = (np.asarray(supp), _round_coef(np.asarray(z)))
                     continue

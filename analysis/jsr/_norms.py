@@ -7,10 +7,20 @@ from fractions import Fraction
 
 from flint import arb, arb_mat, fmpq, fmpq_mat
 
-from ._bounds import _Bounds, _lower_from_word, _time_left
+from ._bounds import _Bounds, _lower_from_word
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, root_upper
 from ._search import balancing_transform, brute_force_bounds
+from ._work import Work
 
+#: work units of the rigorous norm bound (about a millisecond of CPU each on the reference machine):
+#: one unit per this many "entries" of Arb products, the product of two ``n x n`` ball matrices and
+#: its row sums counting ``n^3 + 8 n^2 + 400`` (the 400 for the per-product overhead)
+NORM_ENTRIES_PER_UNIT = 14000
+
+
+def norm_units(n: int) -> float:
+    """Work units of one Arb matrix product and its infinity norm (size ``n``)."""
+    return (n ** 3 + 8 * n * n + 400) / NORM_ENTRIES_PER_UNIT
 
 
 def _balanced_arb(F: Family) -> list[arb_mat]:
@@ -40,18 +50,21 @@ def _inf_norm_upper(M: arb_mat) -> Fraction:
     return best
 
 
-def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
+def rigorous_norm_upper(F: Family, max_length: int, work: Work,
                         max_products: int = 1 << 14) -> tuple[Fraction, int]:
     """``min_{l <= L} max_{|w| = l} ||P_w||^(1/l)`` (rigorous, Arb) in a balanced basis; returns
-    ``(bound, l)``. Stops at the time ``deadline`` or when ``k^l`` exceeds ``max_products``, but
-    always completes ``l = 1``."""
+    ``(bound, l)``. ``work`` is charged :func:`norm_units` per product; stops when it is
+    exhausted (a length ``l`` is used only when all its products are done) or when ``k^l``
+    exceeds ``max_products``, but always completes ``l = 1``."""
     B = _balanced_arb(F)
     best = root_upper(max(_inf_norm_upper(M) for M in B), 1)
     best_l = 1
     level = B
+    per = norm_units(F.n)
+    acc = 0.0                    # units not charged yet (whole units are charged as they add up)
     with arb_precision():
         for l in range(2, max_length + 1):
-            if len(level) * F.k > max_products or _time_left(deadline) <= 0:
+            if len(level) * F.k > max_products or work.exhausted:
                 break
             new, mx = [], Fraction(0)
             for P in level:
@@ -59,7 +72,11 @@ def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
                     Q = P * M
                     new.append(Q)
                     mx = max(mx, _inf_norm_upper(Q))
-                if _time_left(deadline) <= 0:
+                acc += per * F.k
+                if acc >= 1:
+                    work.charge(int(acc))
+                    acc -= int(acc)
+                if work.exhausted:
                     break
             else:
                 u = root_upper(mx, l)
@@ -71,14 +88,14 @@ def rigorous_norm_upper(F: Family, max_length: int, deadline: float,
     return best, best_l
 
 
-def _solve_norms(F: Family, *, max_length: int, deadline: float) -> _Bounds:
+def _solve_norms(F: Family, *, max_length: int, work: Work) -> _Bounds:
     L = max_length
     while F.k ** L > (1 << 16) and L > 1:
         L -= 1
     bf = brute_force_bounds(F.floats, L)
     word = bf["lower_word"]
     lower, rp = _lower_from_word(F, word)
-    up, up_l = rigorous_norm_upper(F, max_length, deadline)
+    up, up_l = rigorous_norm_upper(F, max_length, work)
     return _Bounds(lower, up, word, rp, "norms of all products (textbook brute force)",
                    arithmetic_of(F), {"closed": False, "polytope_vertices": 0, "norm_length": up_l,
                                "products_enumerated_to": L})

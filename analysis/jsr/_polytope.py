@@ -46,7 +46,6 @@ Math. Softw. 46(3) (2020) 29.
 from __future__ import annotations
 
 import threading
-import time
 import warnings
 from dataclasses import dataclass, field
 from fractions import Fraction
@@ -58,6 +57,17 @@ from scipy.optimize import linprog
 from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
+from ._work import Work
+
+#: work units of the float polytope (calibrated so that a unit is about a millisecond of CPU on the
+#: reference machine): a membership test (:meth:`_Member.norm`, the cheap pre-tests) costs
+#: ``TEST_UNITS``, plus each linear program it solves: the small one over ``~3 n`` aligned vertices
+#: (a fresh HiGHS model) ``SMALL_LP_UNITS``, the full warm-started one ``m n / LP_ENTRIES_PER_UNIT``
+#: for ``m`` vertices in ``R^n``; a new vertex (its basis update) ``m n^2 / VERTEX_ENTRIES_PER_UNIT``
+TEST_UNITS = 0.5
+SMALL_LP_UNITS = 4.0
+LP_ENTRIES_PER_UNIT = 500.0
+VERTEX_ENTRIES_PER_UNIT = 30000.0
 
 #: mantissa bits kept when a float vertex is rounded to a dyadic rational
 VERTEX_BITS = 52
@@ -93,6 +103,9 @@ class PolytopeState:
     lp_calls: int = 0
     stop_reason: str = ""
     max_norm_seen: float = 0.0
+    tests: int = 0                        # membership tests made
+    work_units: float = 0.0               # their cost in work units (see TEST_UNITS)
+    work_charged: int = 0                 # whole units of it charged to the budget
 
     def matrix(self) -> np.ndarray:
         return np.array(self.V).T if self.V else np.zeros((self.n, 0))
@@ -163,7 +176,7 @@ class _WarmLP:
             return None
         h = _quiet_highs(highspy)
         for key, val in (("output_flag", False), ("presolve", "off"), ("solver", "simplex"),
-                         ("simplex_strategy", 1), ("primal_feasibility_tolerance", 1e-10),
+                         ("simplex_strategy", 1), ("threads", 1), ("primal_feasibility_tolerance", 1e-10),
                          ("dual_feasibility_tolerance", 1e-10)):
             h.setOptionValue(key, val)
         empty_i, empty_v = np.array([], dtype=np.int32), np.array([], dtype=np.float64)
@@ -215,6 +228,7 @@ class _Member:
     def refresh(self) -> None:
         st = self.st
         m = len(st.V)
+        st.work_units += m * st.n * st.n / VERTEX_ENTRIES_PER_UNIT
         self._r2 = max((float(v @ v) for v in st.V), default=0.0)
         if len(self._Y) and m:
             ok = np.abs(self._Y @ st.V[-1]) <= 1.0
@@ -234,6 +248,8 @@ class _Member:
         """``(||x||_P, support, coefficients)``; ``inf`` (and no representation) when ``x`` is
         outside ``span(V)`` or certainly outside ``P``."""
         st = self.st
+        st.tests += 1
+        st.work_units += TEST_UNITS
         xx = float(x @ x)
         if self.shortcuts and xx > self._r2 * (1 + 1e-9):
             return np.inf, None, None
@@ -270,6 +286,7 @@ class _Member:
             return self._lp(Vm, x, keep_dual=True)
         w.sync(self.st.V)
         self.st.lp_calls += 1
+        self.st.work_units += len(self.st.V) * self.st.n / LP_ENTRIES_PER_UNIT
         out = w.solve(x)
         if out is None:
             return None
@@ -283,6 +300,7 @@ class _Member:
     def _lp(self, Vm: np.ndarray, x: np.ndarray, keep_dual: bool = False):
         m = Vm.shape[1]
         self.st.lp_calls += 1
+        self.st.work_units += SMALL_LP_UNITS if m <= 6 * self.st.n else m * self.st.n / LP_ENTRIES_PER_UNIT
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             res = linprog(np.ones(2 * m), A_eq=np.hstack([Vm, -Vm]), b_eq=x, bounds=(0, None),
@@ -347,10 +365,23 @@ def leading_is_real(mats: Sequence[np.ndarray], word: Sequence[int], rel: float 
     return bool(np.all(np.abs(w[np.abs(w) >= top * (1 - rel)].imag) <= 1e-9 * max(top, 1e-300)))
 
 
+def _charge(work: Work, st) -> None:
+    """Charge ``work`` the whole units of ``st.work_units`` not charged yet (the fractional rest
+    is carried to the next test, so the total charged does not depend on how tests group)."""
+    due = int(st.work_units) - st.work_charged
+    if due > 0:
+        work.charge(due)
+        st.work_charged += due
+
+
 def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndarray], *,
-                   deadline: float, max_vertices: int = 1500, tol: float = 1e-11,
+                   work: Work, max_vertices: int = 1500, tol: float = 1e-11,
                    check_better: bool = True, thin_stop: float | None = None) -> PolytopeState:
     """The float phase of the invariant polytope algorithm (see module docstring).
+
+    ``work``: the :class:`~analysis.jsr._work.Work` budget, charged for every membership test
+    (``TEST_UNITS`` and the linear programs it solves); no image is tested once it is exhausted
+    (``stop_reason`` "work budget exhausted").
 
     ``thin_stop``: stop early (``stop_reason`` starting with ``"thin polytope"``) when the vertex
     matrix spans but its condition number exceeds this value (checked every ``2 n`` vertices from ``8 n`` on):
@@ -375,6 +406,7 @@ def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndar
     while True:
         for x in root_list:
             nx, _, _ = mem.norm(x)
+            _charge(work, st)
             if nx > 1 + tol:
                 frontier.append(add(x, ri, ()))
             ri += 1
@@ -383,11 +415,12 @@ def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndar
             new: list[int] = []
             for j in frontier:
                 for i in range(k):
-                    if time.perf_counter() > deadline:
-                        st.stop_reason = "time budget exhausted"
+                    if work.exhausted:
+                        st.stop_reason = "work budget exhausted"
                         return st
                     x = B[i] @ st.V[j]
                     nx, supp, lam = mem.norm(x)
+                    _charge(work, st)
                     if nx <= 1 + tol:
                         st.reps[(i, j)] = (supp, lam)
                         continue
@@ -426,10 +459,10 @@ def build_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence[np.ndar
 
 
 def complete_reps(mats: Sequence[np.ndarray], r: float, st: PolytopeState, *,
-                  deadline: float) -> bool:
+                  work: Work) -> bool:
     """For an unclosed polytope: representations of the missing images (norms may exceed 1), so
     that :func:`certify_polytope` can still bound ``||A_i||_P``. False if ``V`` does not span or
-    time runs out."""
+    the ``work`` budget runs out (charged as in :func:`build_polytope`)."""
     if not st.V or np.linalg.matrix_rank(st.matrix()) < st.n:
         return False
     B = [np.asarray(A, dtype=float) / r for A in mats]
@@ -440,9 +473,10 @@ def complete_reps(mats: Sequence[np.ndarray], r: float, st: PolytopeState, *,
         for i in range(st.k):
             if (i, j) in st.reps:
                 continue
-            if time.perf_counter() > deadline:
+            if work.exhausted:
                 return False
             nx, supp, lam = mem.norm(B[i] @ st.V[j])
+            _charge(work, st)
             if supp is None:
                 return False
             st.reps[(i, j)] = (supp, lam)

@@ -34,6 +34,14 @@ from typing import Sequence
 
 import numpy as np
 
+from ._work import Work
+
+#: work units of the s.m.p. search (about a millisecond of CPU each on the reference machine): one
+#: unit per this many "entries" of evaluated products, a product of ``n x n`` matrices counting
+#: ``n^2 + 8`` (its spectral radius and norm; the 8 stand for the per-product overhead of small
+#: matrices), and at least one unit per level
+SEARCH_ENTRIES_PER_UNIT = 4000
+
 
 def canonical_word(word: Sequence[int]) -> tuple[int, ...]:
     """Least rotation of the primitive root of ``word``.
@@ -98,12 +106,22 @@ class SearchResult:
     levels_done: int = 0
     products_evaluated: int = 0
     exhaustive_to: int = 0               # every word up to this length was evaluated
-    seconds: float = 0.0
+    seconds: float = 0.0                 # wall clock (reported as timing only, decides nothing)
+    work: int = 0                        # work units charged
+
+
+def search_units(products: int, n: int) -> int:
+    """Work units of evaluating ``products`` products of ``n x n`` matrices (at least 1)."""
+    return max(1, -(-products * (n * n + 8) // SEARCH_ENTRIES_PER_UNIT))
 
 
 def smp_search(mats: Sequence[np.ndarray], max_length: int, *, beam: int = 4000,
-               deadline: float | None = None, near: float = 1e-9) -> SearchResult:
+               work: Work | None = None, near: float = 1e-9) -> SearchResult:
     """Gripenberg-type branch and bound for the s.m.p.: see the module docstring.
+
+    ``work``: a :class:`~analysis.jsr._work.Work` budget; every level is charged
+    :func:`search_units` of its products, and no new level starts once it is exhausted (the
+    search always evaluates the single matrices). ``None``: no limit but ``max_length``.
 
     ``candidates`` lists the canonical words whose ``rho^(1/L)`` is within relative ``near`` of
     the best (several s.m.p.s, or a rotation-free list of ties), best first, at most 8.
@@ -144,8 +162,9 @@ def smp_search(mats: Sequence[np.ndarray], max_length: int, *, beam: int = 4000,
     exhaustive_to = 1
     all_kept = True
     level = 1
+    charged = 0
     while level < max_length:
-        if deadline is not None and time.perf_counter() > deadline:
+        if work is not None and work.exhausted:
             break
         level += 1
         N = len(words)
@@ -154,6 +173,10 @@ def smp_search(mats: Sequence[np.ndarray], max_length: int, *, beam: int = 4000,
                                       np.tile(np.arange(k), N).reshape(-1, 1)], axis=1)
         rho = spectral_radii(child_prods) ** (1.0 / level)
         evaluated += len(rho)
+        u = search_units(len(rho), n)
+        charged += u
+        if work is not None:
+            work.charge(u)
         # best, earliest wins ties (stable argmax)
         j = int(np.argmax(rho))
         if rho[j] > best * (1 + 1e-13):
@@ -180,7 +203,7 @@ def smp_search(mats: Sequence[np.ndarray], max_length: int, *, beam: int = 4000,
     cands = [(best, best_word)] + [c for c in cands if c[1] != best_word]
     cands = [(r * s, w) for r, w in cands[:8]]
     return SearchResult(best * s, best_word, cands, level, evaluated, exhaustive_to,
-                        time.perf_counter() - t0)
+                        time.perf_counter() - t0, charged)
 
 
 def brute_force_bounds(mats: Sequence[np.ndarray], max_length: int, *,

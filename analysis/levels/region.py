@@ -67,20 +67,20 @@ def _covers(part, lo, hi) -> bool:
 
 
 def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max: int = 4,
-                          budget_seconds: float = 30.0) -> Result:
+                          budget: int = 30_000) -> Result:
     """Certify that ``S_a`` is C^m for every value of its one parameter ``name`` in the open ``(lo, hi)``.
 
     Exact: the Dyn–Levin norm test ``||(1/2 S_{a_{m+1}})^L||_inf < 1`` holds on an exact sublevel
     set containing ``(lo, hi)`` for some ``L <= L_max``; failing that, on pieces with their own L
-    (:func:`analysis.regularity.interior.ck_interior`, L <= 12); otherwise inconclusive with the
-    exact strips that remain.
+    (:func:`analysis.regularity.interior.ck_interior`, L <= 12, with ``budget`` work units: counted,
+    never timed); otherwise inconclusive with the exact strips that remain.
 
     >>> w = sp.Symbol("omega")
     >>> a = LaurentSymbol.from_mask([-5*w, -7*w, sp.Rational(1,4)+3*w, sp.Rational(3,4)+9*w,
     ...                              sp.Rational(3,4)+9*w, sp.Rational(1,4)+3*w, -7*w, -5*w], start=-4)
     >>> limit_smoothness_open(a, 2, "omega", 0, (sp.sqrt(6) - 1) / 80).status
     'certified'
-    >>> r = limit_smoothness_open(a, 2, "omega", 0, sp.Rational(1, 40), L_max=2, budget_seconds=5)
+    >>> r = limit_smoothness_open(a, 2, "omega", 0, sp.Rational(1, 40), L_max=2, budget=5000)
     >>> r.status, r.witness["strips"][0][1]
     ('inconclusive', 1/40)
     """
@@ -109,7 +109,7 @@ def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max:
     # several L on several pieces: exact parametric norms on boxes and open end pieces (issue 14)
     from ..regularity.interior import ck_interior
 
-    r = ck_interior(a, m, lo, hi, name, L_max=max(L_max, 12), budget_seconds=budget_seconds)
+    r = ck_interior(a, m, lo, hi, name, L_max=max(L_max, 12), budget=budget)
     if r.is_certified:
         return Result(value=True, status=CERTIFIED,
                       witness={"smooth": True, "test": "Dyn-Levin norm tests on pieces (exact parametric norms)",

@@ -51,7 +51,7 @@ Algorithm
    run them: :class:`concurrent.futures.ProcessPoolExecutor` (``executor="local"``), a Dask
    cluster (``executor="dask://host:port"``, via ``distributed.Client.map`` and
    ``distributed.as_completed``), or in process (``executor=None``). Results do not depend on
-   the executor except through the wall-clock budget of each JSR computation.
+   the executor: the budget of each JSR computation counts work, not time.
 
 References
 ----------
@@ -66,7 +66,6 @@ SciPy 2015 (the ``distributed`` scheduler).
 from __future__ import annotations
 
 import functools
-import math
 import os
 import sys
 import time
@@ -170,19 +169,20 @@ def _verdicts(a: LaurentSymbol, h: Result | None, k: int | None, j_levels: Seque
         elif h.upper is not None and h.upper <= j:
             out[key] = False
         else:
-            out[key] = smoothness(a, j, budget_seconds=budget).value
+            out[key] = smoothness(a, j, budget=budget).value
     return out
 
 
 def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: Sequence[int] = DEFAULT_J_LEVELS,
-                   budget_seconds: float = 2.0) -> dict[str, Any]:
+                   budget: int = 2_000) -> dict[str, Any]:
     """Certified alpha enclosure and C^j verdicts of ``symbol.subs(values)`` (one atlas sample).
 
     Returns a dict with ``alpha_lower``, ``alpha_upper`` (rationals), ``alpha`` (exact when
     known), ``alpha_exact`` (a closed form such as ``"3 - log2(rho(T_01))/2"`` when the JSR is
     proven attained), ``k`` (factors ``(1+z)`` minus one), ``status``, one ``"C^j"`` entry per
-    ``j`` (True / False / None = undecided), ``seconds``, and ``note`` when the point could not
-    be analysed (e.g. the sum rules fail there).
+    ``j`` (True / False / None = undecided), ``timing`` (``{"seconds": ...}``, wall clock, reported
+    only), and ``note`` when the point could not be analysed (e.g. the sum rules fail there).
+    ``budget``: work units of each JSR computation (:func:`analysis.jsr.jsr_bounds`).
 
     ``status`` is *certified* when the enclosure is certified and every verdict is decided.
 
@@ -202,7 +202,7 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
     h = k = None
     try:
         k, _ = difference_mask(a)
-        h = holder_exponent(a, budget_seconds=budget_seconds)
+        h = holder_exponent(a, budget=budget)
     except AnalysisError as exc:
         sample["note"] = str(exc)
     if h is not None:
@@ -210,13 +210,13 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
         ex = h.witness.get("alpha_exact")
         sample["alpha_exact"] = None if ex is None else (ex if isinstance(ex, str) else sp.sstr(ex))
     try:
-        sample.update(_verdicts(a, h, k, j_levels, budget_seconds))
+        sample.update(_verdicts(a, h, k, j_levels, budget))
     except AnalysisError as exc:  # pragma: no cover - verdicts only fail where alpha failed
         sample["note"] = str(exc)
         sample.update({f"C^{j}": None for j in j_levels})
     decided = all(sample[f"C^{j}"] is not None for j in j_levels)
     sample["status"] = CERTIFIED if h is not None and h.status == CERTIFIED and decided else INCONCLUSIVE
-    sample["seconds"] = round(time.perf_counter() - t0, 4)
+    sample["timing"] = {"seconds": round(time.perf_counter() - t0, 4)}
     return sample
 
 
@@ -362,7 +362,7 @@ def _exceptional(symbol: LaurentSymbol) -> list[dict]:
 
 def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1: int = 9, n2: int = 9,
                  j_levels: Iterable[int] = DEFAULT_J_LEVELS, refine_levels: int = 1,
-                 executor="local", workers: int | None = None, budget_seconds: float = 2.0,
+                 executor="local", workers: int | None = None, budget: int = 2_000,
                  progress: bool = True, arity: int = 2) -> Result:
     """Certified Hölder-exponent enclosures and C^j verdicts on an adaptively refined 2-D grid.
 
@@ -387,9 +387,11 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
         a ``concurrent.futures``-style ``submit``.
     workers
         Local processes (default: all cores); ignored for Dask.
-    budget_seconds
-        Wall-clock budget of each JSR computation (soft); a point that runs out is *inconclusive*
-        but keeps a rigorous (wider) enclosure.
+    budget
+        Work budget of each JSR computation, in the work units of :func:`analysis.jsr.jsr_bounds`
+        (counted, never timed: about a millisecond each on the reference machine, so the atlas
+        does not depend on the machine, its load or the executor); a point that runs out is
+        *inconclusive* but keeps a rigorous (wider) enclosure.
     progress
         Show a tqdm bar on stderr (only when stderr is a terminal).
     arity
@@ -402,12 +404,13 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
         ``value``: the samples, sorted by ``(p1, p2)``, each a dict with ``p1``, ``p2`` (exact),
         ``alpha_lower``, ``alpha_upper``, ``alpha`` (exact when known), ``alpha_exact``, ``k``,
         ``status``, ``"C^j"`` verdicts (True/False/None), ``level`` (0 = initial grid), ``index``
-        (lattice coordinates), ``exceptional`` (more factors ``(1+z)`` than generic) and
-        ``seconds``. ``status``: *certified* when every sample is.
+        (lattice coordinates) and ``exceptional`` (more factors ``(1+z)`` than generic).
+        ``status``: *certified* when every sample is.
         ``witness``: ``grid`` (names, ranges, sizes, ``refine_levels``, ``j_levels``, lattice step),
         ``counts`` (samples, certified, inconclusive, per level, refined cells per level, C^j
         tallies), ``exceptional`` (parameter sets with more factors ``(1+z)``, where alpha can jump
-        up), ``seconds`` (wall) and ``task_seconds`` (sum over samples), ``executor``.
+        up), ``executor``. ``provenance["timing"]``: ``seconds`` (wall), ``task_seconds`` (sum over
+        samples) and ``samples`` (each sample's seconds, in the order of ``value``).
 
     Examples
     --------
@@ -447,11 +450,11 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
     if not js or js[0] < 0:
         raise AnalysisError("j_levels must be a non-empty list of integers >= 0")
     try:
-        budget = float(budget_seconds)
-    except (TypeError, ValueError):
-        raise AnalysisError(f"budget_seconds must be a number, not {budget_seconds!r}") from None
-    if not budget > 0 or math.isinf(budget):
-        raise AnalysisError("budget_seconds must be a positive number")
+        budget = int(float(budget))
+    except (TypeError, ValueError, OverflowError):
+        raise AnalysisError(f"budget must be a number of work units, not {budget!r}") from None
+    if not budget > 0:
+        raise AnalysisError("budget must be a positive number of work units")
     _check_executor(executor, workers)
 
     R = refine_levels
@@ -512,10 +515,11 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
                 break
         description = runner.description
 
-    rows = []
+    rows, sample_seconds = [], []
     for (i, j), s in sorted(samples.items()):
         s = dict(s)
         s.pop("key", None)
+        sample_seconds.append((s.pop("timing", None) or {}).get("seconds"))
         row = {"p1": coord(i, N1, lo1, hi1), "p2": coord(j, N2, lo2, hi2), "index": (i, j)}
         row.update(s)
         row["exceptional"] = _is_exceptional(row, generic_k)
@@ -536,15 +540,16 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
         "exceptional": _exceptional(region) if arity == 2 else am.exceptional_mary(region, arity),
         "generic_k": generic_k,
         "exceptional_samples": sum(1 for r in rows if r["exceptional"]),
-        "seconds": round(wall, 3),
-        "task_seconds": round(sum(r.get("seconds") or 0 for r in rows), 3),
         "executor": description, **({"arity": arity} if arity != 2 else {}),
     }
     return Result(value=rows, status=CERTIFIED if certified == len(rows) else INCONCLUSIVE, witness=witness,
                   provenance={"method": "certified Hölder enclosures (alpha = k - log2 JSR) at exact rational "
                                         "points; cells with disagreeing C^j corner verdicts refined",
-                              "budget_seconds": budget, "symbol": symbol,
-                              "caveat": "between samples the map is interpolated, not proven"})
+                              "budget": budget, "symbol": symbol,
+                              "caveat": "between samples the map is interpolated, not proven",
+                              "timing": {"seconds": round(wall, 3),
+                                         "task_seconds": round(sum(x or 0 for x in sample_seconds), 3),
+                                         "samples": sample_seconds}})
 
 
 def _generic_k(symbol: LaurentSymbol) -> int | None:

@@ -44,9 +44,10 @@ __all__ = ["evaluate_point_mary", "generic_k_mary", "exceptional_mary"]
 
 
 def evaluate_point_mary(symbol: LaurentSymbol, values: Mapping[str, Any], m: int, j_levels: Sequence[int] = (1, 2, 3),
-                        budget_seconds: float = 2.0) -> dict[str, Any]:
+                        budget: int = 2_000) -> dict[str, Any]:
     """Certified alpha enclosure and C^j verdicts of the m-ary ``symbol.subs(values)`` (the keys of
-    :func:`analysis.regularity.atlas.evaluate_point`; ``alpha_exact`` is None)."""
+    :func:`analysis.regularity.atlas.evaluate_point`; ``alpha_exact`` is None; ``budget`` in work
+    units per JSR computation)."""
     m = check_arity(m)
     t0 = time.perf_counter()
     a = symbol.subs(dict(values)) if values else symbol
@@ -55,7 +56,7 @@ def evaluate_point_mary(symbol: LaurentSymbol, values: Mapping[str, Any], m: int
     h = k = None
     try:
         k, _ = difference_mask_mary(a, m)
-        h = holder_exponent_mary(a, m, budget_seconds=budget_seconds)
+        h = holder_exponent_mary(a, m, budget=budget)
     except AnalysisError as exc:
         sample["note"] = str(exc)
     if h is not None:
@@ -71,10 +72,10 @@ def evaluate_point_mary(symbol: LaurentSymbol, values: Mapping[str, Any], m: int
         elif h.upper is not None and h.upper <= j:
             sample[key] = False
         else:
-            sample[key] = smoothness_mary(a, m, j, budget_seconds=budget_seconds).value
+            sample[key] = smoothness_mary(a, m, j, budget=budget).value
     decided = all(sample[f"C^{j}"] is not None for j in j_levels)
     sample["status"] = CERTIFIED if h is not None and h.status == CERTIFIED and decided else INCONCLUSIVE
-    sample["seconds"] = round(time.perf_counter() - t0, 4)
+    sample["timing"] = {"seconds": round(time.perf_counter() - t0, 4)}
     return sample
 
 

@@ -74,7 +74,7 @@ def ball_transition_matrices(c: Sequence[Any]) -> tuple[list[list[Any]], list[li
 
 
 def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = None,
-               budget_seconds: float = 60.0, max_length: int = 16,
+               budget: int = 60_000, max_length: int = 16,
                rel_gap: float = 1e-8, max_vertices: int = 4000) -> Result:
     """Certified Hölder exponent of a scheme whose mask is known by **certified enclosures** (the ball route).
 
@@ -97,9 +97,9 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
     prec
         Radius bound ``2^-prec`` of the mask balls (default ``128 + 4 N``; the division by
         ``(1+z)^N`` widens the balls by at most ``binom(2N, N)``).
-    budget_seconds, max_length, rel_gap, max_vertices
-        Passed to :func:`analysis.jsr.jsr_bounds` (``rel_gap`` is on the JSR; the gap in alpha
-        is about ``rel_gap / ln 2``).
+    budget, max_length, rel_gap, max_vertices
+        Passed to :func:`analysis.jsr.jsr_bounds` (``budget`` in its work units, counted, never
+        timed; ``rel_gap`` is on the JSR; the gap in alpha is about ``rel_gap / ln 2``).
 
     Returns
     -------
@@ -112,12 +112,12 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
     Examples
     --------
     >>> import schemes
-    >>> r = ball_route(schemes.get("daubechies-4"), budget_seconds=10)
+    >>> r = ball_route(schemes.get("daubechies-4"), budget=10_000)
     >>> r.status, round(float(r.lower), 12), float(r.upper - r.lower) < 1e-20
     ('certified', 0.550015686524, True)
     >>> import math; round(2 - math.log2(1 + math.sqrt(3)), 12)        # Daubechies-Lagarias
     0.550015686524
-    >>> r = ball_route(schemes.get("daubechies-6"), budget_seconds=10)
+    >>> r = ball_route(schemes.get("daubechies-6"), budget=10_000)
     >>> r.status, round(float(r.lower), 6), r.witness["product"]
     ('certified', 1.087834, (0,))
 
@@ -188,7 +188,7 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
             c.pop(0)
         T0, T1 = ball_transition_matrices(c)
     c_rad = max(arb_to_fraction_bounds(flint.arb(x.rad()))[1] for x in c)
-    r = jsr_bounds([T0, T1], budget_seconds=budget_seconds, max_length=max_length,
+    r = jsr_bounds([T0, T1], budget=budget, max_length=max_length,
                    rel_gap=rel_gap, max_vertices=max_vertices)
     lo, hi = r.lower, r.upper
     if lo is None or lo <= 0:
@@ -211,5 +211,6 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
                               "source": source, "prec": prec, "alpha_gap": gap,
                               "jsr_method": r.provenance.get("method"),
                               "valid_for": "every mask in the balls with the factor (1+z)^N",
-                              "seconds": round(_time.perf_counter() - t0, 4)})
+                              "work": r.provenance.get("work"),
+                              "timing": {"seconds": round(_time.perf_counter() - t0, 4)}})
 

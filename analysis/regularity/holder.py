@@ -59,7 +59,12 @@ from .balls import ball_route
 from .convergence import NotConvergent, difference_mask, log2_interval, power_of_two_exponent
 
 
-def holder_exponent(a: Any, *, budget_seconds: float | None = None, max_length: int | None = None,
+#: default work budgets of :func:`holder_exponent` (units of :func:`analysis.jsr.jsr_bounds`)
+EXACT_BUDGET = 20_000
+BALL_BUDGET = 60_000
+
+
+def holder_exponent(a: Any, *, budget: int | None = None, max_length: int | None = None,
                     rel_gap: float = 1e-8, arithmetic: str | None = None, sum_rules: int | None = None,
                     prec: int | None = None) -> Result:
     """A certified enclosure ``[lower, upper]`` of the Hölder exponent of the scheme ``S_a``.
@@ -68,8 +73,13 @@ def holder_exponent(a: Any, *, budget_seconds: float | None = None, max_length: 
     for a :class:`~analysis.algebra.symbol.LaurentSymbol`) or ``"ball"`` (the symbol's
     coefficients enclosed in Arb balls; the default for every other kind). ``sum_rules`` and
     ``prec`` are for the ball route (``N`` for a bare list of balls; ball radius ``2^-prec``).
-    ``budget_seconds`` (default 20 s exact, 60 s ball), ``max_length`` and ``rel_gap`` go to
-    :func:`analysis.jsr.jsr_bounds`.
+    ``budget`` (default 20 000 work units exact, 60 000 ball), ``max_length`` and ``rel_gap`` go
+    to :func:`analysis.jsr.jsr_bounds`. The budget counts work, never time, so the result does not
+    depend on the machine or its load: a unit is about a millisecond of the reference machine,
+    counted as the joint spectral radius search works (1000 product entries in the s.m.p. search,
+    50 polytope membership tests or one linear program, a few Arb products in the norm bound; see
+    :func:`analysis.jsr.jsr_bounds`). ``provenance["work"]`` says how many were spent,
+    ``provenance["timing"]`` the wall-clock seconds (reported only).
 
     ``value`` is the exact exponent when the JSR is attained by a product with a rational
     spectral radius that is a power of two (B-splines); otherwise ``lower``/``upper`` are
@@ -91,11 +101,11 @@ def holder_exponent(a: Any, *, budget_seconds: float | None = None, max_length: 
     if arithmetic not in (None, "exact", "ball"):
         raise AnalysisError(f"arithmetic must be 'exact' or 'ball', not {arithmetic!r}")
     if isinstance(a, LaurentSymbol) and arithmetic != "ball":
-        return _exact_route(a, budget_seconds=20.0 if budget_seconds is None else budget_seconds,
+        return _exact_route(a, budget=EXACT_BUDGET if budget is None else budget,
                             max_length=12 if max_length is None else max_length, rel_gap=rel_gap)
     if arithmetic == "exact":
         raise AnalysisError(f"exact arithmetic needs an exact symbol, not {type(a).__name__}")
-    kw = {"budget_seconds": 60.0 if budget_seconds is None else budget_seconds,
+    kw = {"budget": BALL_BUDGET if budget is None else budget,
           "max_length": 16 if max_length is None else max_length, "rel_gap": rel_gap}
     if isinstance(a, ClosedFormMask):
         return _closed_form_route(a, prec=prec, **kw)
@@ -144,7 +154,7 @@ def _approximate_route(m, **kw) -> Result:
     if N > 1:
         # a bound, not a value (its ceiling is 1): a small budget; the polytope would chase the
         # many products tied at 1/2
-        one = ball_route(m.enclosure(132), sum_rules=1, prec=132, **{**kw, "budget_seconds": 2.0, "max_length": 8})
+        one = ball_route(m.enclosure(132), sum_rules=1, prec=132, **{**kw, "budget": 2000, "max_length": 8})
         witness["every_convergent_mask"] = {"sum_rules": 1, "lower": one.lower, "status": CERTIFIED,
                                             "statement": "alpha >= lower (a rigorous bound; one factor caps it at 1)",
                                             "valid_for": "every mask in the balls with a(1) = 2 and (1+z) | a"}
@@ -152,7 +162,7 @@ def _approximate_route(m, **kw) -> Result:
                   provenance={**h.provenance, "message": message})
 
 
-def _exact_route(a: LaurentSymbol, *, budget_seconds: float = 20.0, max_length: int = 12,
+def _exact_route(a: LaurentSymbol, *, budget: int = EXACT_BUDGET, max_length: int = 12,
                  rel_gap: float = 1e-8) -> Result:
     """A certified enclosure ``[lower, upper]`` of the Hölder exponent of the scheme ``S_a``.
 
@@ -165,7 +175,7 @@ def _exact_route(a: LaurentSymbol, *, budget_seconds: float = 20.0, max_length: 
 
     k, c = difference_mask(a)
     T0, T1 = transition_matrices(c)
-    r = jsr_bounds([T0, T1], budget_seconds=budget_seconds, max_length=max_length, rel_gap=rel_gap)
+    r = jsr_bounds([T0, T1], budget=budget, max_length=max_length, rel_gap=rel_gap)
     lo, hi = r.lower, r.upper
     witness = {"k": k, "c": c, "jsr": r, "product": r.witness.get("product"),
                "rho_product": r.witness.get("rho_product")}
@@ -195,7 +205,8 @@ def _exact_route(a: LaurentSymbol, *, budget_seconds: float = 20.0, max_length: 
                   provenance={"method": "alpha = k - log2 JSR(T0, T1) of c = 2^k a/(1+z)^(k+1)",
                               "jsr_method": r.provenance.get("method"),
                               "arithmetic": r.provenance.get("arithmetic"),
-                              "seconds": r.provenance.get("seconds"),
+                              "work": r.provenance.get("work"),
+                              "timing": r.provenance.get("timing"),
                               **({"message": r.provenance["message"]} if "message" in r.provenance else {})})
 
 
@@ -242,7 +253,7 @@ def _spectral_radius_at_least_exact(P: sp.Matrix, theta: sp.Rational) -> bool | 
         return None
 
 
-def smoothness(a: Any, j: int, *, budget_seconds: float = 20.0, max_length: int = 12) -> Result:
+def smoothness(a: Any, j: int, *, budget: int = EXACT_BUDGET, max_length: int = 12) -> Result:
     """Is ``S_a`` C^j?  ``value`` True (alpha > j certified), False (alpha <= j certified), None.
 
     ``a``: any kind of mask :func:`holder_exponent` takes (ball masks: from the enclosure of alpha).
@@ -255,7 +266,7 @@ def smoothness(a: Any, j: int, *, budget_seconds: float = 20.0, max_length: int 
         raise AnalysisError("j must be >= 0")
     if not isinstance(a, LaurentSymbol):
         try:
-            return verdict_from_enclosure(holder_exponent(a, budget_seconds=budget_seconds), j)
+            return verdict_from_enclosure(holder_exponent(a, budget=budget), j)
         except NotConvergent as exc:
             return exc.result()
     try:
@@ -270,7 +281,7 @@ def smoothness(a: Any, j: int, *, budget_seconds: float = 20.0, max_length: int 
     quick = _quick_verdict(a, c, k, j)
     if quick is not None:
         return quick
-    h = holder_exponent(a, budget_seconds=budget_seconds, max_length=max_length)
+    h = holder_exponent(a, budget=budget, max_length=max_length)
     theta = sp.Integer(2) ** (k - j)
     jsr = h.witness["jsr"]
     lo, hi = jsr.lower, jsr.upper

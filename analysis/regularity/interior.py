@@ -46,6 +46,7 @@ import sympy as sp
 
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
+from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.difference import difference_symbol
 from ..stationary.mary import difference_symbol_mary
@@ -71,16 +72,43 @@ def _dyadic_between(x: RealAlgebraic, y: RealAlgebraic) -> sp.Rational:
             return rational_between(x, y)
 
 
-class _Norms:
-    """``ParametricNorm`` for L = 1..L_max, built lazily, with float point evaluation."""
+#: default work budget of :func:`ck_interior` and of its strip closing (units: see there)
+DEFAULT_INTERIOR_BUDGET = 120_000
+DEFAULT_STRIP_BUDGET = 30_000
+#: work units of the norm tests (about a millisecond of CPU each on the reference machine), by the
+#: size ``s = rows K^2`` of a parametric norm N_L (``rows`` coefficient polynomials of ``K`` coefficients):
+#: building N_L ``2 + s / 6000``, a box test (float Bernstein screen, exact bound) ``0.1 + s / 50000``,
+#: an end-piece test (exact signs and roots) ``5 + s / 10000``
+BUILD_UNITS, BUILD_SIZE_PER_UNIT = 2.0, 6000.0
+BOX_UNITS, BOX_SIZE_PER_UNIT = 0.1, 50000.0
+END_UNITS, END_SIZE_PER_UNIT = 5.0, 10000.0
 
-    def __init__(self, am, p, L_max, arity):
+
+def _size(N: ParametricNorm) -> int:
+    return len(N.C) * (N.n + 1) ** 2
+
+
+class _Norms:
+    """``ParametricNorm`` for L = 1..L_max, built lazily, with float point evaluation; ``charge``
+    bills a work budget for what is built and tested (fractions carried, whole units charged)."""
+
+    def __init__(self, am, p, L_max, arity, work: Work | None = None):
         self.am, self.p, self.L_max, self.arity = am, p, L_max, arity
         self._cache: dict[int, ParametricNorm] = {}
+        self.work, self._owed = work, 0.0
+
+    def charge(self, units: float) -> None:
+        if self.work is None:
+            return
+        self._owed += units
+        if self._owed >= 1:
+            self.work.charge(int(self._owed))
+            self._owed -= int(self._owed)
 
     def __getitem__(self, L) -> ParametricNorm:
         if L not in self._cache:
-            self._cache[L] = ParametricNorm(self.am, self.p, L, self.arity)
+            N = self._cache[L] = ParametricNorm(self.am, self.p, L, self.arity)
+            self.charge(BUILD_UNITS + _size(N) / BUILD_SIZE_PER_UNIT)
         return self._cache[L]
 
     def best_at(self, t: float) -> float:
@@ -100,8 +128,8 @@ class _Norms:
 
 def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool = True, hi_open: bool = True,
                 arity: int = 2, L_max: int = 12, min_width=None, max_pieces: int = 4000,
-                budget_seconds: float = 120.0, close_strips: bool = True,
-                strip_seconds: float = 30.0) -> Result:
+                budget: int = DEFAULT_INTERIOR_BUDGET, close_strips: bool = True,
+                strip_budget: int = DEFAULT_STRIP_BUDGET) -> Result:
     """Certify ``C^j`` on the interval from ``lo`` to ``hi`` (exact ends) by parametric norm tests.
 
     ``value``: ``{"certified": IntervalSet, "strips": [(lo, hi), ...]}`` (exact sympy ends of the
@@ -111,6 +139,14 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     ``m`` transition matrices of ``(1/m) a_{j+1}``, up to an end of eigenvalue type). ``witness["pieces"]``: each
     certified piece with its L and exact Bernstein bound, or the end test and the residue sums
     that reach 1 at the end.
+
+    ``budget`` is in work units (counted, never timed): building each norm ``N_L`` and every test of
+    a piece (one ``L``) cost units by the size of ``N_L`` (``BUILD_UNITS``, ``BOX_UNITS``, ``END_UNITS``:
+    about a millisecond each on the reference machine); once it is spent, the pieces not examined are
+    reported as strips.
+    ``strip_budget`` (work units of :func:`~analysis.regularity.strips.close_strip`) is shared by the
+    strips, at least 10 000 and at most what ``budget`` has left; ``provenance["work"]`` says what was
+    spent, ``provenance["timing"]`` the wall-clock seconds (reported only).
     """
     if len(a.params) != 1:
         raise AnalysisError("the interior of a C^j set needs a family with exactly one free parameter")
@@ -124,8 +160,9 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     width = float(B) - float(A)
     min_width = sp.Rational(sp.nsimplify(as_expr(min_width))) if min_width is not None else None
     min_w = float(min_width) if min_width is not None else width / 2 ** 14
-    norms = _Norms(am, p, L_max, arity)
-    t0 = time.time()
+    t0 = time.perf_counter()          # timing only
+    work = Work(budget)
+    norms = _Norms(am, p, L_max, arity, work)
     # a piece: (left, right, kind) with left/right RealAlgebraic; kind: "box" (closed rational),
     # "left-end" (left open end), "right-end", "both" (both ends open)
     kind0 = {(True, True): "both", (True, False): "left-end", (False, True): "right-end",
@@ -138,7 +175,7 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     while stack:
         u, v, kind = stack.pop()
         n_pieces += 1
-        if n_pieces > max_pieces or time.time() - t0 > budget_seconds:
+        if n_pieces > max_pieces or work.exhausted:
             strips.append((u, v))
             continue
         w = float(v) - float(u)
@@ -169,13 +206,14 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
         stack += [(M, v, right_kind), (u, M, left_kind)] if kind == "right-end" else \
                  [(u, M, left_kind), (M, v, right_kind)]
     closed, reasons = [], []
+    spent = work.spent
     if close_strips and strips:
-        strips, closed, reasons = _close_strips(am, p, strips, A, B, lo_open, hi_open,
-                                                max(10.0, min(strip_seconds, budget_seconds - (time.time() - t0))),
-                                                arity)
+        strips, closed, reasons, used = _close_strips(am, p, strips, A, B, lo_open, hi_open,
+                                                      max(10_000, min(strip_budget, work.left)), arity)
+        spent += used
         certified += [(u, v, kind, {"polytope": wit}) for u, v, kind, wit in closed]
     res = _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces,
-                    time.time() - t0)
+                    spent, time.perf_counter() - t0)
     if closed:
         res.provenance["method"] += ("; the strips next to ends of eigenvalue type closed by a parametric invariant "
                                      "polytope (analysis.regularity.strips.close_strip)")
@@ -185,8 +223,9 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
 
 
 def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget, arity=2):
-    """Try :func:`analysis.regularity.strips.close_strip` on each merged strip; returns the strips
-    left, the closed ones as ``(u, v, kind, witness)`` and why each strip left was not closed."""
+    """Try :func:`analysis.regularity.strips.close_strip` on each merged strip, one after the other
+    from one work budget; returns the strips left, the closed ones as ``(u, v, kind, witness)``, why
+    each strip left was not closed, and the work units spent."""
     import functools
 
     from .strips import close_strip
@@ -199,33 +238,34 @@ def _close_strips(am, p, strips, A, B, lo_open, hi_open, budget, arity=2):
         else:
             merged.append((u, v))
     left, closed, reasons = [], [], []
-    t0 = time.time()
+    work = Work(budget)
     for u, v in merged:
         lo_o = lo_open and u.compare(A) == 0
         hi_o = hi_open and v.compare(B) == 0
-        rest = budget - (time.time() - t0)
+        rest = work.left
         try:
-            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget_seconds=max(rest, 1.0),
-                            arity=arity) \
-                if rest > 1.0 else {"closed": False, "reason": "time budget exhausted"}
+            r = close_strip(am, p, u.expr, v.expr, lo_open=lo_o, hi_open=hi_o, budget=rest, arity=arity) \
+                if rest > 1000 else {"closed": False, "reason": "work budget exhausted"}
         except (AnalysisError, ArithmeticError, ValueError, np.linalg.LinAlgError) as exc:   # no certificate, say why
             r = {"closed": False, "reason": f"the polytope construction failed: {type(exc).__name__}: {exc}"}
+        work.charge(r.get("work", 0))
         if r["closed"]:
             kind = {(False, False): "strip", (True, False): "strip-left-end", (False, True): "strip-right-end",
                     (True, True): "strip-both"}[(lo_o, hi_o)]
             wit = {"product": "".join(map(str, reversed(r["word"]))), "pieces": len(r["pieces"]),
                    "max image norm <=": max(x["max image norm <="] for x in r["pieces"]),
-                   "mu": r["mu"], "seconds": r["seconds"]}
+                   "mu": r["mu"], "work": r["work"]}
             closed.append((u, v, kind, wit))
         else:
             left.append((u, v))
             reasons.append(f"[{sp.sstr(u.expr)}, {sp.sstr(v.expr)}]: {r['reason']}")
-    return left, closed, reasons
+    return left, closed, reasons, work.spent
 
 
 def _try_piece(norms: _Norms, u: RealAlgebraic, v: RealAlgebraic, kind: str, L_max: int):
     if kind == "box":
         for L in range(1, L_max + 1):
+            norms.charge(BOX_UNITS + _size(norms[L]) / BOX_SIZE_PER_UNIT)
             b = norms[L].box_below(u.a, v.a)
             if b is not None:
                 return {"L": L, "bound": b}
@@ -235,15 +275,17 @@ def _try_piece(norms: _Norms, u: RealAlgebraic, v: RealAlgebraic, kind: str, L_m
     box = (min(ef, float(wq)), max(ef, float(wq)))
     for L in range(1, L_max + 1):
         N = norms[L]
+        norms.charge(BOX_UNITS + _size(N) / BOX_SIZE_PER_UNIT)
         if N.float_box_bound(Fraction(box[0]), Fraction(box[1])) > 1 + 1e-6:
             continue
+        norms.charge(END_UNITS + _size(N) / END_SIZE_PER_UNIT)
         wit = N.end_piece(e, wq, side)
         if wit is not None:
             return {"L": L, "end": "left" if side > 0 else "right", **wit}
     return None
 
 
-def _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces, seconds):
+def _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min_w, n_pieces, work, seconds):
     from ..algebra.algebraic import IntervalSet
     import functools
 
@@ -273,7 +315,8 @@ def _assemble(certified, strips, A, B, lo_open, hi_open, p, j, arity, L_max, min
     prov = {"method": f"Dyn-Levin norm test ||(1/{arity} S_a{j + 1})^L||_inf < 1 with the coefficients exact "
                       f"polynomials in {p.name}: exact Bernstein bounds on rational boxes, exact sign and root "
                       f"isolation on the pieces next to open ends (L <= {L_max})",
-            "L_max": L_max, "min_width": min_w, "pieces_tried": n_pieces, "seconds": round(seconds, 2)}
+            "L_max": L_max, "min_width": min_w, "pieces_tried": n_pieces, "work": work,
+            "timing": {"seconds": round(seconds, 2)}}
     if merged:
         prov["message"] = (f"not covered by the norm tests with L <= {L_max}: "
                            + ", ".join(f"[{sp.sstr(x)}, {sp.sstr(y)}] (width {float(y) - float(x):.3g})"

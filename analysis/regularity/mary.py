@@ -126,9 +126,12 @@ def _logm_interval(lo: sp.Rational, hi: sp.Rational, m: int, prec: int = 90):
         iv.prec = old
 
 
-def holder_exponent_mary(a: LaurentSymbol, m: int, *, budget_seconds: float = 20.0, max_length: int = 12,
+def holder_exponent_mary(a: LaurentSymbol, m: int, *, budget: int = 20_000, max_length: int = 12,
                          rel_gap: float = 1e-8) -> Result:
     """A certified enclosure of ``alpha = k - log_m JSR(T_0, ..., T_{m-1})`` (module docstring).
+
+    ``budget``: work units of :func:`analysis.jsr.jsr_bounds` (counted, never timed; about a
+    millisecond each on the reference machine).
 
     ``value`` is exact when the JSR is proven equal to ``m^e`` (B-splines); else ``lower``/``upper`` are
     rationals (outward rounding). Raises :class:`NotConvergentMary` when a sum rule fails.
@@ -140,7 +143,7 @@ def holder_exponent_mary(a: LaurentSymbol, m: int, *, budget_seconds: float = 20
     m = check_arity(m)
     k, c = difference_mask_mary(a, m)
     T = transition_matrices_mary(c, m)
-    r = jsr_bounds(list(T), budget_seconds=budget_seconds, max_length=max_length, rel_gap=rel_gap)
+    r = jsr_bounds(list(T), budget=budget, max_length=max_length, rel_gap=rel_gap)
     lo, hi = r.lower, r.upper
     if lo is None or lo <= 0:
         raise AnalysisError("the joint spectral radius lower bound is 0; the Hölder formula does not apply")
@@ -160,7 +163,7 @@ def holder_exponent_mary(a: LaurentSymbol, m: int, *, budget_seconds: float = 20
                   status=r.status, witness=witness,
                   provenance={"method": f"alpha = k - log_{m} JSR(T_0..T_{m - 1}) of c = {m}^k a/q_{m}^(k+1)",
                               "arity": m, "jsr_method": r.provenance.get("method"),
-                              "seconds": r.provenance.get("seconds")})
+                              "work": r.provenance.get("work"), "timing": r.provenance.get("timing")})
 
 
 def _spectral_radius_at_least(P: sp.Matrix, theta: sp.Rational) -> bool | None:
@@ -172,7 +175,7 @@ def _spectral_radius_at_least(P: sp.Matrix, theta: sp.Rational) -> bool | None:
     return _modulus_at_least(coeffs, theta)
 
 
-def smoothness_mary(a: LaurentSymbol, m: int, j: int, *, budget_seconds: float = 20.0, max_length: int = 12,
+def smoothness_mary(a: LaurentSymbol, m: int, j: int, *, budget: int = 20_000, max_length: int = 12,
                     max_L: int = 4, max_word: int = 3) -> Result:
     """Is the m-ary scheme ``C^j``?  ``value`` True / False (certified) or None (inconclusive, with reason).
 
@@ -219,7 +222,7 @@ def smoothness_mary(a: LaurentSymbol, m: int, j: int, *, budget_seconds: float =
                                                      f"modulus >= {m}^{(k - j) * L}: alpha <= {j}",
                                            "k": k, "product": w},
                                   provenance={**prov, "method": "exact spectral radius of a short product"})
-    h = holder_exponent_mary(a, m, budget_seconds=budget_seconds, max_length=max_length)
+    h = holder_exponent_mary(a, m, budget=budget, max_length=max_length)
     jsr = h.witness["jsr"]
     lo, hi = jsr.lower, jsr.upper
     theta = sp.Integer(m) ** (k - j)
@@ -278,10 +281,10 @@ def _norm_below_at(a, m, j, p, x, L_max):
     return None
 
 
-def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_seconds: float = 30.0):
+def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_budget: int = 30_000):
     """Shrink the undecided part with the exact parametric norm tests on each of its intervals, and the
     strips they leave next to ends of eigenvalue type with the parametric invariant polytope
-    (:func:`analysis.regularity.strips.close_strip`, ``strip_seconds`` per interval)."""
+    (:func:`analysis.regularity.strips.close_strip`, ``strip_budget`` work units per interval)."""
     from .interior import ck_interior
 
     parts = undecided.args if isinstance(undecided, sp.Union) else (undecided,)
@@ -294,7 +297,7 @@ def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_s
                     S = S.union(sp.FiniteSet(x))
                     covered.append({"point": sp.sstr(x), "L": L})
                     continue
-                v = smoothness_mary(a.subs({p: x}), m, j, budget_seconds=10.0)   # certified verdict there
+                v = smoothness_mary(a.subs({p: x}), m, j, budget=10_000)   # certified verdict there
                 if v.value is True and v.status == CERTIFIED:
                     S = S.union(sp.FiniteSet(x))
                     covered.append({"point": sp.sstr(x), "verdict": v.witness.get("reason")})
@@ -302,7 +305,7 @@ def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_s
         if points_only or not isinstance(part, sp.Interval) or not (part.start.is_finite and part.end.is_finite):
             continue
         r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max,
-                        budget_seconds=30.0 + max(0.0, strip_seconds - 30.0), strip_seconds=strip_seconds)
+                        budget=30_000 + max(0, strip_budget - 30_000), strip_budget=strip_budget)
         C = r.value["certified"].to_sympy()
         polytopes = [{"from": x["from"], "to": x["to"], "kind": x["kind"], **x["polytope"]}
                      for x in r.witness["pieces"] if "polytope" in x]
@@ -317,7 +320,7 @@ def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_s
 
 
 def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence = (1, 2, 3),
-                  within=(-sp.oo, sp.oo), interior_L_max: int = 8, strip_seconds: float = 30.0) -> Result:
+                  within=(-sp.oo, sp.oo), interior_L_max: int = 8, strip_budget: int = 30_000) -> Result:
     """Where is the one-parameter m-ary family ``C^j``?  Both sides certified where possible.
 
     * **C^j** (sufficient): the union over ``L in Ls`` of the exact sets where the m-ary Dyn–Levin test
@@ -332,7 +335,7 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     norm tests with L <= ``interior_L_max`` (:func:`analysis.regularity.interior.ck_interior`;
     ``witness["interior_tests"]``; 0 turns this off), and the strips they leave next to ends of
     eigenvalue type by the parametric invariant polytope (:func:`analysis.regularity.strips.close_strip`,
-    ``strip_seconds`` per interval; ``interior_tests[...]["polytope"]``, or why a strip was not closed).
+    ``strip_budget`` work units per interval; ``interior_tests[...]["polytope"]``, or why a strip was not closed).
     Uses the generic ``k`` (``N - 1`` identically in the parameter).
     """
     from ..stationary.normset import _parameter, norm_solution_set
@@ -355,7 +358,7 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
     undecided = box - S.union(V)
     covered = []
     if interior_L_max and undecided != sp.EmptySet:
-        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, strip_seconds=strip_seconds)
+        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, strip_budget=strip_budget)
         undecided = box - S.union(V)
         if undecided != sp.EmptySet:     # isolated points left (e.g. closed ends of the intervals)
             S, more = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, points_only=True)
@@ -371,7 +374,7 @@ def ck_range_mary(a: LaurentSymbol, m: int, j: int, param=None, *, Ls: Sequence 
 
 
 def alpha_curve_mary(a: LaurentSymbol, m: int, param=None, *, within=(-1, 1), samples: int = 24,
-                     budget_seconds: float = 10.0) -> Result:
+                     budget: int = 10_000) -> Result:
     """Certified enclosures of alpha(p) of a one-parameter m-ary family at ``samples + 1`` equally
     spaced rational points of ``within`` (ends included), as
     :func:`analysis.regularity.ranges.alpha_curve` for m = 2 (for a figure and the smoothness profile).
@@ -394,7 +397,7 @@ def alpha_curve_mary(a: LaurentSymbol, m: int, param=None, *, within=(-1, 1), sa
     for i in range(samples + 1):
         q = lo + (hi - lo) * sp.Rational(i, samples)
         try:
-            h = holder_exponent_mary(a.subs({p: q}), m, budget_seconds=budget_seconds)
+            h = holder_exponent_mary(a.subs({p: q}), m, budget=budget)
             rows.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
         except AnalysisError as exc:
             rows.append({"p": q, "lower": None, "upper": None, "status": INCONCLUSIVE, "note": str(exc)})

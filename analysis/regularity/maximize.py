@@ -62,12 +62,20 @@ import sympy as sp
 
 from ..algebra.factorization import factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
+from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.reader import as_expr
 from .balls import ball_transition_matrices
 from .holder import holder_exponent
 
 __all__ = ["maximize_holder"]
+
+#: work units of the maximisation (about a millisecond each on the reference machine): a float
+#: alpha estimate at a point (all products up to ``max_length``), and one certified bound on a
+#: sub-interval per candidate word (Arb eigenvalue enclosure); the certified alpha at ``t*`` and
+#: at the exceptional parameters are charged what :func:`holder_exponent` spent
+FLOAT_ALPHA_UNITS = 6
+BOUND_UNITS_PER_WORD = 2
 
 
 def _words(L: int):
@@ -290,7 +298,7 @@ def _rational_near(t: float, lo: sp.Rational, hi: sp.Rational, den: int = 10 ** 
 
 def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rational(1, 1000),
                     grid: int = 40, max_length: int = 6, min_width=sp.Rational(1, 10 ** 7),
-                    max_intervals: int = 4000, budget_seconds: float = 60.0) -> Result:
+                    max_intervals: int = 4000, budget: int = 60_000) -> Result:
     """The maximiser ``t*`` of the Hölder exponent of ``a(t)`` over ``within``, with a certified gap.
 
     ``value`` is ``t*`` (rational); ``lower`` is the certified lower bound of ``alpha(t*)``,
@@ -299,9 +307,15 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     ``witness["intervals"]`` the number of sub-intervals, ``witness["words"]`` the candidate
     products. Status certified when the box is covered, inconclusive otherwise (with
     ``provenance["message"]``). ``gap`` is the target: intervals are refined until their bound is
-    within it (or ``min_width``/``max_intervals``/``budget_seconds`` is reached).
+    within it (or ``min_width``/``max_intervals``/``budget`` is reached).
+
+    ``budget`` is in work units, counted, never timed (``FLOAT_ALPHA_UNITS`` per float estimate,
+    ``BOUND_UNITS_PER_WORD`` per word of a certified sub-interval bound, and the work of the
+    :func:`holder_exponent` calls, which get at most half of it and 20 000 each):
+    ``provenance["work"]`` says what was spent, ``provenance["timing"]`` the seconds (reported only).
     """
-    t0 = time.perf_counter()
+    t0 = time.perf_counter()          # timing only
+    work = Work(budget)
     params = a.params
     if not params:
         raise AnalysisError("nothing to maximise: the family has no free parameter (dimension 0)")
@@ -328,25 +342,35 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
         raise AnalysisError("the box needs low < high")
     gap = sp.Rational(sp.nsimplify(as_expr(gap)))
     F = _Family(a, p)
+
+    def float_alpha(x):
+        work.charge(FLOAT_ALPHA_UNITS)
+        return _float_alpha(F, x, max_length)
+
+    def certified_alpha(sym, units):
+        r = holder_exponent(sym, budget=units)
+        work.charge(r.provenance.get("work") or 0)
+        return r
+
     # 1. float search
     xs = np.linspace(float(lo), float(hi), grid + 1)
-    vals = [_float_alpha(F, float(x), max_length) for x in xs]
+    vals = [float_alpha(float(x)) for x in xs]
     words = {w for _v, w in vals}
     i = int(np.argmax([v for v, _w in vals]))
     l, r = xs[max(i - 1, 0)], xs[min(i + 1, grid)]
     g = (math.sqrt(5) - 1) / 2
     x1, x2 = r - g * (r - l), l + g * (r - l)
-    f1, f2 = _float_alpha(F, x1, max_length), _float_alpha(F, x2, max_length)
+    f1, f2 = float_alpha(x1), float_alpha(x2)
     for _ in range(60):
         words.update((f1[1], f2[1]))
         if f1[0] >= f2[0]:
             r, x2, f2 = x2, x1, f1
             x1 = r - g * (r - l)
-            f1 = _float_alpha(F, x1, max_length)
+            f1 = float_alpha(x1)
         else:
             l, x1, f1 = x1, x2, f2
             x2 = l + g * (r - l)
-            f2 = _float_alpha(F, x2, max_length)
+            f2 = float_alpha(x2)
     words.update((f1[1], f2[1]))
     tstar_f = (l + r) / 2
     best_grid = max(vals, key=lambda v: v[0])[0]
@@ -354,7 +378,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
         tstar_f = float(xs[i])
     tstar = _rational_near(tstar_f, lo, hi)
     # 2. certified alpha at t*
-    h = holder_exponent(a.subs({p: tstar}), budget_seconds=min(20.0, budget_seconds / 2))
+    h = certified_alpha(a.subs({p: tstar}), min(20_000, budget // 2))
     # exceptional parameters (more factors (1+z)): exact Hölder exponent there; the maximum is often
     # attained at one of them (a kink of alpha), so they are candidates for t* as well
     exc, exc_unbounded = [], []
@@ -364,7 +388,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
             if v is not None and v.is_real and lo <= v <= hi:
                 exc_unbounded.append((v, v))
             continue
-        he = holder_exponent(a.subs({p: v}), budget_seconds=20.0)
+        he = certified_alpha(a.subs({p: v}), 20_000)
         exc.append({"t": v, "alpha": (he.lower, he.upper), "status": he.status})
         if he.status == CERTIFIED and he.lower is not None and (
                 h.status != CERTIFIED or sp.Rational(he.lower) > sp.Rational(h.lower)):
@@ -376,6 +400,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     import heapq
 
     def bound(I0, I1):
+        work.charge(BOUND_UNITS_PER_WORD * len(words))
         b = _ball_bound(F, I0, I1, words)
         return sp.Rational(b[0].numerator, b[0].denominator) if b else None
 
@@ -389,8 +414,8 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
         negub, _n, I0, I1, ub = heap[0]
         if ub is not None and ub <= target:
             break
-        if count > max_intervals or time.perf_counter() - t0 > budget_seconds:
-            stopped = "interval or time budget exhausted"
+        if count > max_intervals or work.exhausted:
+            stopped = "interval or work budget exhausted"
             break
         heapq.heappop(heap)
         if I1 - I0 <= min_width:
@@ -417,7 +442,8 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
                "float_maximiser": tstar_f, "box": (lo, hi)}
     prov = {"method": "float search; certified alpha at t* (holder_exponent); Arb ball eigenvalue enclosures "
                       "of products T_w on sub-intervals (rho(T_w)^(1/|w|) <= JSR) give alpha <= k - log2 rho/|w|",
-            "seconds": round(time.perf_counter() - t0, 2), "target_gap": gap}
+            "target_gap": gap, "budget": budget, "work": work.spent,
+            "timing": {"seconds": round(time.perf_counter() - t0, 2)}}
     if not certified:
         why = []
         if unbounded:

@@ -14,7 +14,7 @@ The ternary interpolatory 4-point family (``subdiv derive --arity 3 --support 11
 >>> from analysis.algebra.derive import derive_mask
 >>> a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
 >>> r = maximize_holder_box(a, {"t1": (sp.Rational(-1, 16), 0)}, arity=3, gap=sp.Rational(1, 20),
-...                         budget_seconds=60)
+...                         budget=60_000)
 >>> r.status, r.witness["gap"] <= sp.Rational(1, 20)
 ('certified', True)
 
@@ -56,6 +56,7 @@ import sympy as sp
 
 from ..algebra.mary import factor_out_mary, smoothing_factor_mary
 from ..algebra.symbol import LaurentSymbol
+from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.mary import transition_matrices_mary
 from ..algebra.reader import as_expr
@@ -160,14 +161,18 @@ def _ball_bound(F: _BoxFamily, box, words, prec=128):
     return best
 
 
-def _certified_alpha(a: LaurentSymbol, m: int, budget: float):
+def _certified_alpha(a: LaurentSymbol, m: int, budget: int, work: Work | None = None):
     if m == 2:
         from .holder import holder_exponent
 
-        return holder_exponent(a, budget_seconds=budget)
-    from .mary import holder_exponent_mary
+        r = holder_exponent(a, budget=budget)
+    else:
+        from .mary import holder_exponent_mary
 
-    return holder_exponent_mary(a, m, budget_seconds=budget)
+        r = holder_exponent_mary(a, m, budget=budget)
+    if work is not None:
+        work.charge(r.provenance.get("work") or 0)
+    return r
 
 
 def _parse_box(a: LaurentSymbol, box) -> tuple[tuple, list]:
@@ -189,19 +194,28 @@ def _parse_box(a: LaurentSymbol, box) -> tuple[tuple, list]:
 
 def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.Rational(1, 1000),
                         grid: int | None = None, max_length: int | None = None, max_boxes: int = 3000,
-                        min_width=sp.Rational(1, 10 ** 6), budget_seconds: float = 120.0) -> Result:
+                        min_width=sp.Rational(1, 10 ** 6), budget: int = 120_000) -> Result:
     """Maximise alpha over ``box`` (``{name: (lo, hi)}``, one entry per free parameter), arity ``arity``.
 
     ``value``: the rational point ``t*`` (a dict name -> value); ``lower``: certified lower bound of
     ``alpha(t*)``; ``upper``: certified upper bound of alpha over the box; ``witness["gap"]``.
     Certified when the whole box (and every exceptional sub-family in it) is bounded.
+
+    ``budget`` is in work units, counted, never timed (as in
+    :func:`analysis.regularity.maximize.maximize_holder`: ``FLOAT_ALPHA_UNITS`` per float estimate,
+    ``BOUND_UNITS_PER_WORD`` per word of a certified sub-box bound, the work of the certified alpha
+    computations; each exceptional sub-family gets a third); ``provenance["work"]`` says what was
+    spent, ``provenance["timing"]`` the seconds (reported only).
     """
-    t0 = time.perf_counter()
+    from .maximize import BOUND_UNITS_PER_WORD, FLOAT_ALPHA_UNITS
+
+    t0 = time.perf_counter()          # timing only
+    work = Work(budget)
     params, B = _parse_box(a, box)
     if arity == 2 and len(params) == 1:
         from .maximize import maximize_holder
 
-        r = maximize_holder(a, params[0], within=B[0], gap=gap, budget_seconds=budget_seconds)
+        r = maximize_holder(a, params[0], within=B[0], gap=gap, budget=budget)
         value = None if r.value is None else {params[0].name: r.value}
         return Result(value=value, lower=r.lower, upper=r.upper, status=r.status,
                       witness={**r.witness, "box": {params[0].name: B[0]}}, provenance=r.provenance)
@@ -214,6 +228,7 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
     axes = [np.linspace(float(lo), float(hi), G + 1) for lo, hi in B]
     best, words = (-math.inf, None), set()
     for t in itertools.product(*axes):
+        work.charge(FLOAT_ALPHA_UNITS)
         v, w = _float_alpha(F, t, L)
         words.add(w)
         if v > best[0]:
@@ -224,6 +239,7 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
 
     def neg(t):
         t = np.clip(t, lo_f, hi_f)
+        work.charge(FLOAT_ALPHA_UNITS)
         v, w = _float_alpha(F, t, L)
         words.add(w)
         return -v
@@ -238,7 +254,7 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
     # 2. exceptional sub-families
     exc, problems, sub_best = [], [], None
     for e in F.exceptional:
-        sub = _exceptional_part(a, e, params, B, arity, gap, budget_seconds / 3)
+        sub = _exceptional_part(a, e, params, B, arity, gap, budget // 3, work)
         if sub is None:
             continue
         exc.append(sub["record"])
@@ -251,13 +267,14 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
         # an exceptional member beats every generic one the float search saw: no need to certify t*
         alpha_lo, tstar, h = sub_best[0], [sub_best[1][p.name] for p in params], None
     else:
-        h = _certified_alpha(a.subs(dict(zip(params, tstar))), arity, min(20.0, budget_seconds / 4))
+        h = _certified_alpha(a.subs(dict(zip(params, tstar))), arity, min(20_000, budget // 4), work)
         alpha_lo = sp.Rational(h.lower) if h.lower is not None else None
         if sub_best is not None and (alpha_lo is None or sub_best[0] > alpha_lo):
             alpha_lo, tstar, h = sub_best[0], [sub_best[1][p.name] for p in params], None
     target = (alpha_lo if alpha_lo is not None else sp.Integer(F.k)) + gap
     # 3. branch and bound on the generic formula
     def bound(bx):
+        work.charge(BOUND_UNITS_PER_WORD * len(words))
         b = _ball_bound(F, bx, words)
         return sp.Rational(b.numerator, b.denominator) if b is not None else None
 
@@ -268,8 +285,8 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
         _neg, _c, bx, ub = heap[0]
         if ub is not None and ub <= target:
             break
-        if count > max_boxes or time.perf_counter() - t0 > budget_seconds:
-            stopped = "box or time budget exhausted"
+        if count > max_boxes or work.exhausted:
+            stopped = "box or work budget exhausted"
             break
         heapq.heappop(heap)
         widths = [hi - lo for lo, hi in bx]
@@ -297,7 +314,8 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
     prov = {"method": "float search (grid, Nelder-Mead); certified alpha at t*; Arb ball eigenvalue enclosures "
                       "of products T_w on sub-boxes (rho(T_w)^(1/|w|) <= JSR): alpha <= k - log_m rho/|w|; "
                       "exceptional sub-families recursively",
-            "seconds": round(time.perf_counter() - t0, 2), "target_gap": gap, "arity": arity}
+            "target_gap": gap, "arity": arity, "budget": budget, "work": work.spent,
+            "timing": {"seconds": round(time.perf_counter() - t0, 2)}}
     if not certified:
         why = list(problems)
         if unbounded:
@@ -314,7 +332,7 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
                   provenance=prov)
 
 
-def _exceptional_part(a, e, params, B, arity, gap, budget):
+def _exceptional_part(a, e, params, B, arity, gap, budget, work):
     """Maximise over the exceptional set ``e["condition"]`` inside the box (None: it misses the box)."""
     cond = e.get("condition", {})
     if len(cond) != 1:
@@ -327,7 +345,7 @@ def _exceptional_part(a, e, params, B, arity, gap, budget):
         if not f.is_Rational or not (B[i][0] <= f <= B[i][1]):
             return None if f.is_real and not (B[i][0] <= f <= B[i][1]) else \
                 {"record": {"condition": str(cond), "upper": None}, "result": None, "point": None}
-        h = _certified_alpha(a.subs({p: f}), arity, 20.0)
+        h = _certified_alpha(a.subs({p: f}), arity, 20_000, work)
         rec = {"condition": str(cond), "alpha": (h.lower, h.upper), "status": h.status,
                "upper": sp.Rational(h.upper) if h.upper is not None else None}
         return {"record": rec, "result": Result(value=None, lower=h.lower, upper=h.upper, status=h.status),
@@ -347,7 +365,8 @@ def _exceptional_part(a, e, params, B, arity, gap, budget):
     if not lo_q < hi_q:
         return None
     sub = a.subs({p: f})
-    r = maximize_holder_box(sub, {q.name: (lo_q, hi_q)}, arity=arity, gap=gap, budget_seconds=budget)
+    r = maximize_holder_box(sub, {q.name: (lo_q, hi_q)}, arity=arity, gap=gap, budget=budget)
+    work.charge(r.provenance.get("work") or 0)
     pt = None
     if r.value is not None:
         tq = r.value[q.name]

@@ -92,13 +92,13 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
 
 
 def _verdict_at(a, p, value, j, budget):
-    r = smoothness(a.subs({p: value}), j, budget_seconds=budget)
+    r = smoothness(a.subs({p: value}), j, budget=budget)
     return r.value, r
 
 
 def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), grid: int = 16,
-                     tol: float = 1e-8, budget_seconds: float = 20.0, interior_L_max: int = 10,
-                     strip_seconds: float = 30.0) -> Result:
+                     tol: float = 1e-8, budget: int = 20_000, interior_L_max: int = 10,
+                     strip_budget: int = 30_000) -> Result:
     """Where is the one-parameter family ``a(p)`` C^j?  Boundaries to ``tol``, bracketed by certified points.
 
     A grid of ``grid + 1`` rational points in ``within`` gets certified verdicts; between two
@@ -115,6 +115,10 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     (open) or certified (closed) ends, is covered by exact parametric norm tests
     (:func:`analysis.regularity.interior.ck_interior`, L <= ``interior_L_max``): ``run["interior"]``
     gives the certified part and the strips left (next to ends of eigenvalue type).
+
+    Budgets are work units, counted, never timed (about a millisecond each on the reference machine):
+    ``budget`` per certified verdict (:func:`~analysis.regularity.holder.smoothness`), ``strip_budget``
+    for closing the strips (:func:`~analysis.regularity.strips.close_strip`).
     """
     p = _single_parameter(a, param)
     lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
@@ -123,7 +127,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     pts = [lo + (hi - lo) * sp.Rational(i, grid) for i in range(grid + 1)]
     samples = []
     for q in pts:
-        v, r = _verdict_at(a, p, q, j, budget_seconds)
+        v, r = _verdict_at(a, p, q, j, budget)
         samples.append({"p": q, "C^j": v, "alpha": (r.witness.get("alpha").lower, r.witness.get("alpha").upper)
                         if r.witness.get("alpha") is not None else None, "status": r.status})
     boundaries = []
@@ -131,7 +135,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
         v0, v1 = s0["C^j"], s1["C^j"]
         if v0 is None or v1 is None or v0 == v1:
             continue
-        boundaries.append(_locate(a, p, j, s0, s1, tol, budget_seconds))
+        boundaries.append(_locate(a, p, j, s0, s1, tol, budget))
     runs = []
     start = None
     for i, s in enumerate(samples):
@@ -150,7 +154,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
 
     interiors = []
     for run in runs:
-        interiors.append(_run_interior(a, p, j, run, interior_L_max, budget_seconds, strip_seconds))
+        interiors.append(_run_interior(a, p, j, run, interior_L_max, budget, strip_budget))
     if boundaries_certified and runs and all(interiors):
         status = CERTIFIED
         message = None
@@ -177,9 +181,9 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
                   provenance=prov)
 
 
-def _run_interior(a, p, j, run, L_max, budget, strip_seconds: float = 30.0) -> bool:
+def _run_interior(a, p, j, run, L_max, budget, strip_budget: int = 30_000) -> bool:
     """Cover one run by the exact parametric norm tests (and the strips they leave next to ends of
-    eigenvalue type by the parametric invariant polytope, ``strip_seconds`` in all); records
+    eigenvalue type by the parametric invariant polytope, ``strip_budget`` work units in all); records
     ``run["interior"]``."""
     from .interior import ck_interior
 
@@ -195,7 +199,7 @@ def _run_interior(a, p, j, run, L_max, budget, strip_seconds: float = 30.0) -> b
         return False
     try:
         r = ck_interior(a, j, lo, hi, p, lo_open=lo_open, hi_open=hi_open, L_max=L_max,
-                        budget_seconds=max(30.0, budget) + max(0.0, strip_seconds - 30.0), strip_seconds=strip_seconds)
+                        budget=max(30_000, budget) + max(0, strip_budget - 30_000), strip_budget=strip_budget)
     except AnalysisError as exc:     # e.g. (1+z)^{j+1} divides a only at exceptional values
         run["interior"] = {"from": lo, "to": hi, "proven": False, "route": f"no norm test: {exc}",
                            "strips": [], "status": INCONCLUSIVE}
@@ -292,15 +296,16 @@ def _simple_rational_near(r, side: int, tol_q):
 
 
 def alpha_curve(a: LaurentSymbol, param=None, *, within=(-1, 1), samples: int = 24,
-                budget_seconds: float = 10.0) -> Result:
-    """Certified enclosures of alpha(p) at ``samples + 1`` rational points (for a figure)."""
+                budget: int = 10_000) -> Result:
+    """Certified enclosures of alpha(p) at ``samples + 1`` rational points (for a figure); ``budget``
+    in work units per point (:func:`~analysis.regularity.holder.holder_exponent`)."""
     p = _single_parameter(a, param)
     lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
     rows = []
     for i in range(samples + 1):
         q = lo + (hi - lo) * sp.Rational(i, samples)
         try:
-            h = holder_exponent(a.subs({p: q}), budget_seconds=budget_seconds)
+            h = holder_exponent(a.subs({p: q}), budget=budget)
             rows.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
         except AnalysisError as exc:
             rows.append({"p": q, "lower": None, "upper": None, "status": INCONCLUSIVE, "note": str(exc)})
@@ -378,7 +383,7 @@ def _ball_norm_below_one(am: LaurentSymbol, p: sp.Symbol, box: tuple, L: int, pr
 
 def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *, max_L_exact: int = 3,
                                max_L_boxes: int = 8, max_boxes: int = 400, samples: int = 8,
-                               budget_seconds: float = 10.0) -> Result:
+                               budget: int = 10_000) -> Result:
     """Check the claim "C^j for every parameter value in the open interval" (see module docstring).
 
     ``value`` True (proven on the whole interval), False (refuted at a certified point), None.
@@ -411,7 +416,7 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
         x = RealAlgebraic.rational(q)
         if not (lo.compare(x) < 0 < hi.compare(x)):
             continue
-        v = smoothness(a.subs({p: q}), j, budget_seconds=budget_seconds)
+        v = smoothness(a.subs({p: q}), j, budget=budget)
         if v.value is False:
             return Result(value=False, status=REFUTED,
                           witness={"route": "certified counterexample", "counterexample": q,

@@ -255,7 +255,7 @@ def _exact_route(a: LaurentSymbol, *, max_extra_r: int = 4) -> Result:
                     "minimal_polynomial": mu.as_expr(), "lambda_lower": lo, "lambda_upper": hi,
                     "roots": how, "method": method})
     prov = {"method": method, "arithmetic": f"exact over {K}, Arb root isolation",
-            "seconds": round(_time.perf_counter() - t0, 4)}
+            "timing": {"seconds": round(_time.perf_counter() - t0, 4)}}
     if not lo > threshold:
         witness["reason"] = f"lambda is not certified above 4^-r for r <= {r}: increase r"
         return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=prov)
@@ -334,7 +334,7 @@ def _ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None =
         return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=prov)
     lo, hi, wp = enc
     witness.update({"rho_lower": lo, "rho_upper": hi, "matrix_size": 2 * (len(balls) - 1 - N) + 1})
-    prov["seconds"] = round(_time.perf_counter() - t0, 4)
+    prov["timing"] = {"seconds": round(_time.perf_counter() - t0, 4)}
     return _finish(lo, hi, None, witness, prov, offset=N)
 
 

@@ -211,7 +211,7 @@ def sobolev_exponent_mary(a: LaurentSymbol, m: int, *, max_extra_r: int = 4) -> 
 
     def inconclusive(reason, **extra):
         witness.update(extra, reason=reason)
-        prov["seconds"] = round(_time.perf_counter() - t0, 4)
+        prov["timing"] = {"seconds": round(_time.perf_counter() - t0, 4)}
         return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=prov)
 
     K = dom if not dom.is_ZZ else sp.QQ
@@ -263,5 +263,6 @@ def sobolev_exponent_mary(a: LaurentSymbol, m: int, *, max_extra_r: int = 4) -> 
         llo, lhi = _logm_interval(sp.Rational(lo.numerator, lo.denominator),
                                   sp.Rational(hi.numerator, hi.denominator), m)
         lower, upper = -lhi / 2, -llo / 2
-    prov.update({"arithmetic": f"exact over {K}, Arb root isolation", "seconds": round(_time.perf_counter() - t0, 4)})
+    prov.update({"arithmetic": f"exact over {K}, Arb root isolation",
+                 "timing": {"seconds": round(_time.perf_counter() - t0, 4)}})
     return Result(value=value, lower=lower, upper=upper, status=CERTIFIED, witness=witness, provenance=prov)

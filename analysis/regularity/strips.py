@@ -105,11 +105,24 @@ from flint import arb, arb_mat, ctx, fmpq
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
+from ..jsr._work import Work
 from ..algebra.mary import check_arity
 from ..stationary.mary import transition_matrices_mary
 from ..algebra.reader import as_expr
 
 PREC = 128
+#: default work budget of :func:`close_strip` (units: see there)
+DEFAULT_STRIP_BUDGET = 30_000
+#: work budget of the float invariant polytope at the end point (units of :func:`build_polytope`)
+SETUP_BUDGET = 20_000
+#: work units of a certification step on a sub-interval (about a millisecond of CPU each on the
+#: reference machine): ``STEP_UNITS`` for the eigenpair enclosure, ``VERTEX_UNITS`` per vertex and
+#: letter of the vertex words (centred forms along the words), ``IMAGE_UNITS`` per image bounded and
+#: ``LP_UNITS`` per fresh coefficient LP
+STEP_UNITS = 1.3
+VERTEX_UNITS = 0.005
+IMAGE_UNITS = 0.03
+LP_UNITS = 3.5
 
 
 def _poly_entries(M: sp.Matrix, p: sp.Symbol):
@@ -280,7 +293,7 @@ class _Strip:
     def floats(self, t: float):
         return [np.array(f(t), dtype=float) for f in self.f]
 
-    def setup(self, t_end: float):
+    def setup(self, t_end: float, work: Work):
         mats = self.floats(t_end)
         flip = self.arity - 1                 # the flip maps the letter eps to flip - eps
         rho, word = _smp(mats, 6 if self.arity <= 3 else max(2, int(np.log(2000) / np.log(self.arity))))
@@ -297,7 +310,9 @@ class _Strip:
         if self.J is not None and any(mirrored == tuple(word[k:] + word[:k]) for k in range(len(word))):
             self.J = self.Jf = None          # J v is already on the orbit of v
         roots = [v] if self.J is None else [v, self.Jf @ v]
-        st = build_polytope(mats, r, roots, deadline=time.perf_counter() + 20, max_vertices=400, check_better=True)
+        setup = Work(SETUP_BUDGET)
+        st = build_polytope(mats, r, roots, work=setup, max_vertices=400, check_better=True)
+        work.charge(setup.spent)          # the march's budget pays for the setup too
         if not st.closed:
             return f"the float invariant polytope at the end does not close ({st.stop_reason})"
         if any(ro >= len(roots) for ro in st.root_of):
@@ -339,6 +354,7 @@ class _Strip:
                     return (f"an image that is not a vertex lies on (or outside) the polytope's boundary at the end "
                             f"(vertex {k}, matrix {i}): a second s.m.p. or a non-generic end")
                 self.checks.append((i, k, lp[0]))
+        self.units = 0.0                  # work of the certification steps (STEP_UNITS, ...)
         return None
 
     def vertices_float(self, t: float):
@@ -368,6 +384,7 @@ class _Strip:
         forward differentiation over ``I``: the widths are ``O(h)`` without the dependency blow-up of
         a naive interval evaluation along long vertex words."""
         tmq = (u + w) / 2
+        self.units += STEP_UNITS
         fl = self.vertices_float(float(tmq))
         if fl is None:
             return None
@@ -439,6 +456,7 @@ class _Strip:
             return zm, zi, dz
 
         verts = []
+        self.units += VERTEX_UNITS * d * sum(len(pa) + 1 for pa in self.paths)
         x0 = (col(vM), _tighter(col(vI), col(vM) + col(dv) * H), col(dv))
         starts = [x0] if self.J is None else [x0, tuple(self.J * y for y in x0)]
         for ro, pa in zip(self.roots, self.paths):
@@ -462,7 +480,9 @@ class _Strip:
             bound = None
             # the support of the previous interval first (a least-squares solve), then a fresh LP
             for fresh in ((False, True) if (i, k) in self._supp else (True,)):
+                self.units += IMAGE_UNITS * d
                 if fresh:
+                    self.units += LP_UNITS
                     lp = _l1_coefficients(Vm, xf)
                     if lp is None:
                         return None
@@ -522,32 +542,45 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                max_depth: int = 20, budget_seconds: float = 120.0, arity: int = 2) -> dict:
+                max_depth: int = 20, budget: int = 120_000, arity: int = 2) -> dict:
     """Certify ``JSR((1/m) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
     where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` of arity ``m``
     (:func:`analysis.stationary.difference.difference_symbol` for ``m = 2``,
     :func:`analysis.stationary.mary.difference_symbol_mary`), ``T`` its ``m`` transition matrices.
 
-    Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ...}``; each piece
-    records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image norm.
+    ``budget``: work units (counted, never timed; about a millisecond of CPU each on the reference
+    machine) for the float polytope at the end (:func:`~analysis.jsr._polytope.build_polytope`'s units)
+    and the march: every certification step on a sub-interval costs ``STEP_UNITS``, ``VERTEX_UNITS``
+    per vertex and letter of the vertex words, ``IMAGE_UNITS`` per image it bounds and ``LP_UNITS`` per
+    fresh coefficient LP (the dimension ``d`` of the restricted family scales the vertex and image
+    terms). The march stops when the budget is spent, or early when, after every 20 sub-intervals, the
+    work forecast for the rest of the strip exceeds 3 x ``budget``.
+
+    Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ..., "work": units}``;
+    each piece records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image
+    norm; ``timing`` holds the wall-clock seconds (decides nothing).
     """
     old = ctx.prec
+    t0 = time.perf_counter()
+    work = Work(budget)
     try:
-        return _close_strip(am, p, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
-                            budget_seconds=budget_seconds, arity=arity)
+        out = _close_strip(am, p, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
+                           work=work, arity=arity)
     finally:
         ctx.prec = old
+    out["work"] = work.spent
+    out["timing"] = {"seconds": round(time.perf_counter() - t0, 2)}
+    return out
 
 
-def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, arity) -> dict:
-    t0 = time.time()
+def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, work: Work, arity) -> dict:
     A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     S = _Strip(am, p, check_arity(arity))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)
     if lo_open and hi_open and _smp(S.floats(float(A)), 3)[0] > _smp(S.floats(float(B)), 3)[0]:
         end = A                           # both ends open: set up at the one of eigenvalue type (larger rho)
-    why = S.setup(float(end))
+    why = S.setup(float(end), work)
     if why:
         out["reason"] = why
         return out
@@ -559,22 +592,25 @@ def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, 
     chi = None
     pieces = []
     cur, k, wins, tries = ql, 0, 0, 0
-    first = (t0, ql)
+    first = (0, ql)
+    charged = 0
     while cur < qh:
-        if time.time() - t0 > budget_seconds:
-            out["reason"] = f"time budget ({budget_seconds} s) exhausted at t = {float(cur):.12g}"
+        if work.exhausted:
+            out["reason"] = f"work budget ({work.total} units) exhausted at t = {float(cur):.12g}"
             return out
         u, w = cur, min(qh, cur + (qh - ql) / 2 ** k)
         tries += 1
-        spent = time.time() - t0
+        spent = work.spent
         if pieces and len(pieces) % 20 == 0 and cur > first[1]:   # forecast from the rate since the first success
-            need = (time.time() - first[0]) * float((qh - cur) / (cur - first[1]))
-            if spent + need > 3 * budget_seconds:    # generous: the steps usually grow away from the end
+            need = (spent - first[0]) * float((qh - cur) / (cur - first[1]))
+            if spent + need > 3 * work.total:    # generous: the steps usually grow away from the end
                 out["reason"] = (f"too slow for the budget: {len(pieces)} sub-intervals covered "
-                                 f"{float((cur - ql) / (qh - ql)):.1%} of the strip in {spent:.1f} s (the "
-                                 f"polytope's slack is small; forecast {spent + need:.0f} s > 3 x {budget_seconds:.0f} s)")
+                                 f"{float((cur - ql) / (qh - ql)):.1%} of the strip in {spent} work units (the "
+                                 f"polytope's slack is small; forecast {spent + need:.0f} > 3 x {work.total} units)")
                 return out
         r = S.certify(u, w)
+        work.charge(int(S.units) - charged)
+        charged = int(S.units)
         ok = r is not None
         if ok:
             (va, la), wit = r
@@ -583,7 +619,7 @@ def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, 
                 ok = _below_one_exact(S, chi, u, w, A, B, lo_open, hi_open, va, la)
         if ok:
             if not pieces:
-                first = (time.time(), w)
+                first = (work.spent, w)
             pieces.append(wit)
             cur, wins = w, wins + 1
             if wins >= 2 and k > 0:
@@ -603,7 +639,6 @@ def _close_strip(am, p, lo, hi, *, lo_open, hi_open, max_depth, budget_seconds, 
                      for x in pieces]
     out["pieces"][0]["from"] = sp.sstr(A.expr)
     out["pieces"][-1]["to"] = sp.sstr(B.expr)
-    out["seconds"] = round(time.time() - t0, 2)
     return out
 
 

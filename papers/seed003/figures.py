@@ -20,7 +20,7 @@ def _alpha_figure(rng, claimed_hi, true_hi):
     pts = [sp.Rational(k, 200) for k in (0, 1, 3, 4, 5, 6)]
     extra_rows = []
     for q in pts:
-        h = holder_exponent(_stationary().subs({"omega": q}), budget_seconds=10.0)
+        h = holder_exponent(_stationary().subs({"omega": q}), budget=10000)
         if h.status == CERTIFIED:
             extra_rows.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
     extra = Result(value=extra_rows, status=CERTIFIED if len(extra_rows) == len(pts) else INCONCLUSIVE,

@@ -340,10 +340,10 @@ class Kind:
 
 
 #: work budget of the certified maximisation of alpha in a smoothness profile: a number of
-#: sub-intervals (deterministic, so a golden file does not depend on the machine's speed), with a
-#: generous time limit as a safeguard only
+#: sub-intervals and a generous number of work units (both counted, so a golden file does not
+#: depend on the machine's speed or load)
 ALPHA_MAX_INTERVALS = 800
-ALPHA_MAX_SECONDS = 300.0
+ALPHA_MAX_WORK = 300_000
 
 
 def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, note: str = ""):
@@ -364,12 +364,12 @@ def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, n
         from ...regularity.maximize import maximize_holder
 
         r1 = maximize_holder(a, p, within=(lo, hi), gap=sp.Rational(1, 100), max_intervals=ALPHA_MAX_INTERVALS,
-                             budget_seconds=ALPHA_MAX_SECONDS)
+                             budget=ALPHA_MAX_WORK)
         r = r1.__class__(value=None if r1.value is None else {p.name: r1.value}, lower=r1.lower, upper=r1.upper,
                          status=r1.status, witness=r1.witness, provenance=r1.provenance)
     else:
         r = maximize_holder_box(a, {p.name: (lo, hi)}, arity=arity, gap=sp.Rational(1, 100),
-                                max_boxes=ALPHA_MAX_INTERVALS, budget_seconds=ALPHA_MAX_SECONDS)
+                                max_boxes=ALPHA_MAX_INTERVALS, budget=ALPHA_MAX_WORK)
     line, nums, ev = sampled_alpha_maximum(p, curve, note)
     if r.status != "certified" or r.value is None or r.upper is None:
         why = r.provenance.get("message", "not certified")

@@ -56,8 +56,8 @@ __all__ = ["ck_range_verdict", "profile_verdict", "set_text", "point_in"]
 
 #: the L of the m-ary norm sets (as `subdiv range --arity`)
 LS = (1, 2)
-#: seconds of JSR search per alpha sample point
-ALPHA_BUDGET = 2.0
+#: work units of JSR search per alpha sample point (analysis.jsr.jsr_bounds)
+ALPHA_BUDGET = 2_000
 
 
 def set_text(S) -> str:
@@ -149,7 +149,7 @@ def profile_verdict(kind) -> Verdict:
     largest = max([j for j, r in sets.items() if r.value != sp.EmptySet], default=-1)
     ev = [evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)} ({m}-ary)", table=(("j", "set", "status"), *rows),
                    text=f"{N} generic factors (1+...+z^{m - 1})/{m}; largest j with a non-empty C^j set: {largest}")]
-    curve = alpha_curve_mary(a, m, p, within=(lo, hi), samples=kind.get("samples", 8), budget_seconds=ALPHA_BUDGET).value
+    curve = alpha_curve_mary(a, m, p, within=(lo, hi), samples=kind.get("samples", 8), budget=ALPHA_BUDGET).value
     alpha_line, alpha_nums, alpha_ev = alpha_maximum(a, p, lo, hi, curve, arity=m)
     nums += alpha_nums
     ev.append(alpha_ev)

@@ -84,7 +84,7 @@ def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -
 
 class _ValueClaim(Kind):
     optional = {"value": "claimed value", "tolerance": "|true - value| <= tolerance", "lower": "claim >= lower",
-                "upper": "claim <= upper", "at": "parameter values", "budget": "seconds for the JSR search"}
+                "upper": "claim <= upper", "at": "parameter values", "budget": "work units for the JSR search (default 20000)"}
     quantity = ""
 
     def check(self) -> None:
@@ -138,8 +138,11 @@ class Holder(_ValueClaim):
 
     def compute(self, a) -> Result:
         if self.arity != 2:                       # alpha = k - log_m JSR (issue 12)
-            return holder_exponent_mary(a, self.arity, budget_seconds=float(self.number("budget") or 20))
-        return holder_exponent(a, budget_seconds=float(self.number("budget") or 20))
+            return holder_exponent_mary(a, self.arity, budget=self._budget())
+        return holder_exponent(a, budget=self._budget())
+
+    def _budget(self) -> int:
+        return int(self.number("budget") or 20_000)
 
 
 class Sobolev(_ValueClaim):
