@@ -145,7 +145,8 @@ def test_binary_kinds_refuse_mary_schemes_at_load_time():
     assert v.status == "refuted"
     with pytest.raises(AnalysisError, match="arity must be an integer >= 2"):
         _paper("sum rules", "factors = 3", arity=1)
-    with pytest.raises(AnalysisError, match="'rules' .* is binary"):
+    # even/odd rules are binary; a ternary scheme's printed rules are three stencils
+    with pytest.raises(AnalysisError, match="printed rules have 2 stencils, but scheme .* has arity 3"):
         _paper("mask identity", 'rules = { even = [1], odd = ["1/2", "1/2"] }')
 
 
@@ -157,7 +158,7 @@ def test_catalogue_arity_conflict_and_rules_with_arity(tmp_path, capsys):
     assert main(["report", str(f), "--output", str(tmp_path)], extra_modules=EXTRA) == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and "has arity 3, not 2" in err
-    with pytest.raises(AnalysisError, match="arity 3 needs the scheme as mask, symbol or catalogue"):
+    with pytest.raises(AnalysisError, match="arity 3 needs 3 stencils"):
         parse_paper('[paper]\nid = "9"\ntitle = "t"\n[schemes.r]\nrules = { even = [1], odd = ["1/2", "1/2"] }\n'
                     'arity = 3\n', "r.toml")
 

@@ -282,21 +282,58 @@ class LaurentSymbol:
 
         ``first`` is the offset ``p`` of the first coefficient of both stencils; ``even_first`` and
         ``odd_first`` override it per stencil. The even coefficient of ``f[i+p]`` is ``a_{-2p}``, the
-        odd one ``a_{1-2p}``.
+        odd one ``a_{1-2p}``: :meth:`from_stencils` with ``M = 2``.
 
         >>> LaurentSymbol.from_rules(even=[1], odd=["1/2", "1/2"], first=0)   # linear B-spline
         LaurentSymbol([1/2, 1, 1/2], start=-1, domain=QQ)
         """
         ef = first if even_first is None else even_first
         of = first if odd_first is None else odd_first
-        if len(even) == 0 and len(odd) == 0:
-            raise AnalysisError("both stencils are empty")
+        return cls.from_stencils([even, odd], [ef, of], params=params)
+
+    @classmethod
+    def from_stencils(cls, stencils: Sequence[Sequence], first: int | Sequence[int] = 0, *,
+                      params: Sequence[sp.Symbol] | None = None) -> "LaurentSymbol":
+        """The symbol of the ``M = len(stencils)`` rules of an M-ary scheme,
+        ``f[M i + r] = sum_p stencils[r][p - first_r] f[i + p]`` (``r = 0, ..., M-1``).
+
+        With ``(S_a f)_i = sum_j a_{i-Mj} f_j`` the r-th rule's coefficient of ``f[i+p]`` is
+        ``a_{r - M p}``. ``first`` is the offset ``p`` of the first coefficient of every stencil, or a
+        list of M offsets (one per rule). For ``M = 2`` this is :meth:`from_rules`.
+
+        >>> LaurentSymbol.from_stencils([[1], ["1/2", "1/2"]], [0, 0])        # linear B-spline (binary)
+        LaurentSymbol([1/2, 1, 1/2], start=-1, domain=QQ)
+        >>> LaurentSymbol.from_stencils([[1], ["2/3", "1/3"], ["1/3", "2/3"]], [0, 0, 0])   # ternary hat
+        LaurentSymbol([1/3, 2/3, 1, 2/3, 1/3], start=-2, domain=QQ)
+        """
+        from .reader import LIMITS
+
+        if isinstance(stencils, (str, bytes)) or not hasattr(stencils, "__len__"):
+            raise AnalysisError("the rules are a list of M stencils (lists of coefficients), one per residue 0..M-1")
+        M = len(stencils)
+        if not 2 <= M <= LIMITS.arity:
+            raise AnalysisError(f"an M-ary scheme has 2 <= M <= {LIMITS.arity} rules (stencils), not {M}")
+        if isinstance(first, bool):
+            raise AnalysisError("first must be an integer or a list of integers")
+        firsts = [first] * M if isinstance(first, int) else list(first) if hasattr(first, "__len__") else None
+        if firsts is None or len(firsts) != M or not all(isinstance(f, int) and not isinstance(f, bool) for f in firsts):
+            raise AnalysisError(f"first must be an integer or a list of {M} integers (one offset per stencil)")
         entries: dict[int, sp.Expr] = {}
-        for k, c in enumerate(even):
-            entries[-2 * (ef + k)] = parse_coefficient(c)
-        for k, c in enumerate(odd):
-            entries[1 - 2 * (of + k)] = parse_coefficient(c)
+        total = 0
+        for r, (stencil, f0) in enumerate(zip(stencils, firsts)):
+            if isinstance(stencil, (str, bytes)) or not hasattr(stencil, "__len__"):
+                raise AnalysisError(f"stencil {r} must be a list of coefficients")
+            total += len(stencil)
+            if total > LIMITS.coefficients:
+                raise AnalysisError(f"the rules have more than {LIMITS.coefficients} coefficients (limit 'coefficients')")
+            for k, c in enumerate(stencil):
+                entries[r - M * (f0 + k)] = parse_coefficient(c)
+        if not entries:
+            raise AnalysisError("every stencil is empty")
         lo, hi = min(entries), max(entries)
+        if hi - lo + 1 > LIMITS.coefficients:
+            raise AnalysisError(f"the mask of these rules spans {hi - lo + 1} indices (offsets first = {firsts}): "
+                                f"the limit is {LIMITS.coefficients} (limit 'coefficients')")
         mask = [entries.get(i, sp.Integer(0)) for i in range(lo, hi + 1)]
         return cls.from_mask(mask, start=lo, params=params)
 

@@ -26,7 +26,8 @@ A paper file has a ``[paper]`` table (``id``, ``title``, ``authors``, ``citation
 
 A scheme is given by exactly one of ``catalogue`` (a catalogue slug, resolved by the
 ``catalogue`` callable the command line passes in: the engine does not import the catalogue),
-``mask`` + ``start``, ``rules = { even = [...], odd = [...], first = p }``, ``symbol`` (an
+``mask`` + ``start``, ``rules = { even = [...], odd = [...], first = p }`` (binary) or
+``rules = { stencils = [[...], ...], first = p }`` (M stencils for an M-ary scheme), ``symbol`` (an
 expression in ``z``) or ``level_mask`` + ``start`` (a level-dependent scheme, coefficients in
 ``n`` or ``h = 2^-n``) or ``level_symbol`` (an expression in ``z`` and ``n``); the two level-dependent
 forms take helper definitions ``where = { c = "cos(theta/2**(n+1))" }``. ``arity = M`` (issue 12;
@@ -110,6 +111,7 @@ from ..algebra.symbol import LaurentSymbol, parse_coefficient
 from ..levels.level_dependent import H, N, LevelDependentScheme, to_h
 from ..result import AnalysisError
 from .kinds import Domain, SchemeSpec, kind_class
+from .kinds.base import rules_symbol
 from .kinds.other import PYTHON_MODES, Python
 from .model import Claim, Paper
 from ..algebra.reader import as_expr
@@ -229,15 +231,11 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
             symbol = LaurentSymbol.from_mask(coeffs, start=start, params=declared)
             definition = f"mask {[sp.sstr(c) for c in coeffs]} from index {start}"
         elif how == "rules":
-            r = t["rules"]
-            if not isinstance(r, Mapping) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
-                raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
-            ev = [parse_coefficient(c, locals_=syms) for c in r["even"]]
-            od = [parse_coefficient(c, locals_=syms) for c in r["odd"]]
-            symbol = LaurentSymbol.from_rules(ev, od, r.get("first", 0), even_first=r.get("even_first"),
-                                              odd_first=r.get("odd_first"), params=declared)
-            definition = f"rules even {[sp.sstr(c) for c in ev]}, odd {[sp.sstr(c) for c in od]}, first " + ", ".join(
-                f"{k} {r[k]}" for k in ("first", "even_first", "odd_first") if k in r)
+            symbol, m, definition = rules_symbol(t["rules"], locals_=syms, params=declared)
+            if arity is not None and arity != m:
+                raise AnalysisError(f"arity {arity} but the rules have {m} stencils (drop 'arity' or give "
+                                    f"{arity} stencils: rules = {{ stencils = [...], first = p }})")
+            arity = m
         elif how == "symbol":
             expr = parse_coefficient(str(t["symbol"]), locals_={**syms, "z": sp.Symbol("z")})
             symbol = LaurentSymbol.from_expr(expr, params=declared)
@@ -304,16 +302,16 @@ def _level_scheme(t: Mapping, how: str, m: int, name: str):
 
 def _arity(t: Mapping, how: str, w: str) -> int | None:
     """The scheme's ``arity`` (issue 12): an integer >= 2; m-ary schemes are given by mask, symbol,
-    catalogue, or (level-dependent, second round) ``level_mask`` / ``level_symbol`` (``rules`` are
-    even/odd, i.e. binary)."""
+    catalogue, ``rules = { stencils = [...], first }`` (M stencils; the even/odd form is binary) or
+    (level-dependent) ``level_mask`` / ``level_symbol``."""
     if "arity" not in t:
         return None
     m = t["arity"]
     if isinstance(m, bool) or not isinstance(m, int) or m < 2:
         raise AnalysisError(f"{w}: arity must be an integer >= 2, not {m!r}")
-    if m != 2 and how == "rules":
-        raise AnalysisError(f"{w}: arity {m} needs the scheme as mask, symbol or catalogue "
-                            f"({how} describes binary schemes)")
+    if m != 2 and how == "rules" and isinstance(t.get("rules"), Mapping) and "stencils" not in t["rules"]:
+        raise AnalysisError(f"{w}: arity {m} needs {m} stencils, rules = {{ stencils = [[...], ...], first = p }} "
+                            "(even/odd rules describe binary schemes)")
     return m
 
 

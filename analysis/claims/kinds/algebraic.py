@@ -41,10 +41,10 @@ from ...result import AnalysisError
 from ...stationary.mary import basic_limit_support_mary, local_eigenvalues_mary
 from ...stationary.transition import basic_limit_support, local_eigenvalues
 from ..model import Number, Verdict, exact_result
-from .base import Kind, evidence, parse_number
+from .base import Kind, evidence, parse_number, rules_symbol
 from ...algebra.reader import as_expr, read_in_context
 
-__all__ = ["MaskIdentity", "SumRules", "Symmetry", "Support", "Eigenvalues", "Reproduction"]
+__all__ = ["MaskIdentity", "SumRules", "Symmetry", "Interpolatory", "Support", "Eigenvalues", "Reproduction"]
 
 
 def _same(x, y) -> bool:
@@ -61,7 +61,8 @@ class MaskIdentity(Kind):
     name = "mask identity"
     summary = "the printed mask/rules/symbol equals the scheme's symbol (exact coefficients)"
     optional = {"mask": "printed coefficients (with start)", "start": "index of the first coefficient",
-                "symbol": "printed symbol a(z)", "rules": "{even = [...], odd = [...], first = p}",
+                "symbol": "printed symbol a(z)",
+                "rules": "{even = [...], odd = [...], first = p} or {stencils = [[...], ...], first = p} (M-ary)",
                 "same_as": "another scheme of the file", "at": "parameter values",
                 "substitute": "{ parameter = \"expression\" }: a sub-family (e.g. nu = \"1 - 2*mu\")"}
     example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
@@ -72,9 +73,6 @@ class MaskIdentity(Kind):
         if len(given) != 1:
             raise AnalysisError(f"{self.where}: kind 'mask identity' needs exactly one of the fields "
                                 "'mask', 'symbol', 'rules', 'same_as'")
-        if "rules" in self.fields and self.arity != 2:
-            raise AnalysisError(f"{self.where}: kind 'mask identity' with 'rules' (even/odd) is binary; "
-                                f"for arity {self.arity} give 'mask' or 'symbol'")
         self.values()
         self.substitution()
         self.printed()
@@ -99,11 +97,11 @@ class MaskIdentity(Kind):
             if "symbol" in f:
                 return LaurentSymbol.from_expr(f["symbol"]), "the printed symbol"
             if "rules" in f:
-                r = f["rules"]
-                if not isinstance(r, dict) or not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
-                    raise AnalysisError("rules = { even = [...], odd = [...], first = p } (or even_first, odd_first)")
-                return LaurentSymbol.from_rules(r["even"], r["odd"], r.get("first", 0), even_first=r.get("even_first"),
-                                                odd_first=r.get("odd_first")), "the printed rules"
+                a, m, _ = rules_symbol(f["rules"])
+                if m != self.arity:
+                    raise AnalysisError(f"the printed rules have {m} stencils, but scheme {self.scheme.name!r} has "
+                                        f"arity {self.arity}: give {self.arity} stencils, rules = {{ stencils = [...] }}")
+                return a, "the printed rules"
         except AnalysisError as exc:
             raise AnalysisError(f"{self.where}: {exc}") from None
         other = self.schemes.get(f["same_as"])

@@ -39,7 +39,8 @@ from ...result import AnalysisError, Result
 from ..model import Evidence, Number, Verdict, certified, inconclusive, refuted
 from ...algebra.reader import as_expr, read_expression
 
-__all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence"]
+__all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence",
+           "rules_symbol", "RULES_FORMS"]
 
 
 def parse_number(x, what: str = "number") -> sp.Expr:
@@ -91,6 +92,61 @@ def parse_interval(x, what: str = "interval") -> tuple:
     if not bool(sp.N(hi - lo, 30) > 0):
         raise AnalysisError(f"{what}: {x!r} is empty (the left end must be smaller)")
     return lo, hi, lc, hc
+
+
+#: the two ways to write a scheme's rules in a paper file (the message of a malformed ``rules``)
+RULES_FORMS = ("rules = { even = [...], odd = [...], first = p } (binary; or even_first, odd_first instead of first), "
+               "or rules = { stencils = [[...], [...], ...], first = p } (M stencils, one per residue r = 0..M-1; "
+               "first = [p_0, ..., p_(M-1)] for one offset per stencil)")
+
+
+def rules_symbol(r, *, locals_=None, params=None) -> tuple[LaurentSymbol, int, str]:
+    """``(symbol, M, text)`` of the rules of a paper file: ``{even, odd, first | even_first, odd_first}``
+    (binary) or ``{stencils = [s_0, ..., s_(M-1)], first}`` (M-ary: the r-th stencil gives ``f[M i + r]``,
+    its coefficient of ``f[i+p]`` is ``a_(r - M p)``; :meth:`LaurentSymbol.from_stencils`, the binary form
+    being the case M = 2). Coefficients are read by the input reader (``locals_``: the declared parameters).
+
+    >>> a, M, _ = rules_symbol({"stencils": [[1], ["2/3", "1/3"], ["1/3", "2/3"]], "first": 0})
+    >>> M, a.mask, a.start
+    (3, (1/3, 2/3, 1, 2/3, 1/3), -2)
+    >>> rules_symbol({"even": [1], "odd": ["1/2", "1/2"]})[0] == rules_symbol({"stencils": [[1], ["1/2", "1/2"]]})[0]
+    True
+    """
+    from collections.abc import Mapping as _Mapping
+
+    def coeffs(x, what):
+        if not isinstance(x, list):
+            raise AnalysisError(f"{what} must be a list of coefficients; {RULES_FORMS}")
+        return [parse_coefficient(c, locals_=locals_) for c in x]
+
+    if not isinstance(r, _Mapping):
+        raise AnalysisError(RULES_FORMS)
+    if "stencils" in r:
+        if set(r) - {"stencils", "first"}:
+            raise AnalysisError(f"unknown key {sorted(set(r) - {'stencils', 'first'})[0]!r} in rules: {RULES_FORMS}")
+        st = r["stencils"]
+        if not isinstance(st, list) or len(st) < 2:
+            raise AnalysisError(f"stencils must be a list of M >= 2 stencils; {RULES_FORMS}")
+        from ...algebra.reader import LIMITS
+
+        if len(st) > LIMITS.arity:
+            raise AnalysisError(f"{len(st)} stencils: the arity limit is {LIMITS.arity} (limit 'arity')")
+        stencils = [coeffs(x, f"stencil {k}") for k, x in enumerate(st)]
+        first = r.get("first", 0)
+        a = LaurentSymbol.from_stencils(stencils, first, params=params)
+        text = "; ".join(f"f[{len(st)}i+{k}]: {[sp.sstr(c) for c in x]}" for k, x in enumerate(stencils))
+        return a, len(st), f"rules {text}, first {first}"
+    if not {"even", "odd"} <= set(r) or set(r) - {"even", "odd", "first", "even_first", "odd_first"}:
+        raise AnalysisError(RULES_FORMS)
+    for key in ("first", "even_first", "odd_first"):
+        if key in r and (isinstance(r[key], bool) or not isinstance(r[key], int)):
+            raise AnalysisError(f"{key} must be an integer; {RULES_FORMS}")
+    ev, od = coeffs(r["even"], "even"), coeffs(r["odd"], "odd")
+    a = LaurentSymbol.from_rules(ev, od, r.get("first", 0), even_first=r.get("even_first"),
+                                 odd_first=r.get("odd_first"), params=params)
+    text = (f"rules even {[sp.sstr(c) for c in ev]}, odd {[sp.sstr(c) for c in od]}, first "
+            + ", ".join(f"{k} {r[k]}" for k in ("first", "even_first", "odd_first") if k in r))
+    return a, 2, text
 
 
 def interval_text(lo, hi, lc=False, hc=False) -> str:
