@@ -161,31 +161,37 @@ def _ra(x):
 
 def _compare(x, y) -> int:
     """The sign of ``x - y`` for exact real constants, certified (exact for algebraic numbers, else an
-    exact zero test and an Arb ball at up to 256 bits)."""
+    Arb ball at up to 256 bits, and an exact zero test when the balls cannot separate them).
+
+    >>> _compare("2 - log(1 + sqrt(3))/log(2)", "11/20"), _compare("pi/5", "pi/5"), _compare("sqrt(2)", "7/5")
+    (1, 0, 1)
+    """
     from ...algebra.algebraic import RealAlgebraic
 
     x, y = as_expr(x), as_expr(y)
     try:
         return RealAlgebraic.from_expr(x).compare(RealAlgebraic.from_expr(y))
-    except Exception:   # not algebraic (pi/5, exp(1), ...): exact zero test, then a ball
+    except Exception:   # not algebraic (pi/5, exp(1), log2(3), ...): Arb balls, then an exact zero test
         pass
-    d = sp.simplify(x - y)
-    if d == 0:
-        return 0
     import flint
 
     from ...levels.balls import ball
 
+    d = x - y
     for prec in (64, 128, 256):
         old, flint.ctx.prec = flint.ctx.prec, prec
         try:
             b = ball(d)
+        except Exception:   # an expression the ball evaluator does not know: the exact test below
+            break
         finally:
             flint.ctx.prec = old
         if b > 0:
             return 1
         if b < 0:
             return -1
+    if sp.simplify(d) == 0:
+        return 0
     raise AnalysisError(f"cannot decide the sign of {sp.sstr(d)} (256-bit balls contain 0)")
 
 

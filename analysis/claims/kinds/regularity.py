@@ -43,7 +43,7 @@ from ...regularity.sobolev import sobolev_exponent
 from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ...stationary.normset import norm_solution_set
 from ..model import Number, Verdict, contains_interval
-from .base import Kind, evidence, interval_text
+from .base import Kind, _compare, evidence, interval_text
 from ...algebra.reader import as_expr
 
 __all__ = ["NormTest", "CkRange", "Holder", "Sobolev", "enclosure_text", "compare_enclosure"]
@@ -59,8 +59,34 @@ def enclosure_text(r: Result) -> str:
     return f"[{float(lo):.10f}, {float(hi):.10f}] ({r.status})"
 
 
+def _sign(x, y) -> int | None:
+    """The certified sign of ``x - y`` (:func:`.base._compare`), None when it cannot be decided."""
+    try:
+        return _compare(x, y)
+    except AnalysisError:
+        return None
+
+
+def _claimed_bounds(value=None, tol=None, lower=None, upper=None) -> tuple[list, list]:
+    """The claimed set as lists of lower and upper bounds (``value ± tol``, ``lower``, ``upper``)."""
+    lows, highs = [], []
+    if value is not None:
+        t = tol or 0
+        lows.append(value - t)
+        highs.append(value + t)
+    if lower is not None:
+        lows.append(lower)
+    if upper is not None:
+        highs.append(upper)
+    return lows, highs
+
+
 def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -> tuple[bool | None, str]:
-    """Decide a value/bounds claim from an enclosure: True (proven), False (refuted), None."""
+    """Decide a value/bounds claim from an enclosure: True (proven), False (refuted), None.
+
+    Every comparison is certified (:func:`.base._compare`: exact for algebraic numbers, Arb balls
+    otherwise), so a claimed value such as ``2 - log2(1 + sqrt(3))`` is compared rigorously with the
+    rational end points."""
     lo = r.value if r.value is not None else r.lower
     hi = r.value if r.value is not None else r.upper
     if lo is None or hi is None or r.status not in (CERTIFIED, REFUTED):
@@ -68,13 +94,9 @@ def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -
     if isinstance(lo, float) or isinstance(hi, float) or isinstance(lo, sp.Float) or isinstance(hi, sp.Float):
         return None, "the enclosure is given in floats (not exact end points): not decided"
     lo, hi = as_expr(lo), as_expr(hi)              # exact: Fractions, Rationals, algebraic numbers
-    want_lo, want_hi = lower, upper
-    if value is not None:
-        t = tol or 0
-        want_lo = value - t if want_lo is None else max(want_lo, value - t)
-        want_hi = value + t if want_hi is None else min(want_hi, value + t)
-    inside = (want_lo is None or bool(lo >= want_lo)) and (want_hi is None or bool(hi <= want_hi))
-    outside = (want_lo is not None and bool(hi < want_lo)) or (want_hi is not None and bool(lo > want_hi))
+    lows, highs = _claimed_bounds(value, tol, lower, upper)
+    inside = all(_sign(lo, b) in (0, 1) for b in lows) and all(_sign(hi, b) in (-1, 0) for b in highs)
+    outside = any(_sign(hi, b) == -1 for b in lows) or any(_sign(lo, b) == 1 for b in highs)
     if inside:
         return True, "the certified enclosure lies inside the claimed set"
     if outside:
@@ -82,7 +104,33 @@ def compare_enclosure(r: Result, value=None, tol=None, lower=None, upper=None) -
     return None, "the certified enclosure straddles the claimed set"
 
 
+def compare_exact(h: Result, arity: int, value=None, tol=None, lower=None, upper=None) -> tuple[bool | None, str]:
+    """Decide a Hölder value/bounds claim by the exact closed form of alpha
+    (:func:`analysis.regularity.exact_alpha.compare_alpha`): True, False or None (not decided)."""
+    from ...regularity.exact_alpha import alpha_closed_form, compare_alpha
+
+    form = alpha_closed_form(h, arity)
+    if form is None:
+        return None, "no exact closed form of alpha"
+    conds = ([("eq", value)] if value is not None and not tol else []) + \
+        [("ge", b) for b in _claimed_bounds(value if tol else None, tol, lower, None)[0]] + \
+        [("le", b) for b in _claimed_bounds(value if tol else None, tol, None, upper)[1]]
+    results, whys = [], []
+    for op, b in conds:
+        s, why = compare_alpha(h, b, arity, form=form)
+        whys.append(why)
+        results.append(None if s is None else (s == 0) if op == "eq" else (s >= 0) if op == "ge" else (s <= 0))
+    why = whys[0] if len(set(whys)) == 1 else "; ".join(dict.fromkeys(whys))
+    if any(x is False for x in results):
+        return False, why
+    if results and all(x is True for x in results):
+        return True, why
+    return None, why
+
+
 class _ValueClaim(Kind):
+    #: decide a claimed closed form inside the enclosure by the exact alpha (:func:`compare_exact`)
+    exact_comparison = False
     optional = {"value": "claimed value", "tolerance": "|true - value| <= tolerance", "lower": "claim >= lower",
                 "upper": "claim <= upper", "at": "parameter values", "budget": "work units for the JSR search (default 20000)"}
     quantity = ""
@@ -102,8 +150,11 @@ class _ValueClaim(Kind):
             raise AnalysisError(f"{self.where}: fix every parameter with at = {{...}} "
                                 f"(free: {', '.join(p.name for p in a.params)})")
         r = self.compute(a)
-        ok, why = compare_enclosure(r, self.number("value"), self.number("tolerance"), self.number("lower"),
-                                    self.number("upper"))
+        claimed = (self.number("value"), self.number("tolerance"), self.number("lower"), self.number("upper"))
+        ok, why = compare_enclosure(r, *claimed)
+        if ok is None and self.exact_comparison:        # a closed form inside the enclosure: decide it exactly
+            ok2, why2 = compare_exact(r, self.arity, *claimed)
+            ok, why = (ok2, why2) if ok2 is not None else (None, f"{why}; {why2}")
         claim = " and ".join(x for x in (
             f"= {sp.sstr(self.number('value'))}" + (f" ± {sp.sstr(self.number('tolerance'))}" if self.get("tolerance") else "")
             if self.get("value") is not None else "",
@@ -135,6 +186,7 @@ class Holder(_ValueClaim):
     quantity = "alpha"
     example = 'at = { w = "1/16" }\nvalue = 2'
     mary = True
+    exact_comparison = True
 
     def compute(self, a) -> Result:
         if self.arity != 2:                       # alpha = k - log_m JSR (issue 12)
