@@ -19,7 +19,8 @@ analysis.result.AnalysisError: unknown kind 'sum rule'; the kinds are: all of, a
 Kinds added with the bundled papers' conversion: ``identity``, ``factorization``, ``inequality``
 (:mod:`.lemma`), ``curve comparison``, ``all of`` (seeds 003/000); ``support after steps``,
 ``limit symmetry`` (seed 001); ``eigenvalue inequality`` (:mod:`.spectral`), ``end rules`` and ``gibbs``
-(:mod:`.open_curves`), ``construction`` (:mod:`.construction`) (seed 004).
+(:mod:`.open_curves`), ``construction`` (:mod:`.construction`) (seed 004); ``smoothness`` (:mod:`.smoothness`:
+C^k or not C^k of one scheme, stationary or level-dependent) and ``interpolatory`` (:mod:`.algebraic`).
 
 References
 ----------
@@ -29,7 +30,7 @@ DESIGN.md ("Results contract"); issue 11.
 from __future__ import annotations
 
 from ...result import AnalysisError
-from .algebraic import Eigenvalues, MaskIdentity, Reproduction, SumRules, Support, Symmetry
+from .algebraic import Eigenvalues, Interpolatory, MaskIdentity, Reproduction, SumRules, Support, Symmetry
 from .base import Domain, Kind, SchemeSpec, parse_interval, parse_number
 from .compound import AllOf
 from .construction import Construction
@@ -41,12 +42,13 @@ from .open_curves import EndRules, Gibbs
 from .other import Cited, Inequality, Python
 from .profile import SmoothnessProfile
 from .regularity import CkRange, Holder, NormTest, Sobolev
+from .smoothness import Smoothness
 from .spectral import EigenvalueInequality
 from .support_steps import SupportAfterSteps
 
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
-    MaskIdentity, SumRules, Symmetry, Support, Eigenvalues, Reproduction, NormTest, CkRange, Holder, Sobolev,
+    MaskIdentity, SumRules, Symmetry, Interpolatory, Support, Eigenvalues, Reproduction, NormTest, CkRange, Smoothness, Holder, Sobolev,
     SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Identity,
     Factorization, EigenvalueInequality, SupportAfterSteps, LimitSymmetry, EndRules, Gibbs, Construction,
     CurveComparison, AllOf, Cited, Python)}

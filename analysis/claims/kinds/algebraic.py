@@ -1,5 +1,6 @@
 """Claim kinds decided by exact algebra on the symbol: mask identity, sum rules and smoothing
-factors, symmetry, support, local-matrix eigenvalues, polynomial generation/reproduction.
+factors, symmetry, interpolation (``a_(mj) = delta_(j,0)``), support, local-matrix eigenvalues,
+polynomial generation/reproduction.
 
 Examples
 --------
@@ -214,6 +215,105 @@ class Symmetry(Kind):
             return self.certified(f"the mask of {self.where_text()} is {fact}", evidence=ev, numbers=nums)
         return self.refuted(f"the mask of {self.where_text()} is {fact}", corrected=f"the mask is {fact}",
                             evidence=ev, numbers=nums)
+
+
+class Interpolatory(Kind):
+    """The scheme is interpolatory: ``a_(m j) = delta_(j,0)`` (``f[m i] = f[i]``), exactly, with parameters."""
+
+    name = "interpolatory"
+    summary = ("the scheme is interpolatory, a_(mj) = delta_(j,0) for arity m (f[mi] = f[i]); exact, with parameters; "
+               "holds = false for 'not interpolatory'")
+    optional = {"holds": "true (default): interpolatory for every parameter value; false: for none",
+                "at": "parameter values"}
+    example = "holds = true"
+    mary = True
+
+    def check(self) -> None:
+        self.values()
+        self.boolean("holds", True)
+
+    def _conditions(self, a: LaurentSymbol) -> list[tuple[int, sp.Expr, sp.Expr]]:
+        """``(i, a_i, a_i - delta_(i,0))`` for every index ``i = m j`` of the support and ``i = 0``."""
+        m = self.arity
+        idx = sorted({i for i in range(a.start, a.end + 1) if i % m == 0} | {0})
+        return [(i, a.coeff(i), sp.expand(a.coeff(i) - (1 if i == 0 else 0))) for i in idx]
+
+    def _solutions(self, bad: list, params: list) -> tuple[list | None, str]:
+        """The parameter values (in their domains) where every condition holds, exactly; None if unsolved."""
+        try:
+            sols = sp.solve([e for _, _, e in bad], params, dict=True)
+        except (NotImplementedError, ValueError, TypeError):
+            return None, "sympy could not solve the conditions"
+        out = []
+        for sol in sols:
+            if any(not as_expr(v).is_real for v in sol.values() if not as_expr(v).free_symbols):
+                continue
+            ok = True
+            for p, v in sol.items():
+                dom = self.scheme.domains.get(p.name)
+                if dom is not None and not as_expr(v).free_symbols and not dom.contains(v):
+                    ok = False
+            if ok:
+                out.append(sol)
+        text = "; ".join(", ".join(f"{p} = {sp.sstr(v)}" for p, v in sol.items()) for sol in out) or "no parameter value"
+        return out, text
+
+    def _shift_note(self, a: LaurentSymbol) -> str:
+        """When some residue class is a shifted Kronecker delta: the re-indexing that makes the mask interpolatory."""
+        m = self.arity
+        for r in range(m):
+            nz = [(i, c) for i, c in a.items() if i % m == r and sp.expand(c) != 0]
+            if len(nz) == 1 and sp.expand(nz[0][1] - 1) == 0 and nz[0][0] != 0:
+                d = nz[0][0]
+                return (f" (the mask is a shifted interpolatory mask: a_{d} = 1 is the only nonzero a_({d} + {m}j); "
+                        f"with the indices shifted by {-d} (start {a.start - d}) it is interpolatory)")
+        return ""
+
+    def evaluate(self) -> Verdict:
+        a, m = self.symbol(), self.arity
+        want = self.boolean("holds", True)
+        conds = self._conditions(a)
+        bad = [c for c in conds if c[2] != 0]
+        where = self.where_text()
+        show = ", ".join(f"a_{i} = {sp.sstr(c)}" for i, c, _ in conds[:8]) + (", ..." if len(conds) > 8 else "")
+        r = exact_result(not bad, f"exact coefficients a_({m}j), j in Z", conditions=[(i, c) for i, c, _ in conds])
+        ev = [evidence(f"the coefficients a_({m}j) of {where}", r, text=show)]
+        rule = f"a_({m}j) = delta_(j,0)" + (" (f[2i] = f[i])" if m == 2 else f" (f[{m}i] = f[i])")
+        if not bad:
+            fact = f"{where} is interpolatory: {rule}" + (" for every parameter value" if a.params else "")
+            if want:
+                return self.certified(fact + " (exact)", evidence=ev, numbers=[Number("interpolatory", True)])
+            return self.refuted(fact + " (exact)", corrected=fact, evidence=ev, numbers=[Number("interpolatory", True)])
+        i0, c0, _ = bad[0]
+        offending = f"a_{i0} = {sp.sstr(c0)}, not {1 if i0 == 0 else 0}"
+        params = list(a.params)
+        constant = [c for c in bad if not c[2].free_symbols]
+        if not params or constant:
+            if constant:
+                i0, c0, _ = constant[0]
+                offending = f"a_{i0} = {sp.sstr(c0)}, not {1 if i0 == 0 else 0}"
+            fact = f"{where} is not interpolatory: {offending}" + (" for every parameter value" if params else "")
+            nums = [Number("interpolatory", False), Number("offending index", i0)]
+            if want:
+                return self.refuted(fact + self._shift_note(a), corrected=f"not interpolatory ({offending}){self._shift_note(a)}",
+                                    evidence=ev, numbers=nums)
+            return self.certified(fact, evidence=ev, numbers=nums)
+        sols, where_text = self._solutions(bad, params)
+        nums = [Number("interpolatory", False), Number("offending index", i0)]
+        if want:
+            return self.refuted(f"{where} is not interpolatory for every parameter value: {offending}",
+                                corrected=f"interpolatory exactly for {where_text}" if sols is not None else
+                                f"{rule} fails: {offending}", evidence=ev, numbers=nums,
+                                sharpness=None if sols is None else f"interpolatory exactly for {where_text}")
+        if sols is None:
+            return self.inconclusive(f"{offending}; where the conditions hold was not decided ({where_text})",
+                                     settle="solve the conditions a_(mj) = delta_(j,0) in the parameters", evidence=ev,
+                                     numbers=nums)
+        if sols:
+            return self.refuted(f"{where} is interpolatory for {where_text}", corrected=f"interpolatory exactly for {where_text}",
+                                evidence=ev, numbers=[Number("interpolatory", "at " + where_text), Number("offending index", i0)])
+        return self.certified(f"{where} is not interpolatory for any parameter value in its domain: {offending}",
+                              evidence=ev, numbers=nums)
 
 
 class Support(Kind):

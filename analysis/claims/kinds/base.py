@@ -276,7 +276,8 @@ class SchemeSpec:
 
 
 #: the kinds available for m-ary schemes (their ``mary = True``; issue 12)
-MARY_KINDS = ("mask identity", "sum rules", "symmetry", "support", "eigenvalues", "reproduction", "norm test", "ck range", "holder",
+MARY_KINDS = ("mask identity", "sum rules", "symmetry", "interpolatory", "support", "eigenvalues", "reproduction", "norm test", "ck range",
+              "smoothness", "holder",
               "smoothness profile", "sobolev", "support after steps", "limit symmetry",
               "weighted series", "asymptotic equivalence", "exponential reproduction")
 
@@ -295,7 +296,8 @@ class Kind:
     #: does the claim speak of a scheme (field ``scheme``)?
     uses_scheme: ClassVar[bool] = True
     #: does the kind speak of a level-dependent scheme (``level_mask``) rather than a stationary one?
-    level_scheme: ClassVar[bool] = False
+    #: (None: of either)
+    level_scheme: ClassVar[bool | None] = False
     #: can the kind speak of an m-ary scheme (arity != 2)?  (issue 12; the others refuse at load time)
     mary: ClassVar[bool] = False
     #: example fields (TOML lines) for the template of ``subdiv new-paper``
@@ -326,10 +328,11 @@ class Kind:
                 raise AnalysisError(f"{where}: unknown scheme {s!r} (the file defines: "
                                     f"{', '.join(sorted(schemes)) or 'no scheme'})")
             self.scheme = schemes[s]
-            if (self.scheme.level is not None) != self.level_scheme:
+            if self.level_scheme is not None and (self.scheme.level is not None) != self.level_scheme:
                 raise AnalysisError(f"{where}: kind {self.name!r} needs a "
                                     + ("level-dependent scheme (level_mask)" if self.level_scheme else
-                                       f"stationary scheme; {s!r} is level-dependent"))
+                                       f"stationary scheme; {s!r} is level-dependent (for C^k of a level-dependent "
+                                       "scheme use kind 'smoothness')"))
             if self.scheme.arity != 2 and not self.mary:
                 raise AnalysisError(f"{where}: kind {self.name!r} is not available for arity {self.scheme.arity} "
                                     f"(scheme {s!r}); the m-ary kinds are: {', '.join(MARY_KINDS)}")
