@@ -14,7 +14,9 @@
 
 * ``subdiv report FILE.toml`` and ``subdiv check FILE.toml`` do the same for a paper file
   (:mod:`analysis.claims.paperfile`, issue 11); its golden verdicts are ``FILE.verdicts.json``
-  beside it (``--update-golden`` writes them).
+  beside it (``--update-golden`` writes them). A paper file without golden verdicts yet is checked
+  all the same: ``check`` prints its verdicts, says that there is nothing to compare with and how to
+  create the golden file, and exits 0 (``--json``: one document with ``"missing_golden"``).
 
 A paper file is data: its ``python`` claims run only with ``--allow-python`` (or for a file of the
 bundled ``papers`` package); without it they are inconclusive ("not run") and the rest of the report
@@ -305,6 +307,7 @@ def cmd_check(args) -> None:
     if files and len(files) != len(args.paper):
         raise AnalysisError("check paper files and bundled papers separately")
     loaded, sources = {}, {}
+    new = []             # paper ids of files without golden verdicts yet: evaluated, shown, not compared
     if files:
         for f in files:
             paper = load_file(f, args.allow_python)
@@ -314,9 +317,15 @@ def cmd_check(args) -> None:
         if args.verdicts:
             golden, where = _read_golden(Path(args.verdicts)), args.verdicts
         else:
-            golden, where = {"papers": {}}, ", ".join(str(golden_file(f)) for f in files)
-            for f in files:
-                golden["papers"].update(_read_golden(golden_file(f))["papers"])
+            golden, found = {"papers": {}}, []
+            for pid, f in sources.items():
+                g = golden_file(f)
+                if not g.exists():
+                    new.append(pid)
+                    continue
+                golden["papers"].update(_read_golden(g)["papers"])
+                found.append(str(g))
+            where = ", ".join(found)
     elif args.verdicts:
         golden_path_ = Path(args.verdicts)
         golden, where = _read_golden(golden_path_), str(golden_path_)
@@ -333,28 +342,41 @@ def cmd_check(args) -> None:
         print(f"checking paper {paper.id} ...", file=sys.stderr, flush=True)
         fresh_results[paper.id] = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
     fresh = verdicts_json(fresh_results, titles={k: p.title for k, p in loaded.items()} if loaded else None)
+    compared = [pid for pid in fresh_results if pid not in new]
     if args.claim:   # compare only the selected claims
         sel = {ev.claim.id for evs in fresh_results.values() for ev in evs}
         golden = {"papers": {pid: {"claims": {k: v for k, v in golden["papers"].get(pid, {}).get("claims", {}).items()
-                                              if k in sel}} for pid in fresh_results}}
-    diffs = compare_verdicts(golden, fresh, papers_=list(fresh_results))
+                                              if k in sel}} for pid in compared}}
+    diffs = compare_verdicts(golden, fresh, papers_=compared) if compared else []
     n = sum(len(v) for v in fresh_results.values())
     for pid, evs in fresh_results.items():
         _python_lines(evs, sources.get(pid), args.json)
+    missing = [str(golden_file(sources[pid])) for pid in new]
+    note = (f"no golden file {', '.join(missing)} yet: nothing to compare with; after reviewing the verdicts, create it "
+            f"with `subdiv report {' '.join(sources[pid] for pid in new)} --update-golden` (then `subdiv check` "
+            "compares with it)") if new else None
     if args.json:
-        _print(json.dumps({"golden": where, "claims": n, "agree": not diffs,
-                           "differences": [str(d) for d in diffs], "verdicts": fresh}, indent=1, ensure_ascii=False))
+        _print(json.dumps({"golden": where or None, "claims": n, "agree": (not diffs) if compared else None,
+                           "differences": [str(d) for d in diffs], "verdicts": fresh,
+                           **({"missing_golden": missing, "note": note} if new else {})}, indent=1, ensure_ascii=False))
         if diffs:
             raise SystemExit(1)
         return
+    for pid in new:
+        _print(f"\n== {pid}: {loaded[pid].title}")
+        _print(_table(fresh_results[pid]))
+    if new:
+        _print(f"\nsubdiv check: {note}")
     if diffs:
         _print(f"subdiv check: {len(diffs)} difference(s) from {where}:")
         for d in diffs:
             _print(f"  {d}")
-        again = " ".join(files) if files else "all"
+        again = " ".join(sources[p] for p in compared) if files else "all"
         _print(f"If the change is intended, regenerate with `subdiv report {again} --update-golden` and review the diff.")
         raise SystemExit(1)
-    _print(f"subdiv check: {n} claims agree with {where} ({time.perf_counter() - t0:.1f} s)")
+    if compared:
+        k = sum(len(fresh_results[p]) for p in compared)
+        _print(f"subdiv check: {k} claims agree with {where} ({time.perf_counter() - t0:.1f} s)")
 
 
 ALLOW_PYTHON_HELP = ("run the `python` claims of a paper file (they import and run the Python code the file names: "
