@@ -152,9 +152,14 @@ class _ValueClaim(Kind):
         r = self.compute(a)
         claimed = (self.number("value"), self.number("tolerance"), self.number("lower"), self.number("upper"))
         ok, why = compare_enclosure(r, *claimed)
+        exact_why = settle = None
         if ok is None and self.exact_comparison:        # a closed form inside the enclosure: decide it exactly
             ok2, why2 = compare_exact(r, self.arity, *claimed)
             ok, why = (ok2, why2) if ok2 is not None else (None, f"{why}; {why2}")
+            exact_why = why2
+            if ok2 is None and "rounding" in why2:
+                settle = ("an exact proof that the JSR equals rho(T_w)^(1/L) (the invariant polytope checked in exact "
+                          "algebraic arithmetic)")
         claim = " and ".join(x for x in (
             f"= {sp.sstr(self.number('value'))}" + (f" ± {sp.sstr(self.number('tolerance'))}" if self.get("tolerance") else "")
             if self.get("value") is not None else "",
@@ -171,11 +176,12 @@ class _ValueClaim(Kind):
         if ok is True:
             return self.certified(f"{text}; claimed {claim}: {why}", evidence=[evidence(self.quantity, r, text=enc)], numbers=nums)
         if ok is False:
-            return self.refuted(f"{text}; claimed {claim}: {why}", corrected=f"{self.quantity} = {enc}",
+            return self.refuted(f"{text}; claimed {claim}: {why}",
+                                corrected=f"{self.quantity} = {enc}" + (f"; {exact_why}" if exact_why else ""),
                                 evidence=[evidence(self.quantity, r, text=enc)], numbers=nums)
         return self.inconclusive(f"{text}; claimed {claim}: {why}", evidence=[evidence(self.quantity, text=enc)],
-                                 settle="a tighter enclosure (longer JSR budget) or an exact closed form of the exponent",
-                                 numbers=nums)
+                                 settle=settle or "a tighter enclosure (longer JSR budget) or an exact closed form of "
+                                                  "the exponent", numbers=nums)
 
 
 class Holder(_ValueClaim):
