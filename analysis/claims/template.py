@@ -40,9 +40,12 @@ notes = "The template of `subdiv new-paper`: one example claim of every kind."
 
 # A scheme: exactly one of catalogue = "four-point" | mask + start | rules = { even, odd, first }
 #           | symbol = "(1+z)**3/(4*z**2)" | level_mask + start (level-dependent; n or h = 2^-n).
-# An m-ary scheme adds arity = 3 (mask, symbol or catalogue; a catalogue entry brings its arity):
-# kinds mask identity, sum rules, symmetry, support, eigenvalues, reproduction, norm test,
-# ck range, holder and smoothness profile then use the m-ary analyses (issue 12).
+# An m-ary scheme adds arity = 3 (mask, symbol or catalogue; a catalogue entry brings its arity), or is
+# given by its M rules: rules = { stencils = [[1], ["2/3", "1/3"], ["1/3", "2/3"]], first = 0 } (the r-th
+# stencil gives f[M i + r]; its coefficient of f[i+p] is a_(r - M p); first = [p_0, ...] per stencil).
+# The kinds mask identity, sum rules, symmetry, interpolatory, support, eigenvalues, reproduction,
+# norm test, ck range, smoothness, holder, sobolev and smoothness profile then use the m-ary analyses.
+# Exponents may be written in closed form: value = "2 - log2(1 + sqrt(3))" is compared exactly.
 [schemes.four-point]
 mask = ["-w", 0, "1/2 + w", 1, "1/2 + w", 0, "-w"]
 start = -3

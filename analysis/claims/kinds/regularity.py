@@ -188,7 +188,8 @@ class Holder(_ValueClaim):
     """The Hölder exponent at fixed parameters: certified enclosure vs the claimed value/bounds."""
 
     name = "holder"
-    summary = "Hölder exponent at fixed parameters: value (± tolerance) or bounds, certified enclosure"
+    summary = ("Hölder exponent at fixed parameters: value (± tolerance) or bounds, certified enclosure; a closed form "
+               "(value = \"2 - log2(1 + sqrt(3))\") inside it is compared exactly where the JSR is known exactly")
     quantity = "alpha"
     example = 'at = { w = "1/16" }\nvalue = 2'
     mary = True
