@@ -87,7 +87,7 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
     """Run one ``subdiv`` command; the exit code: 0 done, 2 bad input (one line ``subdiv: error:``
     on stderr, and with ``--json`` also ``{"error": {"message", "kind"}}`` on stdout), 1 a bug
     (reported the same way), 130 interrupted."""
-    from ..algebra.reader import sympy_parser_guarded
+    from ..algebra.guard import sympy_parser_guarded
 
     parser = build_parser(extra_modules)
     argv = list(sys.argv[1:] if argv is None else argv)
