@@ -2,11 +2,40 @@
 refinement; every analysis returns a :class:`~analysis.result.Result` with a status.
 
 Conventions: ``(S_a f)_i = sum_j a_{i-2j} f_j`` and ``a(z) = sum_i a_i z^i`` (see README).
+
+Importing ``analysis`` is cheap: the results contract is imported at once, the symbol algebra
+(sympy) only when one of its names is first used (PEP 562 ``__getattr__``), so that the command
+line starts without sympy when a command does not need it.
 """
 
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
 from .result import Result, AnalysisError, CERTIFIED, NUMERICAL, REFUTED, INCONCLUSIVE
-from .algebra.symbol import LaurentSymbol, Rules, Z, parse_coefficient
+
+if TYPE_CHECKING:  # pragma: no cover - for type checkers and readers; resolved lazily below
+    from .algebra.symbol import LaurentSymbol, Rules, Z, parse_coefficient
 
 __all__ = ["Result", "AnalysisError", "CERTIFIED", "NUMERICAL", "REFUTED", "INCONCLUSIVE",
            "LaurentSymbol", "Rules", "Z", "parse_coefficient"]
 __version__ = "0.1.0"
+
+#: re-exports imported on first use: name -> module (relative to this package)
+_LAZY = {"LaurentSymbol": ".algebra.symbol", "Rules": ".algebra.symbol", "Z": ".algebra.symbol",
+         "parse_coefficient": ".algebra.symbol"}
+
+
+def __getattr__(name: str):
+    """The lazy re-exports of :data:`_LAZY` (PEP 562); the value is cached in the module."""
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

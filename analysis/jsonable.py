@@ -15,10 +15,13 @@ Examples
 
 from __future__ import annotations
 
+import sys
 from fractions import Fraction
 from typing import Any
 
-import sympy as sp
+# No sympy at import: a document of plain values (``subdiv list --json``) is written without it.
+# An object can only be a sympy object once sympy is imported, so :func:`jsonable` looks for sympy
+# in ``sys.modules``; the functions that build sympy values import it.
 
 
 def jsonable(obj: Any) -> Any:
@@ -31,9 +34,10 @@ def jsonable(obj: Any) -> Any:
         return obj
     if isinstance(obj, Fraction):
         return str(obj)
-    if isinstance(obj, sp.Integer):
+    sp = sys.modules.get("sympy")                  # None: obj is no sympy object
+    if sp is not None and isinstance(obj, sp.Integer):
         return int(obj)
-    if isinstance(obj, sp.Basic):
+    if sp is not None and isinstance(obj, sp.Basic):
         return sp.sstr(obj)
     if isinstance(obj, dict):
         return {str(k): jsonable(v) for k, v in obj.items()}
@@ -57,6 +61,8 @@ def _own_value(x: Any):
     """A sympy object for one of our own values (a sympy object, int, Fraction, float, or a
     rational's text such as ``"1/3"``); text is never parsed as a formula here (user text goes
     through :mod:`analysis.algebra.reader`)."""
+    import sympy as sp
+
     if isinstance(x, sp.Basic):
         return x
     if isinstance(x, str):
@@ -106,6 +112,8 @@ def hoist_timing(doc: Any, seconds: float | None = None) -> Any:
 
 def exact_and_float(x: Any) -> dict:
     """``{"exact": "...", "float": 0.123}`` for a real exact number ``x``."""
+    import sympy as sp
+
     x = _own_value(x)
     out: dict = {"exact": sp.sstr(x)}
     if x.is_real and x.is_number:
@@ -142,6 +150,8 @@ def _as_fraction(x: Any, side: str) -> Fraction:
             return _as_fraction(x.item(), side)
     except ImportError:  # pragma: no cover
         pass
+    import sympy as sp
+
     e = _own_value(x)
     if e.is_Rational:
         return Fraction(int(e.p), int(e.q))
@@ -191,6 +201,8 @@ def fmt_bound(x: Any, side: str, digits: int = 10, style: str = "f") -> str:
     never a negative zero. ``style``: ``"f"`` (fixed decimals), ``"e"`` (scientific) or ``"g"``
     (significant digits, trailing zeros removed).
 
+    >>> import sympy as sp
+    >>> import sympy as sp
     >>> fmt_bound(sp.Rational(-1, 10**30), "lower"), fmt_bound(sp.Rational(-1, 10**30), "upper")
     ('-0.0000000001', '0.0000000000')
     >>> fmt_bound(sp.sqrt(2), "lower", 4), fmt_bound(sp.sqrt(2), "upper", 4)
@@ -235,7 +247,7 @@ def fmt_upper(x: Any, digits: int = 10, style: str = "f") -> str:
     return fmt_bound(x, "upper", digits, style)
 
 
-def roundoff_text(x: Any, threshold: Any = sp.Rational(1, 10 ** 12)) -> str:
+def roundoff_text(x: Any, threshold: Any = Fraction(1, 10 ** 12)) -> str:
     """A float64 round-off figure as a statement that does not depend on the machine: ``"< 1e-12"``
     when ``|x|`` is below ``threshold``, else ``|x|`` rounded **up** to one significant digit
     (``"<= 3e-09"``). Printing the raw float (``8.9e-16`` here, ``2.2e-15`` there) would make a

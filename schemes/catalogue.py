@@ -35,14 +35,21 @@ from __future__ import annotations
 import difflib
 import importlib
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Callable, Mapping
-
-import sympy as sp
+from typing import TYPE_CHECKING, Callable
 
 from analysis.result import AnalysisError
-from analysis.algebra.symbol import LaurentSymbol, Rules, parse_coefficient
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
+
+    from analysis.algebra.symbol import LaurentSymbol, Rules
+
+# Importing the catalogue is cheap: no sympy here. The names, titles and sources are in the
+# generated :mod:`schemes.index`; an entry (its exact symbol) is built on first use, by the module
+# that defines it (:func:`get`), and all of them only by :func:`entries`.
 
 #: Modules that define catalogue entries, each with a module-level ``ENTRIES`` tuple, in the
 #: order in which :func:`names` lists them.
@@ -86,6 +93,8 @@ class SchemeEntry:
 
     Examples
     --------
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> w = sp.Symbol("w")
     >>> e = SchemeEntry(slug="toy", title="Toy", params=(w,), source="none",
     ...                 symbol=LaurentSymbol.from_mask([w, 1, 1 - w], start=-1))
@@ -118,6 +127,8 @@ class SchemeEntry:
         if set(params) != set(self.symbol.params):
             raise ValueError(f"{self.slug}: params {params} differ from the symbol's "
                              f"{self.symbol.params}")
+        from analysis.algebra.symbol import parse_coefficient
+
         names = {p.name for p in params}
         defaults = {str(k): parse_coefficient(v) for k, v in dict(self.defaults).items()}
         unknown = set(defaults) - names
@@ -271,6 +282,28 @@ class NumericSchemeEntry:
 # the registry
 # --------------------------------------------------------------------------------------------
 
+class LazyEntries(Mapping):
+    """Catalogue entries by slug, each built on first use (building one computes its exact symbol;
+    a command that needs one entry, or only the names, does not pay for all of them)."""
+
+    def __init__(self, factories: dict):
+        self._factories = dict(factories)
+        self._built: dict = {}
+
+    def __getitem__(self, slug):
+        if slug not in self._built:
+            self._built[slug] = self._factories[slug]()
+        return self._built[slug]
+
+    def __iter__(self):
+        return iter(self._factories)
+
+    def __len__(self) -> int:
+        return len(self._factories)
+
+
+#: module name -> its entries by slug (:func:`module_entries`)
+_MODULE_ENTRIES: dict[str, LazyEntries] = {}
 _REGISTRY: dict[str, SchemeEntry] | None = None
 _NUMERIC: dict[str, NumericSchemeEntry] = {}
 #: m-ary entries (issue 12): found by get(), listed only with names(mary=True) / entries(mary=True).
@@ -279,7 +312,29 @@ _MARY: dict[str, SchemeEntry] = {}
 _ALIASES: dict[str, str] = {}
 
 
+def module_entries(modname: str) -> Mapping:
+    """The entries the module ``modname`` defines (its ``ENTRIES``, then its ``NUMERIC_ENTRIES``), by
+    slug and in order; each group is a tuple of entries or a :class:`LazyEntries` (built on first use).
+
+    >>> list(module_entries("schemes.classic"))[-2:]
+    ['chaikin', 'four-point']
+    """
+    if modname not in _MODULE_ENTRIES:
+        module = importlib.import_module(modname)
+        factories: dict = {}
+        for group in (module.ENTRIES, getattr(module, "NUMERIC_ENTRIES", ())):
+            pairs = ([(k, lambda g=group, k=k: g[k]) for k in group] if isinstance(group, Mapping)
+                     else [(e.slug, lambda e=e: e) for e in group])
+            for slug, make in pairs:
+                if slug in factories:
+                    raise RuntimeError(f"duplicate scheme slug {slug!r} in {modname}")
+                factories[slug] = make
+        _MODULE_ENTRIES[modname] = LazyEntries(factories)
+    return _MODULE_ENTRIES[modname]
+
+
 def _registry() -> dict[str, SchemeEntry]:
+    """Every entry, built (:func:`entries`; the check of :mod:`schemes.index` against the modules)."""
     global _REGISTRY
     if _REGISTRY is None:
         reg: dict[str, SchemeEntry] = {}
@@ -288,7 +343,9 @@ def _registry() -> dict[str, SchemeEntry]:
         extra: dict[str, str] = {}
         for modname in ENTRY_MODULES:
             module = importlib.import_module(modname)
-            for e in tuple(module.ENTRIES) + tuple(getattr(module, "NUMERIC_ENTRIES", ())):
+            for key, e in module_entries(modname).items():
+                if e.slug != key:
+                    raise RuntimeError(f"entry {e.slug!r} is listed as {key!r} in {modname}")
                 if e.slug in reg or e.slug in numeric or e.slug in aliases:
                     raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {modname}")
                 (numeric if isinstance(e, NumericSchemeEntry) else reg)[e.slug] = e
@@ -314,16 +371,25 @@ def _registry() -> dict[str, SchemeEntry]:
         _NUMERIC.clear()
         _NUMERIC.update(numeric)
         _MARY.clear()
-        for e in importlib.import_module(MARY_MODULE).ENTRIES:
-            if e.slug in reg or e.slug in numeric or e.slug in aliases or e.slug in _MARY:
+        for key, e in module_entries(MARY_MODULE).items():
+            if e.slug in reg or e.slug in numeric or e.slug in aliases or e.slug in _MARY or e.slug != key:
                 raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {MARY_MODULE}")
             _MARY[e.slug] = e
         _REGISTRY = reg
     return _REGISTRY
 
 
+def _rows(*, numeric: bool = False, mary: bool = False) -> list:
+    """The :class:`schemes.index.Row` of each listed entry, in catalogue order (nothing is built)."""
+    from .index import SCHEMES
+
+    groups = {"exact"} | ({"numeric"} if numeric else set()) | ({"mary"} if mary else set())
+    return [r for r in SCHEMES if r.group in groups]
+
+
 def names(*, aliases: bool = False, numeric: bool = False, mary: bool = False) -> list[str]:
-    """The slugs of all entries, in catalogue order (with ``aliases=True`` also the aliases).
+    """The slugs of all entries, in catalogue order (with ``aliases=True`` also the aliases); no
+    entry is built (the names come from :mod:`schemes.index`).
 
     With ``numeric=True`` the :class:`NumericSchemeEntry` slugs (Daubechies) follow the exact
     entries; aliases of numeric entries are listed only then.
@@ -335,20 +401,27 @@ def names(*, aliases: bool = False, numeric: bool = False, mary: bool = False) -
     >>> "daubechies-4" in names(), "daubechies-4" in names(numeric=True)
     (False, True)
     """
-    reg = _registry()
-    out = list(reg)
-    if numeric:
-        out += list(_NUMERIC)
-    if mary:
-        out += list(_MARY)
+    from .index import ALIASES, BY_SLUG
+
+    out = [r.slug for r in _rows(numeric=numeric, mary=mary)]
     if aliases:
-        out += [a for a, t in _ALIASES.items() if numeric or t in reg]
+        out += [a for a, t in ALIASES.items() if numeric or BY_SLUG[t].group == "exact"]
     return out
+
+
+def listing(*, numeric: bool = False, mary: bool = False) -> list:
+    """What ``subdiv list`` shows of each entry — ``slug``, ``title``, ``params`` (names), ``source``,
+    ``arity`` — in catalogue order, without building any entry (:class:`schemes.index.Row`).
+
+    >>> [(r.slug, r.params) for r in listing() if r.slug == "four-point"]
+    [('four-point', ('w',))]
+    """
+    return _rows(numeric=numeric, mary=mary)
 
 
 def entries(*, numeric: bool = False, mary: bool = False) -> list:
     """All entries with an exact symbol, in catalogue order (``numeric=True``: then the
-    :class:`NumericSchemeEntry` ones).
+    :class:`NumericSchemeEntry` ones). Builds every entry; :func:`listing` does not.
 
     >>> all(e.symbol(1) == 2 for e in entries())
     True
@@ -364,7 +437,8 @@ def entries(*, numeric: bool = False, mary: bool = False) -> list:
 
 
 def get(slug: str) -> SchemeEntry:
-    """The entry named ``slug`` (or one of its aliases).
+    """The entry named ``slug`` (or one of its aliases), built on first use by the module that
+    defines it (:func:`module_entries`; the other modules are not imported).
 
     An unknown name is an :class:`AnalysisError` whose one-line message lists close matches.
 
@@ -375,21 +449,17 @@ def get(slug: str) -> SchemeEntry:
     ...
     analysis.result.AnalysisError: unknown scheme 'chaikn'; did you mean: chaikin?
     """
-    reg = _registry()
+    from .index import ALIASES, BY_SLUG
+
     key = str(slug).strip().lower()
-    if key in reg:
-        return reg[key]
-    if key in _NUMERIC:
-        return _NUMERIC[key]
-    if key in _MARY:
-        return _MARY[key]
-    if key in _ALIASES:
-        target = _ALIASES[key]
-        return reg[target] if target in reg else _NUMERIC[target]
-    candidates = list(reg) + list(_NUMERIC) + list(_ALIASES)
+    target = key if key in BY_SLUG else ALIASES.get(key)
+    if target is not None:
+        return module_entries(BY_SLUG[target].module)[target]
+    exact_and_numeric = [r.slug for r in _rows(numeric=True)]
+    candidates = exact_and_numeric + list(ALIASES)
     close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
     if not close:                      # m-ary names are suggested only when no binary name is close
-        candidates = candidates + list(_MARY)
+        candidates = candidates + [r.slug for r in _rows(mary=True) if r.group == "mary"]
         close = sorted(difflib.get_close_matches(key, candidates, n=5, cutoff=0.6))
     m = re.fullmatch(r"(.*?)(\d+)", key)
     if m:

@@ -25,11 +25,13 @@ Computer Aided Geometric Design 4 (1987) 257-268.
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from analysis.algebra.symbol import LaurentSymbol, Rules, Z
 
-from .catalogue import SchemeEntry
+from .catalogue import LazyEntries, SchemeEntry
 
 #: Degrees of the catalogued B-spline schemes.
 BSPLINE_DEGREES = range(1, 8)
@@ -73,9 +75,10 @@ _HALF = sp.Rational(1, 2)
 _FOUR_POINT_RULES = Rules(even=(sp.Integer(1),), even_first=0,
                           odd=(-_W, _HALF + _W, _HALF + _W, -_W), odd_first=-1)
 
-#: The classic entries, in catalogue order.
-ENTRIES: tuple[SchemeEntry, ...] = tuple(_bspline_entry(d) for d in BSPLINE_DEGREES) + (
-    SchemeEntry(
+#: The classic entries by slug, in catalogue order, each built on first use.
+ENTRIES = LazyEntries({
+    **{f"bspline-{d}": functools.partial(_bspline_entry, d) for d in BSPLINE_DEGREES},
+    "chaikin": lambda: SchemeEntry(
         slug="chaikin",
         title="Chaikin's corner cutting",
         symbol=LaurentSymbol.from_mask([sp.Rational(1, 4), sp.Rational(3, 4), sp.Rational(3, 4),
@@ -90,7 +93,7 @@ ENTRIES: tuple[SchemeEntry, ...] = tuple(_bspline_entry(d) for d in BSPLINE_DEGR
         stencils=Rules(even=(sp.Rational(3, 4), sp.Rational(1, 4)), even_first=0,
                        odd=(sp.Rational(1, 4), sp.Rational(3, 4)), odd_first=0),
     ),
-    SchemeEntry(
+    "four-point": lambda: SchemeEntry(
         slug="four-point",
         title="Dyn-Levin-Gregory interpolatory 4-point scheme",
         symbol=LaurentSymbol.from_rules(_FOUR_POINT_RULES.even, _FOUR_POINT_RULES.odd,
@@ -103,4 +106,4 @@ ENTRIES: tuple[SchemeEntry, ...] = tuple(_bspline_entry(d) for d in BSPLINE_DEGR
         defaults={"w": sp.Rational(1, 16)},
         stencils=_FOUR_POINT_RULES,
     ),
-)
+})

@@ -41,6 +41,8 @@ import sympy as sp
 from analysis.levels.level_dependent import H, LevelDependentScheme
 from analysis.result import AnalysisError
 
+from .catalogue import LazyEntries  # noqa: F401  (the catalogue's lazy mapping; imported from here too)
+
 #: the frequency / tension parameter
 T = sp.Symbol("t", positive=True)
 _Z = sp.Symbol("z")
@@ -69,27 +71,6 @@ def _degree(d, v):
 
 _VH = sp.cosh(T * H / 2)
 _VT = sp.cos(T * H / 2)
-
-class LazyEntries(Mapping):
-    """Catalogue entries by slug, each built on first use (building one simplifies its symbolic
-    coefficients, about half a second: a command that needs one entry, or only the names, does
-    not pay for all of them)."""
-
-    def __init__(self, factories: dict):
-        self._factories = dict(factories)
-        self._built: dict = {}
-
-    def __getitem__(self, slug):
-        if slug not in self._built:
-            self._built[slug] = self._factories[slug]()
-        return self._built[slug]
-
-    def __iter__(self):
-        return iter(self._factories)
-
-    def __len__(self) -> int:
-        return len(self._factories)
-
 
 _KINDS = {"hyp": (_VH, "hyperbolic"), "trig": (_VT, "trigonometric")}
 _SHAPES = {"chaikin": (_chaikin, "Chaikin", 2), "cubic": (_cubic, "cubic B-spline", 2),

@@ -25,11 +25,13 @@ Appl. Appl. Math. 3 (2008) 18-29.
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from analysis.algebra.symbol import LaurentSymbol, Z
 
-from .catalogue import SchemeEntry
+from .catalogue import LazyEntries, SchemeEntry
 
 _ARITY_NAME = {3: "ternary", 4: "quaternary"}
 _ORDINAL = {1: "linear", 2: "quadratic", 3: "cubic", 4: "quartic", 5: "quintic"}
@@ -92,8 +94,10 @@ def _bspline_entry(d: int, m: int) -> SchemeEntry:
         notes=f"a(z) = (1+...+z^{m - 1})^{d + 1} / ({m}^{d} z^{((d + 1) * (m - 1)) // 2}), computed, not typed.")
 
 
-ENTRIES = tuple(_bspline_entry(d, m) for m in (3, 4) for d in range(1, 6)) + (
-    SchemeEntry(
+#: The m-ary entries by slug, each built on first use.
+ENTRIES = LazyEntries({
+    **{f"{_ARITY_NAME[m]}-bspline-{d}": functools.partial(_bspline_entry, d, m) for m in (3, 4) for d in range(1, 6)},
+    "ternary-four-point": lambda: SchemeEntry(
         slug="ternary-four-point", title="Ternary interpolatory 4-point scheme with tension mu",
         symbol=ternary_four_point_symbol(), params=(MU,), arity=3,
         defaults={"mu": sp.Rational(1, 27)},
@@ -111,14 +115,14 @@ ENTRIES = tuple(_bspline_entry(d, m) for m in (3, 4) for d in range(1, 6)) + (
               "(Dyn et al., 1987) to ternary'); both are checked in tests/test_issue12_mary.py. Internal "
               "checks: interpolatory, symmetric, sum rules for every mu, and at mu = 1/27 it equals the "
               "ternary Lagrange (Dubuc-Deslauriers) scheme. Default mu = 1/27 (cubic reproduction, computed)."),
-    SchemeEntry(
+    "ternary-dd-4": lambda: SchemeEntry(
         slug="ternary-dd-4", title="Ternary Dubuc-Deslauriers 4-point (reproduces cubics)",
         symbol=lagrange_mary_symbol(4, 3), params=(), arity=3,
         source="Deslauriers & Dubuc, Constr. Approx. 5 (1989) 49-68; Lian, Appl. Appl. Math. 3 (2008) 18-29",
         notes="cubic Lagrange interpolation at i + 1/3, i + 2/3 from f_{i-1..i+2}; computed, not typed."),
-    SchemeEntry(
+    "quaternary-dd-4": lambda: SchemeEntry(
         slug="quaternary-dd-4", title="Quaternary Dubuc-Deslauriers 4-point (reproduces cubics)",
         symbol=lagrange_mary_symbol(4, 4), params=(), arity=4,
         source="Deslauriers & Dubuc, Constr. Approx. 5 (1989) 49-68; Lian, Appl. Appl. Math. 3 (2008) 18-29",
         notes="cubic Lagrange interpolation at i + r/4 from f_{i-1..i+2}; computed, not typed."),
-)
+})

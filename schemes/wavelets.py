@@ -74,7 +74,7 @@ import sympy as sp
 from analysis.result import AnalysisError
 from analysis.algebra.symbol import LaurentSymbol, Z
 
-from .catalogue import NumericSchemeEntry
+from .catalogue import LazyEntries, NumericSchemeEntry
 
 #: The catalogued numbers of vanishing moments: D4 (N = 2) ... D54 (N = 27). (D56 and beyond:
 #: the Arb eigenvalue isolation of the s.m.p. needs wider precision than the JSR code uses.)
@@ -246,5 +246,7 @@ def _entry(N: int) -> NumericSchemeEntry:
 #: Entries with an exact, symmetric symbol (none here: see NUMERIC_ENTRIES).
 ENTRIES: tuple = ()
 
-#: The Daubechies entries D4 ... D54 (registered by schemes.catalogue, listed with numeric=True).
-NUMERIC_ENTRIES: tuple[NumericSchemeEntry, ...] = tuple(_entry(N) for N in DAUBECHIES_ORDERS)
+#: The Daubechies entries D4 ... D54 (registered by schemes.catalogue, listed with numeric=True),
+#: each built on first use (D4's exact symbol takes sympy's radical simplification).
+NUMERIC_ENTRIES: LazyEntries = LazyEntries({f"daubechies-{2 * N}": functools.partial(_entry, N)
+                                            for N in DAUBECHIES_ORDERS})

@@ -77,6 +77,38 @@ def test_symbol_at_unknown_parameter_is_an_error():
         schemes.get("four-point").symbol_at(nu=1)
 
 
+def test_index_is_current():
+    """``schemes/index.py`` (what ``subdiv list`` shows, and which module defines each name, without
+    building an entry) is what the entry modules define now."""
+    from schemes import indexer
+
+    assert indexer.current() == indexer.stored(), "schemes/index.py is stale: run python -m schemes.indexer --write"
+
+
+@pytest.mark.parametrize("numeric, mary", [(False, False), (True, False), (False, True), (True, True)])
+def test_names_and_listing_are_the_entries(numeric, mary):
+    """The names and the listing (read from the index, nothing built) agree with the built entries,
+    in order; ``get`` returns the very entry ``entries`` lists."""
+    built = schemes.entries(numeric=numeric, mary=mary)
+    assert schemes.names(numeric=numeric, mary=mary) == [e.slug for e in built]
+    assert [(r.slug, r.title, r.params, r.source, r.arity) for r in schemes.listing(numeric=numeric, mary=mary)] == \
+        [(e.slug, e.title, tuple(p.name for p in e.params), e.source, getattr(e, "arity", 2)) for e in built]
+    assert all(schemes.get(e.slug) is e for e in built)
+    assert all(schemes.get(a) is schemes.get(t) for a, t in schemes.catalogue._ALIASES.items())
+
+
+def test_get_builds_only_its_own_module():
+    """``get`` imports the module that defines the name, not the rest of the catalogue."""
+    import subprocess
+    import sys
+
+    code = ("import sys, schemes\nschemes.get('chaikin')\n"
+            "print(sorted(m for m in sys.modules if m.startswith('schemes.')))")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.split() == ["['schemes.catalogue',", "'schemes.classic',", "'schemes.index']"]
+
+
 def test_entries_are_frozen():
     with pytest.raises(dataclasses.FrozenInstanceError):
         schemes.get("four-point").slug = "x"

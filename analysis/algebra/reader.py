@@ -71,7 +71,6 @@ Python Language Reference, "Full grammar specification" (the ``eval`` input mode
 from __future__ import annotations
 
 import ast
-import contextlib
 import re
 from dataclasses import dataclass
 from fractions import Fraction
@@ -558,7 +557,19 @@ def read_expression(text: str, *, names: Mapping[str, sp.Expr] | None = None,
 
 
 class _TextReachedSympy(AnalysisError):
-    """Unsafe text reached sympy's string parser while :func:`sympy_parser_guarded` was active."""
+    """Unsafe text reached sympy's string parser while
+    :func:`~analysis.algebra.guard.sympy_parser_guarded` was active (checked by :func:`_safe_for_sympy`).
+
+    >>> from analysis.algebra.guard import sympy_parser_guarded
+    >>> with sympy_parser_guarded():
+    ...     ok = sp.sympify("sqrt(2)/2 + x")
+    ...     bad = sp.sympify("__import__('os').getcwd()")
+    Traceback (most recent call last):
+    ...
+    analysis.algebra.reader._TextReachedSympy: text "__import__('os').getcwd()" reached sympy's parser instead of the input reader (please report this)
+    >>> ok
+    x + sqrt(2)/2
+    """
 
 
 #: Functions sympy's own code may write into the strings it parses (``nsimplify`` builds its
@@ -590,40 +601,6 @@ def _safe_for_sympy(text: str) -> bool:
             continue
         return False
     return True
-
-
-@contextlib.contextmanager
-def sympy_parser_guarded():
-    """A second wall behind :func:`read_expression`. Our code never hands text to sympy, but
-    sympy may parse text of its own (``nsimplify`` does) and a forgotten path might hand it ours:
-    while this is active, sympy's string parser (where ``sympify`` of a ``str`` ends in ``eval``)
-    accepts only numbers, names, arithmetic and named functions, and refuses everything else.
-    The command line runs every command inside it.
-
-    >>> with sympy_parser_guarded():
-    ...     ok = sp.sympify("sqrt(2)/2 + x")
-    ...     bad = sp.sympify("__import__('os').getcwd()")
-    Traceback (most recent call last):
-    ...
-    analysis.algebra.reader._TextReachedSympy: text "__import__('os').getcwd()" reached sympy's parser instead of the input reader (please report this)
-    >>> ok
-    x + sqrt(2)/2
-    """
-    import sympy.parsing.sympy_parser as spp
-
-    saved = spp.parse_expr
-
-    def guarded(s, *args, **kwargs):
-        if not isinstance(s, str) or not _safe_for_sympy(s):
-            raise _TextReachedSympy(f"text {str(s)[:40]!r} reached sympy's parser instead of the input reader "
-                                    "(please report this)")
-        return saved(s, *args, **kwargs)
-
-    spp.parse_expr = guarded
-    try:
-        yield
-    finally:
-        spp.parse_expr = saved
 
 
 def read_in_context(text: Any, context: Mapping[str, Any], *, what: str = "",

@@ -15,8 +15,6 @@ the module in ``analysis.cli.main.COMMAND_MODULES``).
 
 from __future__ import annotations
 
-import sympy as sp
-
 from ..result import AnalysisError
 from .common import WORK_HELP, work_arg
 
@@ -38,6 +36,8 @@ def _verdict_char(v) -> str:
 def _ascii_map(result, js) -> list[str]:
     """The level-0 grid as characters: the largest certified j (of ``js``) with C^j, '.' for none,
     '?' when a verdict is undecided, '*' on an exceptional set; rows from the top (largest p2)."""
+    import sympy as sp
+
     rows = [r for r in result.value if r["level"] == 0]
     xs = sorted({r["p1"] for r in rows})
     ys = sorted({r["p2"] for r in rows}, reverse=True)
@@ -58,6 +58,8 @@ def _ascii_map(result, js) -> list[str]:
 
 
 def cmd_atlas(args) -> None:
+    import sympy as sp
+
     from ..regularity.atlas import holder_atlas, parse_axis, plot_atlas
     from .common import _emit, check_figure, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper

@@ -17,13 +17,26 @@ import argparse
 import json
 import os
 import sys
-from typing import Sequence
+from typing import TYPE_CHECKING, Sequence
 
-import sympy as sp
-
-from ..jsonable import hoist_timing, jsonable
 from ..result import AnalysisError
-from ..algebra.symbol import LaurentSymbol, parse_coefficient
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
+
+    from ..algebra.symbol import LaurentSymbol
+
+# This module is imported to build the parser (``subdiv --help``): it imports no sympy, numpy or
+# engine module at the top; the functions that need them import them (tests/test_startup.py).
+
+
+def __getattr__(name: str):
+    """``LaurentSymbol`` and ``parse_coefficient``, imported from the symbol algebra on first use."""
+    if name in ("LaurentSymbol", "parse_coefficient"):
+        from ..algebra import symbol
+
+        return getattr(symbol, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -74,6 +87,8 @@ def _parse_params(items: Sequence[str] | None) -> dict[str, sp.Expr]:
         if not name.isidentifier():
             raise AnalysisError(f"malformed parameter name {name!r}")
         if name in out:
+            import sympy as sp
+
             raise AnalysisError(f"--param {name} is given twice ({sp.sstr(out[name])} and {value}): give it once")
         out[name] = read_number(value, f"--param {name}")
     return out
@@ -90,6 +105,8 @@ def read_number(text: str, what: str, *, real: bool = True, infinity: bool = Fal
     ...
     analysis.algebra.reader.InputError: --param w must be a real number, not I
     """
+    import sympy as sp
+
     from ..algebra.reader import InputError, read_expression
 
     v = read_expression(text, what=what, free=False, allow_infinity=infinity,
@@ -105,16 +122,20 @@ def _catalogue_arity(name: str, level: bool = False) -> int:
     An unknown name keeps the stationary catalogue's error, or the level-dependent catalogue's
     (``level=True``: a command that takes level-dependent schemes)."""
     import schemes
+    from schemes.index import ALIASES, BY_SLUG, LEVEL, LEVEL_MARY   # names and arities: nothing is built
 
+    key = str(name).strip().lower()
+    if key in BY_SLUG or key in ALIASES:
+        return BY_SLUG[ALIASES.get(key, key)].arity
     try:
         return getattr(schemes.get(name), "arity", 2)
     except AnalysisError as stationary_error:
         from schemes import level_dependent
 
-        from schemes.level_mary import MARY_ENTRIES
-
-        if str(name).strip().lower() in MARY_ENTRIES:
-            return MARY_ENTRIES[str(name).strip().lower()].arity
+        if key in LEVEL_MARY:
+            return LEVEL_MARY[key]
+        if key in LEVEL:
+            return 2
         try:
             level_dependent.get(name)
         except AnalysisError:
@@ -182,6 +203,8 @@ def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, st
     if len(given) != 1:
         raise AnalysisError("give exactly one of --scheme NAME, --mask LIST, --even/--odd RULES, --symbol EXPR")
     kind = given[0]
+    from ..algebra.symbol import LaurentSymbol
+
     if kind == "scheme":
         import schemes
 
@@ -352,6 +375,8 @@ def check_figure(path: str, option: str) -> None:
 def json_document(data) -> str:
     """The JSON text of a command's document: wall-clock times only under its top-level ``"timing"``
     key (:func:`analysis.jsonable.hoist_timing`), so that two runs differ only there."""
+    from ..jsonable import hoist_timing, jsonable
+
     return json.dumps(hoist_timing(jsonable(data)), indent=2)
 
 
@@ -388,6 +413,8 @@ def _parse_Ls(text: str) -> list[int]:
 
 
 def _parse_within(text: str | None):
+    import sympy as sp
+
     if text is None:
         return (-sp.oo, sp.oo)
     parts = [t.strip() for t in text.split(",")]

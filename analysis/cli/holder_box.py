@@ -23,8 +23,6 @@ Examples
 
 from __future__ import annotations
 
-import sympy as sp
-
 from ..result import AnalysisError
 from .common import _emit
 from .level_args import k_max_arg, param_box_values, stationary_options_refused
@@ -79,6 +77,8 @@ def _scheme(args):
 
 
 def _verdict_lines(r) -> list[str]:
+    import sympy as sp
+
     lines = []
     for v in r.witness["verdicts"]:
         name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
@@ -122,6 +122,8 @@ def _verdict_lines(r) -> list[str]:
 def holder_box(args) -> None:
     """``subdiv holder --box ...`` on a level-dependent scheme (binary; ``--arity M`` or an m-ary catalogue
     entry of :mod:`schemes.level_mary`: dilation M, ``h = M^-n``)."""
+    import sympy as sp
+
     from ..levels.ck_box import level_smoothness_box
     from .common import scheme_arity
 

@@ -41,10 +41,9 @@ def uses_level(args) -> bool:
         return True
     name = getattr(args, "scheme", None)
     if name:
-        from schemes.level_dependent import names
-        from schemes.level_mary import MARY_ENTRIES
+        from schemes.index import LEVEL, LEVEL_MARY     # the names only: no entry is built
 
-        return str(name).strip().lower() in names() or str(name).strip().lower() in MARY_ENTRIES
+        return str(name).strip().lower() in LEVEL or str(name).strip().lower() in LEVEL_MARY
     return False
 
 

@@ -18,14 +18,12 @@ from __future__ import annotations
 
 from typing import Callable
 
-import sympy as sp
-
-from ..jsonable import fmt_lower, fmt_upper
-
 
 def series_line(label: str, r, detail: Callable[[str | None], str]) -> str:
     """``label: convergent, sum in [lo, hi] (status; detail)``, ``label: divergent (status)detail`` or
     ``label: status detail``; ``detail(verdict)`` is the engine's own part of the line."""
+    from ..jsonable import fmt_lower, fmt_upper
+
     v = r.witness.get("verdict")
     if v == "convergent":
         return (f"{label}: convergent, sum in [{fmt_lower(r.lower, 15, 'g')}, {fmt_upper(r.upper, 15, 'g')}] "
@@ -44,6 +42,8 @@ def limit_line(lim: dict) -> str:
 def verdict_lines(r, *, why: bool = False) -> list[str]:
     """The lines ``  C^k: yes/no/undecided [status] — theorem`` of a level-dependent C^k result and the
     conclusion ``  => ...``; ``why``: each failed route also says why (its ``"why"``)."""
+    import sympy as sp
+
     lines = []
     for v in r.witness["verdicts"]:
         name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"

@@ -22,15 +22,10 @@ Examples
 
 from __future__ import annotations
 
-import sympy as sp
-
 from .common import _emit, _parse_params, check_figure
 from .level_args import k_max_arg, param_box_values, parse_boxes, stationary_options_refused
 from .level_text import limit_line, series_line, verdict_lines
-from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
-from ..algebra.symbol import parse_coefficient
-from ..algebra.reader import as_expr
 
 
 def _level_scheme(args):
@@ -72,6 +67,8 @@ def _ints(text, what):
 
 
 def cmd_series(args) -> None:
+    from ..jsonable import fmt_lower, fmt_upper
+
     from ..levels.level_dependent import leading_asymptotics
     from ..levels.series import weighted_series
     from .common import scheme_arity
@@ -118,6 +115,8 @@ def cmd_series(args) -> None:
 
 def _series_region(args, s) -> None:
     """``subdiv series --C K``: C^K by Dyn-Levin at every point of the region (issue 13)."""
+    from ..jsonable import fmt_lower, fmt_upper
+
     from ..levels.region import smoothness_on_region
 
     try:
@@ -148,6 +147,11 @@ def _series_region(args, s) -> None:
 
 
 def cmd_bound(args) -> None:
+    import sympy as sp
+    from ..jsonable import fmt_lower, fmt_upper
+    from ..algebra.symbol import parse_coefficient
+    from ..algebra.reader import as_expr
+
     from ..levels.bounds import check_inequality
 
     vals = _values(args)
@@ -191,6 +195,9 @@ def cmd_bound(args) -> None:
 
 
 def cmd_reproduce(args) -> None:
+    import sympy as sp
+    from ..algebra.symbol import parse_coefficient
+
     from ..levels.reproduction import check_curve_options, curve_deviation, generation, reproduction
 
     if args.plot:
@@ -253,6 +260,8 @@ def cmd_reproduce(args) -> None:
 
 def holder_level_dependent(args, s) -> None:
     """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status)."""
+    import sympy as sp
+
     from ..levels.ck import level_smoothness
 
     stationary_options_refused(args)

@@ -17,9 +17,6 @@ Examples
 
 from __future__ import annotations
 
-import sympy as sp
-
-from ..jsonable import fmt_lower, fmt_upper
 from ..result import AnalysisError
 from .common import _emit
 from .level_args import k_max_arg, param_box_values, stationary_options_refused
@@ -67,6 +64,9 @@ def _values(args, s) -> dict:
 
 
 def cmd_series(args, m: int) -> None:
+    import sympy as sp
+    from ..jsonable import fmt_lower, fmt_upper
+
     from ..levels.mary import difference_scheme_mary, weighted_series_boxes_mary
 
     if getattr(args, "C", None) is not None or getattr(args, "open", None):
@@ -108,6 +108,8 @@ def cmd_holder(args, m: int) -> None:
     """``subdiv holder`` on a level-dependent m-ary scheme: convergence and C^k for each k, each with its theorem
     and status, and "not C^k" where a theorem gives it (:func:`analysis.levels.mary.level_smoothness_mary`, the
     binary routes with dilation m; the lines are those of the binary command, :mod:`analysis.cli.level_text`)."""
+    import sympy as sp
+
     from ..levels.mary import level_smoothness_mary
 
     stationary_options_refused(args)

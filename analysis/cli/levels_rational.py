@@ -3,8 +3,6 @@
 
 from __future__ import annotations
 
-import sympy as sp
-
 from ..result import AnalysisError
 from .common import _emit
 from .level_args import k_max_arg, stationary_options_refused
@@ -41,6 +39,8 @@ def fallback(args, params, exc: AnalysisError):
 
 
 def _header(s) -> list[str]:
+    import sympy as sp
+
     n = sp.Symbol("n")
     expr = sum(c.subs(sp.Symbol("h", positive=True), 2 ** (-n)) * sp.Symbol("z") ** (s.start + k)
                for k, c in enumerate(s.mask))

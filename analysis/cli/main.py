@@ -1,6 +1,10 @@
 """The ``subdiv`` command line: the parser and :func:`main` (the one place that turns errors into
 one line on stderr and an exit code, and guards standard output).
 
+Start-up is cheap: building the parser imports no engine module and no sympy, numpy or scipy (the
+command modules import what a command needs inside the command's function), so ``subdiv --help``
+and ``subdiv list`` start in a fraction of a second; ``tests/test_startup.py`` keeps it so.
+
 The command groups live in their own modules and register themselves (:data:`COMMAND_MODULES`):
 :mod:`.stationary`, :mod:`.regularity`, :mod:`.atlas`, :mod:`.levels`, :mod:`.nonuniform`,
 :mod:`.report`, :mod:`.derive`; what they share is in :mod:`.common`.
@@ -32,6 +36,19 @@ from typing import Sequence
 from ..result import AnalysisError
 from .common import _Parser, _StdoutGuard, _version, attach_dash_values
 
+
+class _VersionAction(argparse._VersionAction):
+    """``--version``: the version is looked up (``importlib.metadata``) only when asked for."""
+
+    @property
+    def version(self) -> str:
+        return f"subdiv {_version()}"
+
+    @version.setter
+    def version(self, value) -> None:  # argparse sets it in __init__; the property answers
+        pass
+
+
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
                                      "analysis.cli.paperfile", "analysis.cli.derive")
@@ -40,7 +57,7 @@ COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.reg
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
     p = _Parser(prog="subdiv", description="Exact and certified analysis of binary subdivision schemes. "
                 "Convention: (S_a f)_i = sum_j a_{i-2j} f_j, a(z) = sum_i a_i z^i.")
-    p.add_argument("--version", action="version", version=f"subdiv {_version()}")
+    p.add_argument("--version", action=_VersionAction)
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
     sub.required = True
     for name in dict.fromkeys((*COMMAND_MODULES, *extra_modules)):  # each module once
@@ -87,7 +104,7 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
     """Run one ``subdiv`` command; the exit code: 0 done, 2 bad input (one line ``subdiv: error:``
     on stderr, and with ``--json`` also ``{"error": {"message", "kind"}}`` on stdout), 1 a bug
     (reported the same way), 130 interrupted."""
-    from ..algebra.reader import sympy_parser_guarded
+    from ..algebra.guard import sympy_parser_guarded
 
     parser = build_parser(extra_modules)
     argv = list(sys.argv[1:] if argv is None else argv)

@@ -15,16 +15,14 @@ Examples
 
 from __future__ import annotations
 
-import sympy as sp
-
-from ..jsonable import exact_and_float
 from ..result import AnalysisError
 from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_figure, check_writable, scheme_from_args, work_arg
-from ..algebra.reader import as_expr
 
 
 def _fmt_set(S) -> str:
     """A sympy set of reals as ``(a, b] U [c, oo)``."""
+    import sympy as sp
+
     if S == sp.EmptySet:
         return "empty"
     parts = S.args if isinstance(S, sp.Union) else (S,)
@@ -44,6 +42,8 @@ def _input(args, m: int):
 
 
 def cmd_symbol(args, m: int) -> None:
+    import sympy as sp
+
     from ..algebra.mary import sum_rules_mary, symmetry_mary
 
     a, label, head = _input(args, m)
@@ -61,6 +61,8 @@ def cmd_symbol(args, m: int) -> None:
 
 
 def cmd_factor(args, m: int) -> None:
+    import sympy as sp
+
     from ..algebra.mary import polynomial_generation_mary, polynomial_reproduction_mary, smoothing_factor_mary
 
     a, label, head = _input(args, m)
@@ -83,6 +85,9 @@ def cmd_factor(args, m: int) -> None:
 
 
 def cmd_norm(args, m: int) -> None:
+    import sympy as sp
+    from ..jsonable import exact_and_float
+
     from ..stationary.mary import difference_norm_mary, scheme_norm_mary
 
     a, label, head = _input(args, m)
@@ -124,6 +129,9 @@ def cmd_norm(args, m: int) -> None:
 def cmd_refine(args, m: int) -> None:
     """``subdiv refine --arity M``: closed polygons, open ones with the end rules ``interior`` / ``extrapolate``,
     ``--points`` or ``--points-file``, ``--exact``, ``--output FILE`` (CSV) — as the binary command."""
+    import sympy as sp
+    from ..algebra.reader import as_expr
+
     import numpy as np
 
     from ..stationary.mary import refine_mary
@@ -164,6 +172,8 @@ def cmd_refine(args, m: int) -> None:
 
 
 def cmd_matrices(args, m: int) -> None:
+    import sympy as sp
+
     from ..regularity.mary import difference_mask_mary
     from ..stationary.mary import basic_limit_support_mary, local_eigenvalues_mary, transition_matrices_mary
 
@@ -192,6 +202,8 @@ def cmd_matrices(args, m: int) -> None:
 
 
 def cmd_holder(args, m: int) -> None:
+    import sympy as sp
+
     from ..jsonable import fmt_bound
     from ..regularity.mary import NotConvergentMary, holder_exponent_mary, smoothness_mary
 
@@ -237,6 +249,8 @@ def cmd_holder(args, m: int) -> None:
 
 def _sobolev_part(a, m: int, lines: list, data: dict) -> None:
     """``holder --sobolev`` for an m-ary scheme: ``s_2 = -(1/2) log_m lambda`` (issue 12)."""
+    import sympy as sp
+
     from ..jsonable import fmt_bound
     from ..regularity.sobolev_mary import sobolev_exponent_mary
 
@@ -311,6 +325,8 @@ def cmd_range(args, m: int) -> None:
 def _figure(args, a, m: int, p: str, j: int, within, r, label: str, lines: list, data: dict) -> None:
     """``range --figure`` for an m-ary family: certified alpha enclosures at ``max(grid, 8) + 1`` points,
     the level alpha = j and the finite ends of the C^j set (issue 12)."""
+    import sympy as sp
+
     from ..regularity.mary import alpha_curve_mary
     from ..report.plots import plot_alpha_curve
 

@@ -14,8 +14,6 @@ Examples
 
 from __future__ import annotations
 
-import sympy as sp
-
 from ..result import AnalysisError
 
 
@@ -39,6 +37,8 @@ def parse_boxes(items) -> dict:
 
 def maximize_part(a, box: dict, arity: int, gap, budget: int, lines: list, data: dict) -> None:
     """Run the box maximisation (``budget`` in work units) and append its lines and JSON data."""
+    import sympy as sp
+
     from ..regularity.maximize_box import maximize_holder_box
 
     m = maximize_holder_box(a, box, arity=arity, gap=gap, budget=budget)

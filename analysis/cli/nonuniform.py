@@ -20,10 +20,7 @@ from __future__ import annotations
 import json
 import math
 
-import numpy as np
-
 from .common import _print, check_figure, check_writable, json_document
-from ..jsonable import fmt_lower, fmt_upper, jsonable
 from ..result import AnalysisError
 
 
@@ -81,6 +78,8 @@ def _out(args, data, text: str) -> None:
 
 
 def _points(text: str) -> np.ndarray:
+    import numpy as np
+
     rows = [r for r in text.split(";") if r.strip()]
     if not rows:
         raise AnalysisError("--points is empty")
@@ -91,6 +90,8 @@ def _points(text: str) -> np.ndarray:
 
 
 def cmd_refine(args) -> None:
+    import numpy as np
+
     from .. import nonuniform as nu
 
     if args.output:
@@ -127,6 +128,8 @@ def cmd_compare(args) -> None:
 
 
 def cmd_decay(args) -> None:
+    from ..jsonable import fmt_lower, fmt_upper
+
     from .. import nonuniform as nu
 
     r = nu.mask_decay(_floats(args.u0, "--u0"), degree=_int(args.degree, "--degree", 2, 32),

@@ -20,13 +20,14 @@ import json
 import sys
 from pathlib import Path
 
-from ..claims.template import template
-from ..report.files import atomic_write_text
 from ..result import AnalysisError
 from .common import _print
 
 
 def cmd_new_paper(args) -> None:
+    from ..claims.template import template
+    from ..report.files import atomic_write_text
+
     path = Path(args.file)
     if not path.name.endswith(".toml"):
         raise AnalysisError(f"a paper file ends in .toml, not {path.name!r}")

@@ -13,21 +13,18 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-import sympy as sp
-
 from . import mary as _mary
 from .common import (WORK_HELP, _add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
                      check_writable, require_values, scheme_arity, scheme_from_args, work_arg)
-from ..jsonable import _as_fraction, fmt_bound
 from ..result import AnalysisError
-from ..algebra.symbol import LaurentSymbol
-from ..algebra.reader import as_expr
 
 
 def _fmt(x, side: str | None = None, digits: int = 10) -> str:
     """``x`` with ``digits`` decimals, never ``-0.0...``. An end of an enclosure is rounded outward
     exactly: ``_fmt(lower, "lower")`` down, ``_fmt(upper, "upper")`` up (so the printed interval
     contains the true one); without ``side`` (an approximation) to nearest."""
+    from ..jsonable import _as_fraction, fmt_bound
+
     if x is None:
         return "?"
     if side is not None:
@@ -66,6 +63,8 @@ def _part(name: str, compute, lines: list, data: dict) -> None:
 
 
 def _alpha_part(args, a, budget):
+    import sympy as sp
+
     from ..regularity import NotConvergent
 
     try:
@@ -121,6 +120,8 @@ def _holder(a, budget, args=None):
 
 
 def _smoothness_part(args, a, budget):
+    from ..algebra.symbol import LaurentSymbol
+
     from ..regularity import NotConvergent, smoothness
     from ..regularity.holder import verdict_from_enclosure
 
@@ -181,6 +182,8 @@ def _sobolev_part(args, a, budget):
     """s_2 of the basic limit function (exact symbols: exact transfer-operator sequence, correct
     with or without stable shifts; ball catalogue entries: stable-case formula after certified
     stability), plus one line on the shifts."""
+    import sympy as sp
+
     from ..regularity.sobolev import sobolev_exponent
 
     s2 = sobolev_exponent(a)
@@ -226,6 +229,8 @@ def _stability_part(args, a, budget):
     When the shifts are unstable, phi_a = q(tau) phi_b / q(1) is a finite combination of shifts
     of the stable phi_b, and phi_a is one limit of the scheme, so its exponent is >= alpha.
     """
+    import sympy as sp
+
     from ..regularity.stability import stable_shifts
 
     st = stable_shifts(a)
@@ -306,6 +311,9 @@ def cmd_holder(args) -> None:
 
 def _interior_lines(it: dict, j: int) -> list:
     """The interior of one run: the certified pieces (exact ends) and the strips left."""
+    import sympy as sp
+    from ..algebra.reader import as_expr
+
     def b(x):
         x = as_expr(x)
         return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.10g}"
@@ -324,6 +332,9 @@ def _interior_lines(it: dict, j: int) -> list:
 
 
 def cmd_range(args) -> None:
+    import sympy as sp
+    from ..jsonable import fmt_bound
+
     from .family import apply_family
 
     if args.figure:                                   # before any computation: format and place

@@ -50,11 +50,6 @@ import sys
 import time
 from pathlib import Path
 
-from ..claims.kinds.other import NOT_RUN_SETTLE
-from ..claims.model import (compare_verdicts, evaluate_paper, get_paper, golden_path, papers, python_notice,
-                            verdicts_json)
-from ..claims.paperfile import golden_file, load_paper
-from ..report.files import atomic_write_text, inside, output_folder, remove_orphans
 from ..result import AnalysisError
 from .common import _print
 
@@ -88,7 +83,17 @@ def _table(results) -> str:
     return "\n".join(out)
 
 
+def evaluate_paper(paper, **kwargs):
+    """:func:`analysis.claims.model.evaluate_paper`, imported when a report is computed (the claims
+    layer is not imported to build the parser); a module attribute, so that tests can replace it."""
+    from ..claims.model import evaluate_paper as evaluate
+
+    return evaluate(paper, **kwargs)
+
+
 def _papers_arg(arg: str):
+    from ..claims.model import get_paper, papers
+
     if arg == "all":
         return list(papers().values())
     return [get_paper(arg)]
@@ -121,6 +126,8 @@ def is_bundled_file(path) -> bool:
 def load_file(path, allow_python: bool = False):
     """The paper file at ``path`` (catalogue names resolved by :mod:`schemes`). Its ``python`` claims
     run for a bundled paper file or with ``allow_python`` (``--allow-python``); otherwise they are not run."""
+    from ..claims.paperfile import load_paper
+
     mode = "bundled" if is_bundled_file(path) else "allowed" if allow_python else "skip"
     return load_paper(path, catalogue=_catalogue, python=mode)
 
@@ -128,6 +135,9 @@ def load_file(path, allow_python: bool = False):
 def _python_lines(results, path=None, json_output: bool = False) -> None:
     """Say on stdout that Python code from the paper file ran (with ``--json`` the verdicts carry it as
     ``ran_python``), and on stderr how many ``python`` claims were not run and how to run them."""
+    from ..claims.kinds.other import NOT_RUN_SETTLE
+    from ..claims.model import python_notice
+
     notice = python_notice(results)
     if notice and not json_output:
         _print(f"\nWARNING: {notice}")
@@ -151,6 +161,8 @@ def _print_details(results) -> None:
 
 
 def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
+    from ..report.files import atomic_write_text, inside
+
     combined = inside(outdir, "verdicts.json")
     if combined.exists() and merge:       # keep the other papers' entries
         try:
@@ -167,18 +179,26 @@ def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
 
 def _targets(outdir: Path, pids) -> None:
     """Check, before any computation, that every file a report writes stays inside ``outdir``."""
+    from ..report.files import inside
+
     for parts in (("verdicts.json",), ("figures",), ("figures", "formulas"),
                   *((f"{pid}.{ext}",) for pid in pids for ext in ("md", "html"))):
         inside(outdir, *parts)
 
 
 def _prune(outdir: Path, started: float) -> None:
+    from ..report.files import remove_orphans
+
     for p in remove_orphans(outdir, older_than=started):
         print(f"removed {p} (no report refers to it)", file=sys.stderr)
 
 
 def _report_file(args, outdir: Path, write: bool) -> None:
     """``subdiv report FILE.toml``: one paper file."""
+    from ..claims.model import verdicts_json
+    from ..claims.paperfile import golden_file
+    from ..report.files import atomic_write_text, output_folder
+
     started = time.time()
     path = Path(args.paper)
     paper = load_file(path, args.allow_python)
@@ -218,6 +238,9 @@ def _report_file(args, outdir: Path, write: bool) -> None:
 
 
 def cmd_report(args) -> None:
+    from ..claims.model import get_paper, golden_path, verdicts_json
+    from ..report.files import atomic_write_text, output_folder
+
     outdir = Path(args.output) if args.output else REPORTS
     if args.claim and args.write and not args.output:
         raise AnalysisError("--write with --claim would replace the paper's report and golden verdicts in "
@@ -290,6 +313,8 @@ def _read_golden(path: Path) -> dict:
 
 def bundled_golden(pids=None) -> tuple[dict, str]:
     """The golden verdicts shipped in the paper folders (all papers, or ``pids``), merged."""
+    from ..claims.model import get_paper, golden_path, papers
+
     chosen = [get_paper(p) for p in pids] if pids else list(papers().values())
     merged: dict = {"papers": {}}
     where = []
@@ -303,6 +328,9 @@ def bundled_golden(pids=None) -> tuple[dict, str]:
 
 
 def cmd_check(args) -> None:
+    from ..claims.model import compare_verdicts, get_paper, verdicts_json
+    from ..claims.paperfile import golden_file
+
     files = [p for p in (args.paper or []) if is_paper_file(p)]
     if files and len(files) != len(args.paper):
         raise AnalysisError("check paper files and bundled papers separately")

@@ -18,20 +18,17 @@ from __future__ import annotations
 
 import json
 
-import sympy as sp
-
-from ..jsonable import exact_and_float, jsonable
 from ..result import AnalysisError
-from ..algebra.symbol import parse_coefficient
 
 
 from . import mary as _mary
 from .common import (check_refined_size, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls,
                      _parse_within, _print, check_writable, json_document, scheme_from_args)
-from ..algebra.reader import as_expr
 
 
 def cmd_symbol(args) -> None:
+    import sympy as sp
+
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_symbol(args, arity)
     from ..algebra.factorization import sum_rules, symmetry
@@ -63,6 +60,8 @@ def cmd_symbol(args) -> None:
 
 
 def _describe_exceptional(cases, indent="  ") -> list[str]:
+    import sympy as sp
+
     out = []
     for c in cases:
         cond = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in c["condition"].items())
@@ -75,6 +74,8 @@ def _describe_exceptional(cases, indent="  ") -> list[str]:
 
 
 def cmd_factor(args) -> None:
+    import sympy as sp
+
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_factor(args, arity)
     from ..algebra.factorization import polynomial_reproduction, smoothing_factor, sum_rules
@@ -108,6 +109,9 @@ def cmd_factor(args) -> None:
 
 
 def cmd_norm(args) -> None:
+    import sympy as sp
+    from ..jsonable import exact_and_float
+
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_norm(args, arity)
     from ..stationary.difference import difference_norm, scheme_norm
@@ -163,6 +167,9 @@ def cmd_norm(args) -> None:
 
 
 def cmd_refine(args) -> None:
+    import sympy as sp
+    from ..algebra.reader import as_expr
+
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_refine(args, arity)
     import numpy as np
@@ -210,6 +217,8 @@ def _not_rational(v):
 
 
 def cmd_matrices(args) -> None:
+    import sympy as sp
+
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_matrices(args, arity)
     from ..algebra.factorization import smoothing_factor
@@ -251,9 +260,9 @@ def cmd_list(args) -> None:
     import schemes
 
     rows = []
-    for e in schemes.entries(numeric=args.numeric, mary=getattr(args, "mary", False)):
-        rows.append({"slug": e.slug, "title": e.title, "params": [p.name for p in e.params], "source": e.source})
-        if getattr(e, "arity", 2) != 2:                   # m-ary entries only (binary rows unchanged)
+    for e in schemes.listing(numeric=args.numeric, mary=getattr(args, "mary", False)):   # nothing is built
+        rows.append({"slug": e.slug, "title": e.title, "params": list(e.params), "source": e.source})
+        if e.arity != 2:                                  # m-ary entries only (binary rows unchanged)
             rows[-1]["arity"] = e.arity
     text = "\n".join(f"{r['slug']:28s} {('(' + ', '.join(r['params']) + ') ') if r['params'] else ''}{r['title']}"
                      for r in rows)

@@ -45,7 +45,6 @@ import warnings
 from typing import Any, Sequence
 
 import numpy as np
-from scipy.optimize import linprog
 
 #: bound on |log alpha| (the factors stay within e^-8 .. e^8)
 LOG_ALPHA_MAX = 8.0
@@ -111,6 +110,8 @@ def _factors(B: Sequence[np.ndarray], groups: list, depth: int, beam: int
     m = len(groups)
     if m <= 1:
         return np.ones(m), None
+    from scipy.optimize import linprog          # imported only when an LP is solved (about 1 s)
+
     funcs = [g[1] for g in groups]
     q = np.array([_orbit_sup(B, g[0], funcs, depth, beam) for g in groups])
     q = np.maximum(q, 1e-300)

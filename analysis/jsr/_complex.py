@@ -65,8 +65,6 @@ from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
-import scipy.linalg
-import scipy.sparse as sps
 from flint import acb, acb_mat, arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
@@ -125,6 +123,8 @@ def socp_norm(Vm: np.ndarray, x: np.ndarray) -> tuple[float, np.ndarray, np.ndar
     """``(||x||_P, support, z)`` for ``P = absconv_C(columns of Vm)`` by the cone program of the
     module docstring (Clarabel); ``None`` if ``x`` is not in the complex span or the solver
     fails."""
+    import scipy.sparse as sps
+
     import clarabel
 
     n, m = Vm.shape
@@ -171,6 +171,8 @@ class _CMember:
         self._r2 = 0.0
 
     def refresh(self) -> None:
+        import scipy.linalg
+
         st = self.st
         self._r2 = max((float(np.vdot(v, v).real) for v in st.V), default=0.0)
         if len(st.V) >= st.n:
@@ -280,6 +282,8 @@ def build_complex_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence
 def certify_complex_polytope(F: Family, r: Fraction, st: ComplexPolytopeState) -> Certificate | None:
     """Rigorous ``JSR <= r max_{i,j} ||A_i v_j / r||_P`` (module docstring), in Arb complex
     balls; ``None`` if representations are missing or the basis is singular."""
+    import scipy.linalg
+
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None

@@ -24,7 +24,6 @@ from typing import Sequence
 
 import mpmath
 import numpy as np
-import scipy.linalg
 from flint import arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
@@ -118,6 +117,8 @@ def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_wor
                         rho_float: float) -> Certificate | None:
     """Rigorous ``JSR <= r * c`` from a closed float polytope rebuilt at high precision (see the
     module docstring); ``None`` if a vertex cannot be rebuilt or a local basis is singular."""
+    import scipy.linalg
+
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None

@@ -52,8 +52,6 @@ from fractions import Fraction
 from typing import Sequence
 
 import numpy as np
-import scipy.linalg
-from scipy.optimize import linprog
 from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
@@ -226,6 +224,8 @@ class _Member:
         self._warm = _WarmLP.create(st.n)  # persistent HiGHS model of the full LP (or None)
 
     def refresh(self) -> None:
+        import scipy.linalg
+
         st = self.st
         m = len(st.V)
         st.work_units += m * st.n * st.n / VERTEX_ENTRIES_PER_UNIT
@@ -298,6 +298,8 @@ class _Member:
         return fun, supp, lam[supp]
 
     def _lp(self, Vm: np.ndarray, x: np.ndarray, keep_dual: bool = False):
+        from scipy.optimize import linprog
+
         m = Vm.shape[1]
         self.st.lp_calls += 1
         self.st.work_units += SMALL_LP_UNITS if m <= 6 * self.st.n else m * self.st.n / LP_ENTRIES_PER_UNIT
@@ -495,6 +497,8 @@ class Certificate:
 def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate | None:
     """Rigorous bound ``JSR <= r * max_{i,j} ||A_i v_j / r||_P`` from the float representations
     (see module docstring); ``None`` if representations are missing or the basis is singular."""
+    import scipy.linalg
+
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None
@@ -589,6 +593,8 @@ def _local_basis_bounds(F: Family, r: Fraction, st: PolytopeState, Vint: list[li
     ``M lambda`` and its Minkowski norm is at most ``||lambda||_1``. Columns sharing one local
     basis are solved together.
     """
+    import scipy.linalg
+
     n = st.n
     todo = [key for key, (bnd, coef) in bounds.items()
             if bnd - coef > LOCAL_RESIDUAL_THRESHOLD]

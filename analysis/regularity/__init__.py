@@ -13,13 +13,39 @@ m-ary family (:mod:`.maximize_box`).
 Layering: may import :mod:`analysis.algebra`, :mod:`analysis.stationary` and :mod:`analysis.jsr`.
 """
 
-from .atlas import holder_atlas
-from .convergence import NotConvergent, convergence_failure, difference_mask
-from .holder import holder_exponent, smoothness
-from .ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
-from .sobolev import sobolev_exponent
-from .stability import stable_shifts
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # pragma: no cover - resolved lazily below
+    from .atlas import holder_atlas
+    from .convergence import NotConvergent, convergence_failure, difference_mask
+    from .holder import holder_exponent, smoothness
+    from .ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
+    from .sobolev import sobolev_exponent
+    from .stability import stable_shifts
 
 __all__ = ["NotConvergent", "alpha_curve", "ck_parameter_set", "convergence_failure", "difference_mask",
            "holder_atlas", "holder_exponent", "smoothness", "sobolev_exponent", "stable_shifts",
            "verify_smoothness_interval"]
+
+#: each re-export and its submodule: imported on first use (PEP 562), so that ``holder`` does not
+#: import the atlas (parallel sweeps), the parameter ranges or the Sobolev code it does not run
+_LAZY = {"holder_atlas": ".atlas", "NotConvergent": ".convergence", "convergence_failure": ".convergence",
+         "difference_mask": ".convergence", "holder_exponent": ".holder", "smoothness": ".holder",
+         "alpha_curve": ".ranges", "ck_parameter_set": ".ranges", "verify_smoothness_interval": ".ranges",
+         "sobolev_exponent": ".sobolev", "stable_shifts": ".stability"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

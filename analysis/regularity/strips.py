@@ -98,7 +98,6 @@ import time
 from fractions import Fraction
 
 import numpy as np
-import scipy.linalg
 import sympy as sp
 from flint import arb, arb_mat, ctx, fmpq
 
@@ -383,6 +382,8 @@ class _Strip:
         f'(I) [-h, h]`` (``t_m`` the midpoint, ``h`` the half-width), the derivatives enclosed by
         forward differentiation over ``I``: the widths are ``O(h)`` without the dependency blow-up of
         a naive interval evaluation along long vertex words."""
+        import scipy.linalg
+
         tmq = (u + w) / 2
         self.units += STEP_UNITS
         fl = self.vertices_float(float(tmq))
