@@ -282,3 +282,63 @@ def test_report_text_is_independent_of_float_roundoff(monkeypatch, which):
         monkeypatch.undo()
     assert texts[0] == texts[1]
     assert "< 1e-12" in json.dumps(texts[0])
+
+
+def test_norm_solve_without_m_is_the_convergence_test(capsys):
+    from analysis.cli.main import main
+
+    assert main(["norm", "--scheme", "four-point", "--solve", "w"]) == 0
+    out = capsys.readouterr().out
+    # ||(1/2 S_{a_1})|| = 1/2 + 2|w| for the four-point scheme: < 1 exactly on (-1/4, 1/4)
+    assert "L = 1: (-1/4, 1/4)" in out and "C^0 (Dyn-Levin)" in out and "C^-1" not in out
+    assert main(["norm", "--scheme", "four-point", "--solve", "w", "--m", "0"]) == 2
+    err = capsys.readouterr().err
+    assert "tests no smoothness" in err and err.count("\n") == 1
+
+
+def test_range_shows_progress_on_a_terminal_only(capsys, monkeypatch):
+    import io
+
+    from analysis.cli.main import main
+
+    argv = ["range", "--mask", "-w,0,w+1/2,1,w+1/2,0,-w", "--start", "-3", "--C", "0", "--within=0,1/8",
+            "--grid", "2"]
+    assert main(argv) == 0
+    quiet = capsys.readouterr()
+    assert quiet.err == ""                                    # not a terminal: nothing on stderr
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+
+    term = Terminal()
+    monkeypatch.setattr("sys.stderr", term)
+    assert main(argv) == 0
+    assert capsys.readouterr().out == quiet.out               # the result does not depend on it
+    shown = term.getvalue()
+    assert "subdiv range: C^0 verdicts at the grid points 3/3" in shown and shown.endswith("\r")
+
+
+def test_range_and_atlas_tables_for_papers_and_spreadsheets(tmp_path, capsys):
+    import csv
+
+    from analysis.cli.main import main
+
+    tex, table = tmp_path / "c1.tex", tmp_path / "atlas.csv"
+    four = ["--mask", "-w,0,w+1/2,1,w+1/2,0,-w", "--start", "-3"]
+    assert main(["range", *four, "--C", "1", "--within=0,1/4", "--grid", "4", "--table", str(tex)]) == 0
+    text = tex.read_text()
+    # the C^1 set (0, w*) with w* the real root of 32 w^3 + 4 w - 1, as a paper writes it
+    assert r"$C^{1}$ & $0$ & root $\approx 0.1927292493$ of $32 w^{3} + 4 w - 1$ \\" in text
+    assert text.startswith("% subdiv range:") and r"\bottomrule" in text
+    family = "(1+z)**2/(2*z)*(1 + s*(z-2+1/z) + t*(z**2-2+z**-2))"       # tests/test_atlas.py
+    assert main(["atlas", "--symbol", family, "--x", "s=0:1/8:2", "--y", "t=0:0:1", "--j", "1", "--refine", "0",
+                 "--executor", "serial", "--table", str(table)]) == 0
+    out = capsys.readouterr().out
+    rows = list(csv.reader(table.open()))
+    assert rows[0] == ["s", "t", "alpha lower", "alpha upper", "status", "C^1"]
+    assert [r[:2] for r in rows[1:]] == [["0", "0"], ["1/8", "0"]]
+    for r in rows[1:]:                 # the enclosures the command printed, outward-rounded
+        assert f"{r[0]:>10} {r[1]:>10}  {r[2]:>12} {r[3]:>12}  {r[4]:<12}" in out
+    assert main(["range", *four, "--C", "1", "--within=0,1/4", "--table", str(tmp_path / "c1.txt")]) == 2
+    assert "end the name in .csv" in capsys.readouterr().err

@@ -313,3 +313,21 @@ def test_formula_images_are_rewritten_and_orphans_removed(tmp_path, capsys, eval
     assert not any(p.exists() for p in orphans)
     assert all(p.exists() for p in kept)                                     # not generated / still referenced
     assert all(f"removed {p}" in err for p in orphans)
+
+
+def test_a_bundled_papers_own_file_is_the_bundled_paper(tmp_path):
+    """``subdiv check papers/seed000/paper.toml`` is ``subdiv check 000`` (its golden verdicts, its
+    trusted evaluators); the same text copied elsewhere is a stranger's paper file."""
+    import shutil
+    from pathlib import Path
+
+    import papers
+    from analysis.cli.report import bundled_id
+
+    own = Path(papers.__file__).parent / "seed000" / "paper.toml"
+    assert bundled_id(str(own)) == "000"
+    copy = tmp_path / "seed000" / "paper.toml"
+    copy.parent.mkdir()
+    shutil.copy(own, copy)
+    assert bundled_id(str(copy)) == str(copy)
+    assert bundled_id("000") == "000"

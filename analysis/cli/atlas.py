@@ -68,6 +68,10 @@ def cmd_atlas(args) -> None:
 
     if args.figure:                              # before any computation: format and place
         check_figure(args.figure, "the figure")
+    if args.table:
+        from .tables import check_table
+
+        check_table(args.table)
     apply_family(args)                           # --family FILE.json (issue 14)
     m = scheme_arity(args)                       # m-ary families (issue 12)
     a, label = scheme_from_args(args, arity_ok=True)
@@ -130,6 +134,17 @@ def cmd_atlas(args) -> None:
                      + f"  {s['level']}{flags}")
     if figure:
         lines.append(f"figure: {figure}")
+    if args.table:
+        from .tables import write_table
+
+        yes = {True: "yes", False: "no", None: "?"}
+        rows = [[s["p1"], s["p2"], "-" if s["alpha_lower"] is None else fmt_lower(s["alpha_lower"], 6),
+                 "-" if s["alpha_upper"] is None else fmt_upper(s["alpha_upper"], 6), s["status"],
+                 *(yes[s[f"C^{j}"]] for j in js)] for s in r.value]
+        write_table(args.table, [f"${sp.latex(sp.Symbol(xn))}$", f"${sp.latex(sp.Symbol(yn))}$", "alpha lower",
+                                 "alpha upper", "status", *(f"C^{j}" for j in js)], rows,
+                    f"subdiv atlas: {label}, certified Hölder exponents (outward-rounded enclosures)")
+        lines.append(f"table written to {args.table}")
     data = r.to_json()
     data["scheme"] = label
     data["figure"] = figure
@@ -159,6 +174,8 @@ def register(subparsers) -> None:
                    help=f"work budget of the joint spectral radius per point, in work units (default 2000; {WORK_HELP})")
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")
     s.add_argument("--no-progress", action="store_true", help="no progress bar")
+    s.add_argument("--table", metavar="FILE", help="also write the table of points as FILE.csv or FILE.tex "
+                                                  "(a LaTeX booktabs tabular)")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
     s.add_argument("--maximize", choices=("holder",),
                    help="also the smoothest member on the box of the two axes (certified gap)")

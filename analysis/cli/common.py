@@ -599,3 +599,21 @@ class _StdoutGuard:
             raise BrokenPipeError
         return False
 
+
+
+def norm_order(args) -> int:
+    """The difference order of ``subdiv norm`` (``--m``): given, or 0 (the scheme itself) for plain
+    norms and 1 (the convergence test, C^0) with ``--solve``. ``--solve`` asks where a smoothness
+    test holds; with m = 0 it would solve ``||(1/M S_a)^L|| < 1``, which tests no smoothness."""
+    if args.m is None:
+        return 1 if args.solve is not None else 0
+    try:
+        m = int(str(args.m).strip())
+    except ValueError:
+        raise AnalysisError(f"--m must be an integer, not {short(args.m)}") from None
+    if not 0 <= m <= 64:
+        raise AnalysisError("--m must be between 0 and 64")
+    if m == 0 and args.solve is not None:
+        raise AnalysisError("--solve with --m 0 tests no smoothness: give --m 1 for convergence (C^0), "
+                            "--m K+1 for C^K (without --m, --solve uses --m 1)")
+    return m

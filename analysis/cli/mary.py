@@ -16,7 +16,7 @@ Examples
 from __future__ import annotations
 
 from ..result import AnalysisError
-from .common import _emit, _int_arg, _parse_Ls, _parse_within, check_figure, check_writable, scheme_from_args, work_arg
+from .common import _emit, _int_arg, _parse_Ls, _parse_within, norm_order, check_figure, check_writable, scheme_from_args, work_arg
 
 
 def _fmt_set(S) -> str:
@@ -92,9 +92,7 @@ def cmd_norm(args, m: int) -> None:
 
     a, label, head = _input(args, m)
     Ls = _parse_Ls(args.L)
-    k = _int_arg(args.m, "--m")
-    if k < 0:
-        raise AnalysisError("--m must be >= 0")
+    k = norm_order(args)
     if any(m ** L > 10 ** 6 for L in Ls):
         raise AnalysisError(f"--L too large for arity {m} (at most {m}^L = 10^6 residues)")
     lines, rows = [head], []
@@ -309,6 +307,15 @@ def cmd_range(args, m: int) -> None:
             "status": r.status}
     if polytopes:
         data["strips_closed"] = polytopes
+    if getattr(args, "table", None):
+        from .tables import write_table
+
+        rows = [[f"C^{j}", _fmt_set(r.value)], [f"not C^{j}", _fmt_set(r.witness["not_Cj"])],
+                ["undecided", _fmt_set(r.witness["undecided"])]]
+        write_table(args.table, ["", f"{p} in"], rows, f"subdiv range: {label} (arity {m}), where is it C^{j}? "
+                                                     f"[{r.status}]")
+        lines.append(f"table written to {args.table}")
+        data["table"] = args.table
     for why in (w for t in tests for w in t.get("strips not closed by the invariant polytope", [])):
         lines.append(f"  strip not closed by the parametric invariant polytope: {why}")
         data.setdefault("strips_not_closed", []).append(why)

@@ -339,6 +339,10 @@ def cmd_range(args) -> None:
 
     if args.figure:                                   # before any computation: format and place
         check_figure(args.figure, "the figure")
+    if args.table:
+        from .tables import check_table
+
+        check_table(args.table)
     apply_family(args)                                # --family FILE.json (issue 14)
     if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
         return _mary.cmd_range(args, arity)
@@ -360,8 +364,11 @@ def cmd_range(args) -> None:
         raise AnalysisError("--tol must be between 1e-30 and 1")
     strip_budget = work_arg(args.strip_budget, "--strip-budget", minimum=0)
     budget = work_arg(args.budget, "--budget")
-    r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
-                         budget=budget, interior_L_max=12, strip_budget=strip_budget)
+    from .. import progress
+
+    with progress.on_terminal("range"):
+        r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
+                             budget=budget, interior_L_max=12, strip_budget=strip_budget)
     p = r.witness["parameter"]
     lines = [f"scheme: {label}; where is it C^{j}? parameter {p} in [{sp.sstr(within[0])}, {sp.sstr(within[1])}] "
              f"(grid {grid}, boundaries to {tol:g})   [{r.status}]"]
@@ -389,6 +396,24 @@ def cmd_range(args) -> None:
     if "message" in r.provenance:
         lines.append(f"  {r.provenance['message']}")
     data = {"scheme": label, "j": j, "parameter": p, "within": list(within), "result": r.to_json()}
+    if args.table:
+        from .tables import write_table
+
+        def cell(b):
+            if "open_end" in b:
+                return f"{sp.sstr(b['open_end'])} (grid end)"
+            if "exact" in b:
+                return b["exact"]
+            lo, hi = b["bracket"]
+            return f"in [{fmt_bound(lo, 'lower', 12, 'g')}, {fmt_bound(hi, 'upper', 12, 'g')}]"
+        rows = [[f"C^{j}", cell(run["left"]), cell(run["right"])] for run in r.value]
+        rows += [["grid point " + sp.sstr(s["p"]), {True: "C^%d" % j, False: "not C^%d" % j}.get(s["C^j"], "undecided"),
+                  "alpha in [%s, %s]" % (fmt_bound(s["alpha"][0], "lower", 6, "g"), fmt_bound(s["alpha"][1], "upper", 6, "g"))
+                  if s["alpha"] else ""] for s in r.witness["samples"]]
+        write_table(args.table, ["", f"from ({p})", "to"], rows,
+                    f"subdiv range: {label}, where is it C^{j}? [{r.status}]")
+        lines.append(f"table written to {args.table}")
+        data["table"] = args.table
     if args.maximize:
         from .common import parse_coefficient
         from .maximize import maximize_part
@@ -446,6 +471,8 @@ def register(sub) -> None:
                         "about 800000)")
     s.add_argument("--figure", metavar="PATH", help="write the curve alpha(p) with its certified error bars")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")
+    s.add_argument("--table", metavar="FILE", help="also write the C^k set (and the grid verdicts) as FILE.csv or "
+                                                  "FILE.tex (a LaTeX booktabs tabular)")
     s.add_argument("--maximize", choices=("holder",), help="also the smoothest member on --within (certified gap)")
     s.add_argument("--gap", default="1/1000", metavar="G", help="target certified gap of --maximize (default 1/1000)")
     s.set_defaults(func=cmd_range)

@@ -108,6 +108,27 @@ def is_paper_file(arg: str) -> bool:
     return str(arg).endswith(".toml")
 
 
+def bundled_id(arg: str) -> str:
+    """The paper id when ``arg`` is the ``paper.toml`` of a bundled paper (``papers/seed003/paper.toml``
+    is paper ``003``, with its golden verdicts and trusted evaluators), else ``arg`` unchanged."""
+    if not is_paper_file(arg):
+        return arg
+    import papers
+
+    path = Path(arg).expanduser()
+    try:
+        if not (path.name == "paper.toml" and path.is_file()
+                and path.resolve().parent.parent == Path(papers.__file__).resolve().parent):
+            return arg
+        import tomllib
+
+        with open(path, "rb") as f:
+            pid = tomllib.load(f).get("paper", {}).get("id")
+    except (OSError, ValueError):
+        return arg                                # read (and reported) as a paper file
+    return pid if isinstance(pid, str) and pid else arg
+
+
 def _catalogue(name: str):
     from papers import catalogue
 
@@ -248,6 +269,7 @@ def cmd_report(args) -> None:
     if args.claim and args.update_golden:
         raise AnalysisError("--update-golden needs every claim of the paper: drop --claim")
     write = args.claim is None or args.write
+    args.paper = bundled_id(args.paper)
     if is_paper_file(args.paper):
         return _report_file(args, outdir, write)
     started = time.time()
@@ -330,6 +352,8 @@ def bundled_golden(pids=None) -> tuple[dict, str]:
 def cmd_check(args) -> None:
     from ..claims.model import compare_verdicts, get_paper, verdicts_json
     from ..claims.paperfile import golden_file
+
+    args.paper = [bundled_id(p) for p in (args.paper or [])] or args.paper
 
     files = [p for p in (args.paper or []) if is_paper_file(p)]
     if files and len(files) != len(args.paper):

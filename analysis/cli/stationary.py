@@ -22,7 +22,7 @@ from ..result import AnalysisError
 
 
 from . import mary as _mary
-from .common import (check_refined_size, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls,
+from .common import (check_refined_size, norm_order, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls,
                      _parse_within, _print, check_writable, json_document, scheme_from_args)
 
 
@@ -118,9 +118,7 @@ def cmd_norm(args) -> None:
 
     a, label = scheme_from_args(args)
     Ls = _parse_Ls(args.L)
-    m = _int_arg(args.m, "--m")
-    if m < 0:
-        raise AnalysisError("--m must be >= 0")
+    m = norm_order(args)
     rows, lines = [], [f"scheme: {label}   (domain {a.domain})"]
     if args.solve is not None or (not a.is_numeric and m >= 0):
         from ..stationary.normset import norm_solution_set
@@ -291,7 +289,8 @@ def register(sub) -> None:
 
     s = sub.add_parser("norm", help="exact ||(1/2 S_{a_m})^L||_inf, or the exact parameter set where it is < 1")
     _add_scheme_args(s)
-    s.add_argument("--m", default="0", help="difference order m (a_m = (2z/(1+z))^m a); 0 = the scheme itself")
+    s.add_argument("--m", default=None, help="difference order m (a_m = (2z/(1+z))^m a; the test proves C^(m-1)); "
+                                         "default 0 = the scheme itself, with --solve 1 (convergence)")
     s.add_argument("--L", default="1", help="number of steps, or a list like 1,2,3,4")
     s.add_argument("--spelling", choices=("paper", "divided"), default="paper",
                    help="(2z/(1+z))^m a (paper) or (2/(1+z))^m a (divided); the norms agree")

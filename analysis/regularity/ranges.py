@@ -7,8 +7,8 @@ with certified verdicts on both sides, and makes a boundary exact where an eigen
 spectrum-maximizing product crosses ``2^(-k)``; the interior of a run is proven only when the
 norm tests below cover it (otherwise it is "certified at the grid points only").
 
-Verifying a claimed smoothness range "S_a(p) is C^j for every p in (p0, p1)" has three routes,
-tried in this order, and the result says which one decided:, tried in this order, and the result says which one decided:
+Verifying a claimed smoothness range "S_a(p) is C^j for every p in (p0, p1)" has four routes,
+tried in this order, and the result says which one decided:
 
 1. **exact norm inequality** — the Dyn–Levin test ``||(1/2 S_{a_{j+1}})^L||_inf < 1`` solved exactly
    as a set of parameters (:func:`analysis.stationary.normset.norm_solution_set`) for L = 1, 2, ...; if the
@@ -17,7 +17,12 @@ tried in this order, and the result says which one decided:, tried in this order
    sub-intervals (boxes) of the parameter, bisected adaptively; every box with a certified norm
    bound below 1 is proven C^j;
 3. **refutation** — certified verdicts at rational points of the interval
-   (:func:`analysis.regularity.holder.smoothness`): one point certified *not* C^j refutes the claim.
+   (:func:`analysis.regularity.holder.smoothness`): one point certified *not* C^j refutes the claim;
+4. **parametric norms and invariant polytopes** — what routes 1 and 2 leave is given to
+   :func:`analysis.regularity.interior.ck_interior` (exact Bernstein bounds of the parametric norms
+   on rational pieces, exact end tests, and the strips next to an end of eigenvalue type closed by a
+   parametric invariant polytope), which certifies closed sub-intervals up to the true boundary;
+   if a strip stays open, rational points in it are tried as counterexamples (route 3 again).
 
 Examples
 --------
@@ -51,6 +56,29 @@ from ..stationary.normset import norm_solution_set
 from ..stationary.transition import transition_matrices
 from .holder import holder_exponent, smoothness, word_product
 from ..algebra.reader import as_expr
+from .. import progress
+
+
+def _interior_route(a: LaurentSymbol, p, j: int, lo: RealAlgebraic, hi: RealAlgebraic, closed, budget) -> Result:
+    """Route 4 of :func:`verify_smoothness_interval`: :func:`~analysis.regularity.interior.ck_interior`
+    on the claimed interval (a closed end only where it is rational)."""
+    from .interior import DEFAULT_INTERIOR_BUDGET, ck_interior
+
+    lo_closed = bool(closed[0]) and lo.is_rational
+    hi_closed = bool(closed[1]) and hi.is_rational
+    return ck_interior(a, j, lo.expr, hi.expr, p, lo_open=not lo_closed, hi_open=not hi_closed,
+                       budget=DEFAULT_INTERIOR_BUDGET if budget is None else budget)
+
+
+def _points_in(u, v, n: int) -> list:
+    """``n`` rational points strictly inside ``(u, v)`` (exact ends), the middle one first."""
+    U, V = RealAlgebraic.from_expr(as_expr(u)), RealAlgebraic.from_expr(as_expr(v))
+    a0, b0 = U.b, V.a                  # rational bounds inside the interval when it is not tiny
+    if not a0 < b0:
+        a0, b0 = U.a, V.b
+    pts = [a0 + (b0 - a0) * sp.Rational(i, n + 1) for i in range(1, n + 1)]
+    pts.sort(key=lambda q: abs(q - (a0 + b0) / 2))
+    return pts
 
 
 def _single_parameter(a: LaurentSymbol, param) -> sp.Symbol:
@@ -126,15 +154,18 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
         raise AnalysisError("within needs low < high")
     pts = [lo + (hi - lo) * sp.Rational(i, grid) for i in range(grid + 1)]
     samples = []
+    progress.stage(f"C^{j} verdicts at the grid points", len(pts))
     for q in pts:
+        progress.step()
         v, r = _verdict_at(a, p, q, j, budget)
         samples.append({"p": q, "C^j": v, "alpha": (r.witness.get("alpha").lower, r.witness.get("alpha").upper)
                         if r.witness.get("alpha") is not None else None, "status": r.status})
     boundaries = []
-    for s0, s1 in zip(samples[:-1], samples[1:]):
-        v0, v1 = s0["C^j"], s1["C^j"]
-        if v0 is None or v1 is None or v0 == v1:
-            continue
+    changes = [(s0, s1) for s0, s1 in zip(samples[:-1], samples[1:])
+               if s0["C^j"] is not None and s1["C^j"] is not None and s0["C^j"] != s1["C^j"]]
+    progress.stage("boundaries", len(changes))
+    for s0, s1 in changes:
+        progress.step()
         boundaries.append(_locate(a, p, j, s0, s1, tol, budget))
     runs = []
     start = None
@@ -153,7 +184,9 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     # the interior of each run: proven only if the norm tests cover it (analysis.regularity.ranges)
 
     interiors = []
+    progress.stage(f"C^{j} on the interior of each run", len(runs))
     for run in runs:
+        progress.step()
         interiors.append(_run_interior(a, p, j, run, interior_L_max, budget, strip_budget))
     if boundaries_certified and runs and all(interiors):
         status = CERTIFIED
@@ -383,11 +416,17 @@ def _ball_norm_below_one(am: LaurentSymbol, p: sp.Symbol, box: tuple, L: int, pr
 
 def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *, max_L_exact: int = 3,
                                max_L_boxes: int = 8, max_boxes: int = 400, samples: int = 8,
-                               budget: int = 10_000) -> Result:
-    """Check the claim "C^j for every parameter value in the open interval" (see module docstring).
+                               budget: int = 10_000, closed=(False, False),
+                               interior_budget: int | None = None) -> Result:
+    """Check the claim "C^j for every parameter value in the interval" (see module docstring).
 
     ``value`` True (proven on the whole interval), False (refuted at a certified point), None.
     ``witness["route"]`` names the route; for a refutation ``witness["counterexample"]``.
+    ``closed``: whether each end belongs to the claim (a closed end must be rational); routes 1-3
+    prove the open interval, route 4 the interval as claimed. ``witness["ends checked"]`` says
+    whether the closed ends were proven too. ``budget`` (work units) is per Hölder verdict at a
+    point, ``interior_budget`` that of route 4 (default that of
+    :func:`~analysis.regularity.interior.ck_interior`).
     """
     if len(a.params) != 1:
         raise AnalysisError("a claimed interval needs a scheme with exactly one free parameter")
@@ -455,6 +494,27 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
                                "boxes": proven, "tried": tried},
                       provenance={"method": "exact Dyn-Levin norm sets (L <= %d) and Arb ball norms (L <= %d) "
                                             "on parameter boxes" % (max_L_exact, max_L_boxes)})
+    # 4. parametric norms with exact ends and the invariant polytope on the strips; then
+    #    counterexamples in what stays open (a true boundary inside the claim lies there)
+    r4 = _interior_route(a, p, j, lo, hi, closed, interior_budget)
+    if r4.status == CERTIFIED:
+        return Result(value=True, status=CERTIFIED,
+                      witness={"route": "parametric norm tests and invariant polytopes on sub-intervals",
+                               "ends checked": (not closed[0] or lo.is_rational) and (not closed[1] or hi.is_rational),
+                               "pieces": len(r4.witness["pieces"]), "tried": tried},
+                      provenance={"method": r4.provenance["method"], "work": r4.provenance["work"]})
+    for u, v in r4.value["strips"] if r4.value else []:
+        for q in _points_in(u, v, 3):
+            x = RealAlgebraic.rational(q)
+            if not (lo.compare(x) < 0 < hi.compare(x)):
+                continue
+            vq = smoothness(a.subs({p: q}), j, budget=budget)
+            if vq.value is False:
+                return Result(value=False, status=REFUTED,
+                              witness={"route": "certified counterexample", "counterexample": q,
+                                       "reason": vq.witness.get("reason"), "tried": tried},
+                              provenance={"method": "certified Hölder verdict at a rational point of a part "
+                                                    "the parametric norm tests could not prove"})
     left = sorted(todo)
     return Result(value=None, status=INCONCLUSIVE,
                   witness={"route": "none decided", "tried": tried, "boxes_proven": proven,

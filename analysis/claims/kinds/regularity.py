@@ -288,11 +288,12 @@ class CkRange(Kind):
         j = self.get("j")
         lo, hi, lc, hc = self.interval("interval")
         claim = interval_text(lo, hi, lc, hc)
-        r = verify_smoothness_interval(a, j, (lo, hi), p)
+        r = verify_smoothness_interval(a, j, (lo, hi), p, closed=(lc, hc))
         route = r.witness.get("route")
         ev = [evidence(f"C^{j} on {claim}", r if r.status in (CERTIFIED, REFUTED) else None, text=f"route: {route}")]
         if r.value is True:
-            note = " (the closed ends are not checked: the interval is treated as open)" if lc or hc else ""
+            note = (" (the closed ends are not checked: the interval is treated as open)"
+                    if (lc or hc) and not r.witness.get("ends checked") else "")
             return self.certified(f"C^{j} for every {p.name} in {claim}, proven by {route}{note}", evidence=ev,
                                   numbers=[Number("proven", True)])
         if r.value is False:
