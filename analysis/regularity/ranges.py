@@ -70,6 +70,22 @@ def _interior_route(a: LaurentSymbol, p, j: int, lo: RealAlgebraic, hi: RealAlge
                        budget=DEFAULT_INTERIOR_BUDGET if budget is None else budget)
 
 
+def _counterexample(a, p, j: int, lo: RealAlgebraic, hi: RealAlgebraic, points, budget: int, tried,
+                    method: str) -> Result | None:
+    """The refutation at the first of ``points`` inside ``(lo, hi)`` certified not C^j, or None."""
+    for q in points:
+        x = RealAlgebraic.rational(q)
+        if not (lo.compare(x) < 0 < hi.compare(x)):
+            continue
+        v = smoothness(a.subs({p: q}), j, budget=budget)
+        if v.value is False:
+            return Result(value=False, status=REFUTED,
+                          witness={"route": "certified counterexample", "counterexample": q,
+                                   "reason": v.witness.get("reason"), "tried": tried},
+                          provenance={"method": method})
+    return None
+
+
 def _points_in(u, v, n: int) -> list:
     """``n`` rational points strictly inside ``(u, v)`` (exact ends), the middle one first."""
     U, V = RealAlgebraic.from_expr(as_expr(u)), RealAlgebraic.from_expr(as_expr(v))
@@ -451,16 +467,9 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
     ql = lo.a if lo.a == lo.b else lo.b
     qh = hi.b if hi.a == hi.b else hi.a
     points = [ql + (qh - ql) * sp.Rational(i, samples + 1) for i in range(1, samples + 1)]
-    for q in points:
-        x = RealAlgebraic.rational(q)
-        if not (lo.compare(x) < 0 < hi.compare(x)):
-            continue
-        v = smoothness(a.subs({p: q}), j, budget=budget)
-        if v.value is False:
-            return Result(value=False, status=REFUTED,
-                          witness={"route": "certified counterexample", "counterexample": q,
-                                   "reason": v.witness.get("reason"), "tried": tried},
-                          provenance={"method": "certified Hölder verdict at a rational point"})
+    r2 = _counterexample(a, p, j, lo, hi, points, budget, tried, "certified Hölder verdict at a rational point")
+    if r2 is not None:
+        return r2
     # 3. cover [lo, hi] by boxes, breadth first: each box (as an open interval) inside an exact
     #    norm set, or (as a closed interval, which proves more) with an Arb norm bound below 1
     am = difference_symbol(a, j + 1)
@@ -504,17 +513,11 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
                                "pieces": len(r4.witness["pieces"]), "tried": tried},
                       provenance={"method": r4.provenance["method"], "work": r4.provenance["work"]})
     for u, v in r4.value["strips"] if r4.value else []:
-        for q in _points_in(u, v, 3):
-            x = RealAlgebraic.rational(q)
-            if not (lo.compare(x) < 0 < hi.compare(x)):
-                continue
-            vq = smoothness(a.subs({p: q}), j, budget=budget)
-            if vq.value is False:
-                return Result(value=False, status=REFUTED,
-                              witness={"route": "certified counterexample", "counterexample": q,
-                                       "reason": vq.witness.get("reason"), "tried": tried},
-                              provenance={"method": "certified Hölder verdict at a rational point of a part "
-                                                    "the parametric norm tests could not prove"})
+        r5 = _counterexample(a, p, j, lo, hi, _points_in(u, v, 3), budget, tried,
+                             "certified Hölder verdict at a rational point of a part the parametric norm tests "
+                             "could not prove")
+        if r5 is not None:
+            return r5
     left = sorted(todo)
     return Result(value=None, status=INCONCLUSIVE,
                   witness={"route": "none decided", "tried": tried, "boxes_proven": proven,
