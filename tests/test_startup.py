@@ -76,7 +76,7 @@ def test_help_and_list_import_no_heavy_library(argv):
     assert not loaded(mods, HEAVY), f"`subdiv {' '.join(argv)}` imports {loaded(mods, HEAVY)[:12]}"
     assert not loaded(mods, UPPER), f"`subdiv {' '.join(argv)}` imports {loaded(mods, UPPER)[:12]}"
     engine = [m for m in mods if m.startswith("analysis.") and not m.startswith(("analysis.cli.", "analysis.cli"))
-              and m not in ("analysis.result", "analysis.jsonable", "analysis.algebra", "analysis.algebra.guard")]
+              and m not in ("analysis.result", "analysis.jsonable", "analysis.algebra", "analysis.algebra.guard", "analysis._lazy")]
     assert not engine, f"`subdiv {' '.join(argv)}` imports engine modules {sorted(engine)[:12]}"
 
 
@@ -93,7 +93,7 @@ def test_building_the_parser_imports_no_engine():
     mods = set(p.stdout.split())
     assert "analysis.cli.regularity" in mods and "analysis.cli.report" in mods   # every command registered
     assert not loaded(mods, HEAVY + UPPER + ("schemes",)), loaded(mods, HEAVY + UPPER + ("schemes",))
-    assert {m for m in mods if m.startswith("analysis.") and not m.startswith("analysis.cli")} <= {"analysis.result"}
+    assert {m for m in mods if m.startswith("analysis.") and not m.startswith("analysis.cli")} <= {"analysis.result", "analysis._lazy"}
 
 
 @pytest.mark.parametrize("argv, scipy_ok", [

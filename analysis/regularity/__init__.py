@@ -37,15 +37,6 @@ _LAZY = {"holder_atlas": ".atlas", "NotConvergent": ".convergence", "convergence
          "sobolev_exponent": ".sobolev", "stable_shifts": ".stability"}
 
 
-def __getattr__(name: str):
-    if name in _LAZY:
-        import importlib
+from .._lazy import lazy_exports  # noqa: E402
 
-        value = getattr(importlib.import_module(_LAZY[name], __name__), name)
-        globals()[name] = value
-        return value
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_LAZY))
+__getattr__, __dir__ = lazy_exports(__name__, _LAZY, globals())
