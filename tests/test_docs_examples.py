@@ -25,7 +25,8 @@ Each example must be cheap (well under 2 s): longer runs go in ```bash blocks.
 
 To write the output of a new example, leave the lines after its ``$ subdiv ...`` line empty and run
 ``python tests/test_docs_examples.py docs/page.md``: commands without shown output get the output they
-print (review it before committing).
+print (review it before committing). With ``--refresh`` every command whose shown output has no ``...``
+line gets what it prints now (after a change of wording; review the diff).
 """
 
 from __future__ import annotations
@@ -156,6 +157,18 @@ def test_console(block, tmp_path, wide):
                 f"{block.id}: `{command}` printed\n" + "\n".join(actual) + "\n--- the page shows\n" + "\n".join(expected))
 
 
+def test_the_comparison_can_fail():
+    """``...`` elides lines, times are ignored, and anything else must match line for line."""
+    assert session("$ subdiv a \\\n    --b\nout 1\n...\nout 9\n$ subdiv c\n") == \
+        [("subdiv a  --b", ["out 1", "...", "out 9"]), ("subdiv c", [])]
+    assert matches(["a", "...", "z"], ["a", "b", "c", "z"]) and matches(["a", "...", "z"], ["a", "z"])
+    assert matches(["done (1.5 s)", "x"], ["time: 3 s", "done (0.2 s)", "x  ", ""])
+    assert not matches(["a", "...", "z"], ["a", "b"])
+    assert not matches(["alpha = 2"], ["alpha = 3"])
+    assert not matches(["a"], ["a", "b"])
+    assert not matches(["a.b"], ["axb"])                      # text is literal, not a pattern
+
+
 def test_console_blocks_exist():
     """The collector finds the examples (a renamed fence would silently turn the test off)."""
     assert len(_all("console")) >= 20
@@ -268,7 +281,7 @@ def test_relative_links_resolve():
 # authoring aid: fill in the output of commands that show none
 # --------------------------------------------------------------------------------------------
 
-def _fill(page: Path) -> None:
+def _fill(page: Path, refresh: bool = False) -> None:
     text = page.read_text(encoding="utf-8")
     pieces, last = [], 0
     for m in FENCE.finditer(text):
@@ -280,7 +293,9 @@ def _fill(page: Path) -> None:
         with _folder(tmp):
             for command, expected in session(body):
                 shown = [f"$ {command}"]
-                if any(ln.strip() for ln in expected):
+                keep = any(ln.strip() for ln in expected) and not (refresh and "..." not in
+                                                                     [ln.strip() for ln in expected])
+                if keep:
                     shown += expected
                 else:
                     shown += run(command).splitlines()
@@ -291,7 +306,9 @@ def _fill(page: Path) -> None:
     page.write_text("".join(pieces), encoding="utf-8")
 
 
-if __name__ == "__main__":      # python tests/test_docs_examples.py PAGE.md ...
+if __name__ == "__main__":      # python tests/test_docs_examples.py [--refresh] PAGE.md ...
     sys.path.insert(0, str(ROOT))
-    for name in sys.argv[1:]:
-        _fill(Path(name).resolve())
+    os.environ.setdefault("COLUMNS", "100")
+    names = [a for a in sys.argv[1:] if a != "--refresh"]
+    for name in names:
+        _fill(Path(name).resolve(), refresh="--refresh" in sys.argv)
