@@ -255,6 +255,30 @@ def test_readme_keeps_the_test_command_and_stays_short():
     assert len(text.splitlines()) <= 250
 
 
+def test_every_claim_kind_has_an_example():
+    """docs/paper-files.md has a section with a loaded example claim for every kind the engine knows."""
+    from analysis.claims.kinds import KIND_CLASSES
+
+    page = ROOT / "docs" / "paper-files.md"
+    text = page.read_text(encoding="utf-8")
+    shown = {tomllib.loads(b.text)["claims"][0]["kind"] for b in blocks(page)
+             if b.lang == "toml" and set(tomllib.loads(b.text)) == {"claims"}}
+    for kind in KIND_CLASSES:
+        assert f"### `{kind}`" in text and kind in shown, f"docs/paper-files.md: no example of the kind {kind!r}"
+
+
+def test_every_command_is_in_the_guide():
+    """Each command appears in docs/index.md's table and is run or shown somewhere in the guide."""
+    from analysis.cli.main import EXAMPLES
+
+    index = (ROOT / "docs" / "index.md").read_text(encoding="utf-8")
+    commands = {ln.split()[1] for b in (*_all("console"), *_all("bash")) for ln in b.text.splitlines()
+                if ln.startswith(("$ subdiv ", "subdiv ")) and len(ln.split()) > 2
+                for ln in [ln.removeprefix("$ ")]}
+    for command in EXAMPLES:
+        assert f"`subdiv {command}`" in index and command in commands, f"the guide does not show `subdiv {command}`"
+
+
 def test_no_issue_numbers_in_user_text():
     for page in PAGES:
         text = page.read_text(encoding="utf-8")
