@@ -1,6 +1,6 @@
-"""Issue 11, item 7: the README worked example (examples/four-point.toml) is a test: the file in the
-README is the file in examples/, the report it prints is the one shown in the README, and its
-verdicts agree with the literature and with its golden file (examples/four-point.verdicts.json)."""
+"""The guide's worked paper file (examples/four-point.toml, docs/paper-files.md "A worked example") is a test:
+the file shown is the file in examples/, the report it prints is the one shown, and its verdicts agree with
+the literature and with its golden file (examples/four-point.verdicts.json)."""
 
 from __future__ import annotations
 
@@ -16,17 +16,17 @@ from analysis.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 EXAMPLE = ROOT / "examples" / "four-point.toml"
-README = ROOT / "README.md"
+GUIDE = ROOT / "docs" / "paper-files.md"
 EXTRA = ["analysis.cli.report", "analysis.cli.paperfile"]
 
 
 def _section() -> str:
-    text = README.read_text(encoding="utf-8")
-    start = text.index("## Paper files: check a paper without writing Python (issue 11)")
+    text = GUIDE.read_text(encoding="utf-8")
+    start = text.index("## A worked example")
     return text[start: text.index("\n## ", start + 10)]
 
 
-def test_the_readme_shows_the_example_file():
+def test_the_guide_shows_the_example_file():
     assert len(EXAMPLE.read_text().splitlines()) <= 40
     block = re.search(r"```toml\n(.*?)```", _section(), re.S).group(1)
     assert block == EXAMPLE.read_text()
@@ -38,7 +38,7 @@ def test_the_example_report(tmp_path, capsys):
     out.mkdir()
     assert main(["report", str(EXAMPLE), "--output", str(out), "--quiet"], extra_modules=EXTRA) == 0
     printed = capsys.readouterr().out
-    # the verdict table in the README is the one printed
+    # the verdict table in the guide is the one printed
     shown = re.search(r"```text\n\$ subdiv report examples/four-point.toml[^\n]*\n(.*?)```", _section(), re.S).group(1)
     table = [ln.rstrip() for ln in printed.strip().splitlines() if ln.startswith(("claim", "4pt:", "---"))]
     assert table == [ln.rstrip() for ln in shown.strip().splitlines() if ln.startswith(("claim", "4pt:", "---"))]

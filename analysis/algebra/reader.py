@@ -117,7 +117,7 @@ class Limits:
     arity: int = 32
 
 
-#: The limits of :func:`read_expression`; the README's input grammar lists them.
+#: The limits of :func:`read_expression`; docs/input.md lists them.
 LIMITS = Limits()
 
 

@@ -54,14 +54,61 @@ COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.reg
                                      "analysis.cli.paperfile", "analysis.cli.derive")
 
 
+#: one or two examples per command, shown at the end of ``subdiv COMMAND --help`` (the user guide, docs/,
+#: has more; every line here must be a valid command: tests/test_cli_help.py parses them)
+EXAMPLES: dict[str, tuple[str, ...]] = {
+    "symbol": ('subdiv symbol --mask "1/4,3/4,3/4,1/4" --start -2',
+               'subdiv symbol --even "3/4,1/4" --odd "1/4,3/4"'),
+    "factor": ("subdiv factor --scheme four-point",
+               "subdiv factor --scheme ternary-four-point"),
+    "norm": ("subdiv norm --scheme four-point --m 2 --L 2 --solve w",
+             'subdiv norm --scheme dfh-chaikin-perturbation --param "omega=(sqrt(6)-1)/80" --m 3 --L 2,3'),
+    "refine": ('subdiv refine --scheme four-point --param w=1/16 --points "0,0;1,0;1,1;0,1" --steps 3',
+               'subdiv refine --scheme ternary-dd-4 --points "0;1;8;27;64" --open --exact'),
+    "matrices": ("subdiv matrices --scheme four-point --param w=1/16",
+                 "subdiv matrices --scheme chaikin --transition"),
+    "list": ("subdiv list", "subdiv list --mary --numeric"),
+    "holder": ('subdiv holder --mask "-1/16,0,9/16,1,9/16,0,-1/16" --start -3 --C 2 --sobolev',
+               'subdiv holder --symbol "(1+z)**2*(1+2*c*z+z**2)/(4*(1+c))/z**2" --where "c=cos(t/2**(n+1))" '
+               '--param t=1'),
+    "range": ("subdiv range --scheme four-point --C 1 --within=-1/8,1/4",
+              "subdiv range --scheme ternary-four-point --C 2 --within=-1,1"),
+    "atlas": ("subdiv atlas --scheme seed004-design-control --param omega=0 --x mu=-1/5:1/5:9 --y nu=0:2:9 "
+              "--figure atlas.png",),
+    "series": ("subdiv series --scheme seed003-trigonometric --param alpha=1 --param omega=1/100 --m 0,1,2",
+               'subdiv series --symbol "(1+z)**3/4/z**2 + (z-1)**4/z**2/(n+2)**3" --m 0,1'),
+    "bound": ("subdiv bound --claim '003:Lemma3.1(iii)-upper' --box alpha=1/100,pi/3",),
+    "reproduce": ("subdiv reproduce --scheme exp-cubic-trig --frequencies",),
+    "nonuniform": ("subdiv nonuniform compare-definitions", "subdiv nonuniform claims --seed 001"),
+    "report": ("subdiv report all", "subdiv report examples/four-point.toml --output r --quiet"),
+    "check": ("subdiv check", "subdiv check examples/first-paper.toml"),
+    "new-paper": ("subdiv new-paper mine.toml",),
+    "derive": ("subdiv derive --support 7 --interpolatory --symmetric primal --reproduce 1",
+               "subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 "
+               "--maximize holder --within=-1/16,0"),
+}
+
+
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:
-    p = _Parser(prog="subdiv", description="Exact and certified analysis of binary subdivision schemes. "
-                "Convention: (S_a f)_i = sum_j a_{i-2j} f_j, a(z) = sum_i a_i z^i.")
+    p = _Parser(prog="subdiv", formatter_class=argparse.RawDescriptionHelpFormatter,
+                description="Exact and certified analysis of subdivision schemes: binary and m-ary (--arity M),\n"
+                "stationary, level-dependent (the level n, --where) and non-uniform; paper files of claims.\n"
+                "Convention: (S_a f)_i = sum_j a_{i-Mj} f_j, a(z) = sum_i a_i z^i (M = 2: binary).",
+                epilog="examples:\n  subdiv holder --scheme four-point --param w=1/16 --C 1\n"
+                       "  subdiv report examples/four-point.toml --output r\n"
+                       "`subdiv COMMAND --help` shows a command's options and examples;\n"
+                       "the user guide is docs/index.md.")
     p.add_argument("--version", action=_VersionAction)
     sub = p.add_subparsers(dest="command", parser_class=_Parser)
     sub.required = True
     for name in dict.fromkeys((*COMMAND_MODULES, *extra_modules)):  # each module once
         importlib.import_module(name).register(sub)
+    for command, examples in EXAMPLES.items():
+        parser = sub.choices.get(command)
+        if parser is not None and not parser.epilog:
+            parser.epilog = "examples:\n" + "\n".join(f"  {line}" for line in examples)
+            if parser.formatter_class is argparse.HelpFormatter:
+                parser.formatter_class = argparse.RawDescriptionHelpFormatter
     return p
 
 
