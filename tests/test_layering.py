@@ -2,7 +2,7 @@
 
 algebra -> stationary -> jsr -> regularity -> levels / nonuniform -> claims -> report -> cli:
 a module may import its own layer and the layers to its left (and the base modules
-``analysis.result``, ``analysis.jsonable``), never one to its right; ``levels`` and
+``analysis.result``, ``analysis.jsonable``, ``analysis.progress``, ``analysis._lazy``), never one to its right; ``levels`` and
 ``nonuniform`` are siblings and do not import each other. Nothing in the engine imports the
 catalogue (``schemes``) or the papers (``papers``); the catalogue imports no layer above
 ``levels``; a paper imports anything but ``analysis.cli``. Every import counts, including the
@@ -21,10 +21,10 @@ ROOT = Path(__file__).resolve().parent.parent
 PACKAGES = ("analysis", "schemes", "papers")
 
 #: rank of each engine layer; equal rank = siblings (may not import each other)
-LAYERS = {"result": 0, "jsonable": 0, "algebra": 1, "stationary": 2, "jsr": 3, "regularity": 4,
+LAYERS = {"result": 0, "jsonable": 0, "progress": 0, "_lazy": 0, "algebra": 1, "stationary": 2, "jsr": 3, "regularity": 4,
           "levels": 5, "nonuniform": 5, "claims": 6, "report": 7, "cli": 8, "__main__": 9}
-#: the results contract: one base layer of two modules
-BASE = {"result", "jsonable"}
+#: the base layer: the results contract, progress announcements, lazy re-exports
+BASE = {"result", "jsonable", "progress", "_lazy"}
 MAX_LINES = 720
 
 
