@@ -1,0 +1,149 @@
+"""Extraordinary vertices: local matrices, Fourier blocks, certified eigen-structure, curvature behaviour,
+the ``subdiv vertex`` command.
+
+Literature values (each with its source) are checks of the computation, never inputs to it:
+
+* Loop: subdominant eigenvalue 3/8 + cos(2 pi/n)/4 (Loop 1987; Peters–Reif, Subdivision Surfaces, 2008,
+  ch. 6); Catmull–Clark: (c + 5 + sqrt((c + 9)(c + 1)))/16, c = cos(2 pi/n) (Stam 1998; Peters–Reif 2008);
+  Doo–Sabin: 1/2 and 1/4 on the n-gon (Doo–Sabin 1978).
+* Curvature (Karčiauskas–Peters–Reif, Shape characterization of subdivision surfaces — case studies,
+  CAGD 21 (2004); Peters–Reif 2008, ch. 7): Catmull–Clark has mu > lambda^2 (unbounded curvature) for
+  n >= 5 and a flat spot (mu < lambda^2) at n = 3; Loop has mu > lambda^2 for n >= 7 (the block-2
+  eigenvalue 3/8 + cos(4 pi/n)/4) and at n = 3 (the 2-ring eigenvalue 1/8 > 1/16 = lambda^2), while Loop's
+  beta_n makes the block-0 eigenvalue equal lambda^2 (bounded curvature at n = 4, 5).
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+
+from analysis.algebra.reader import InputError
+from analysis.result import AnalysisError
+from analysis.vertex.blocks import block_charpoly, c, fourier_block, lam, local_matrix
+from analysis.vertex.rules import scheme_rules, user_rules
+from analysis.vertex.spectrum import analyse
+from analysis.vertex.valence import closed_form_lambda, parse_valences, valence_entry
+
+
+def _block_product(rules, n):
+    out = sp.S.One
+    for k in range(n):
+        P = block_charpoly(fourier_block(rules, k, n))
+        out *= P.subs(c, sp.cos(2 * sp.pi * k / n))
+    return sp.expand(out)
+
+
+@pytest.mark.parametrize("name, ring, n", [("catmull-clark", 1, 4), ("catmull-clark", 1, 6),
+                                           ("loop-warren", 2, 4), ("doo-sabin", 1, 6)],
+                         ids=["cc-1ring-4", "cc-1ring-6", "loop-warren-2ring-4", "doo-sabin-6"])
+def test_fourier_blocks_factor_the_full_local_matrix(name, ring, n):
+    """det(lam I - S) of the full matrix = product of the blocks' polynomials (exact, rational cosines)."""
+    rules = scheme_rules(name, ring, n)
+    S = local_matrix(rules, n)
+    assert S.shape[0] == len(rules.points) * n + (1 if rules.centre else 0)
+    assert all(sum(S.row(i)) == 1 for i in range(S.rows))           # affine invariance of every rule
+    assert sp.expand(S.charpoly(lam).as_expr()) == _block_product(rules, n)
+
+
+def test_subdominant_closed_forms_match_the_literature():
+    loop = closed_form_lambda(scheme_rules("loop", ring=1))["expr"]
+    assert sp.expand(loop - (sp.Rational(3, 8) + c / 4)) == 0                       # Loop 1987
+    cc = closed_form_lambda(scheme_rules("catmull-clark", ring=1))["expr"]
+    stam = (c + 5 + sp.sqrt((c + 9) * (c + 1))) / 16                                # Stam 1998
+    assert sp.simplify(cc - stam) == 0
+    assert closed_form_lambda(scheme_rules("doo-sabin"))["expr"] == sp.Rational(1, 2)
+
+
+@pytest.mark.parametrize("n", [3, 4, 5, 7, 8, 12])
+def test_loop_eigen_conditions_certified(n):
+    a = analyse(scheme_rules("loop", ring=2, n=n), n)
+    assert a.reif_ok and a.reif_status == "certified"
+    assert a.separation > 0
+    assert sp.simplify(a.lam_exact - (sp.Rational(3, 8) + sp.cos(2 * sp.pi / n) / 4)) == 0
+
+
+# (scheme, n): mu against lambda^2, as the literature states it (module docstring)
+CURVATURE = {("loop", 3): ">", ("loop", 4): "=", ("loop", 5): "=", ("loop", 6): "=", ("loop", 7): ">",
+             ("loop", 10): ">", ("catmull-clark", 3): "<", ("catmull-clark", 4): "=",
+             ("catmull-clark", 5): ">", ("catmull-clark", 6): ">", ("catmull-clark", 7): ">",
+             ("doo-sabin", 5): "="}
+
+
+@pytest.mark.parametrize("key", sorted(CURVATURE), ids=[f"{s}-{n}" for s, n in sorted(CURVATURE)])
+def test_curvature_behaviour_matches_the_literature(key):
+    name, n = key
+    a = analyse(scheme_rules(name, ring=2, n=n), n)
+    assert a.reif_ok
+    assert (a.mu_vs_lam2, a.curvature_status) == (CURVATURE[key], "certified")
+
+
+def test_catmull_clark_subsubdominant_is_block_2_from_valence_5():
+    a = analyse(scheme_rules("catmull-clark", ring=2), 8)
+    assert a.mu.k == 2 and a.mu.ball.real.contains(sp.Rational(1, 2).p / 2)        # mu(8) = lambda(4) = 1/2
+
+
+def test_warren_beta_changes_block_0_not_lambda():
+    a = analyse(scheme_rules("loop-warren", ring=2, n=5), 5)
+    b = analyse(scheme_rules("loop", ring=2, n=5), 5)
+    assert a.lam_exact == b.lam_exact
+    assert (a.mu_vs_lam2, b.mu_vs_lam2) == (">", "=")       # Warren's 1/4 exceeds lambda(5)^2 = 0.2045...
+
+
+def test_a_bad_centre_weight_fails_reif_certified():
+    """beta = 1/n leaves the centre nothing: block 0 has -3/8, larger in modulus than lambda(3) = 1/4."""
+    rules = user_rules("triangle", "1/n", ring=1)
+    a = analyse(rules, 3)
+    assert a.reif_ok is False and a.reif_status == "certified"
+    assert "block 0" in a.reif_reason
+
+
+def test_user_rules_reproduce_loop_with_warren_weights():
+    mine = analyse(user_rules("triangle", "3/(8*n)", ring=2), 7)
+    ref = analyse(scheme_rules("loop-warren", ring=2, n=7), 7)
+    assert mine.lam.factor == ref.lam.factor and mine.mu_vs_lam2 == ref.mu_vs_lam2
+
+
+def test_user_edge_rule_enters_the_blocks_by_frequency():
+    """W(j) = (a + b cos(2 pi j/n))/n contributes a to block 0 and b/2 to blocks 1 and n-1."""
+    rules = user_rules("triangle", "3/(8*n)", "1/4; (3/4 + 1/2*cos(2*pi*j/n))/n", ring=1)
+    assert fourier_block(rules, 0, 7)[1, 1] == sp.Rational(3, 4)
+    assert fourier_block(rules, 1, 7)[0, 0] == sp.Rational(1, 4)
+    assert fourier_block(rules, 3, 7)[0, 0] == 0
+
+
+@pytest.mark.parametrize("text, needle", [("__import__('os')", "not allowed"), ("(1/4 + sin(2*pi*j/n))/n", "j may"),
+                                          ("cos(pi*j/n)/n", "integer l"), ("k/n", "unknown name")],
+                         ids=["code", "sin", "half-frequency", "unknown-name"])
+def test_user_weights_are_read_as_data(text, needle):
+    with pytest.raises((InputError, AnalysisError), match=needle):
+        user_rules("triangle", "3/(8*n)", f"3/8; {text}")
+
+
+def test_valence_ranges_parse_and_refuse():
+    assert parse_valences("3..5") == [3, 4, 5]
+    for bad in ("2..5", "3..1000", "x", "5..3"):
+        with pytest.raises(AnalysisError):
+            parse_valences(bad)
+
+
+def test_entry_reports_statuses_and_never_certifies_c1():
+    e = valence_entry(scheme_rules("catmull-clark", ring=2), 5, closed_form_lambda(scheme_rules("catmull-clark")))
+    assert e["reif"]["status"] == "certified" and e["lambda"]["closed_form_checked"]
+    assert e["c1"]["status"] == "inconclusive" and "characteristic map not checked" in e["c1"]["verdict"]
+
+
+def test_cli_vertex_json_and_errors(capsys):
+    from analysis.cli.main import main
+
+    assert main(["vertex", "--scheme", "loop", "--valence", "5..6", "--ring", "1", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert [e["n"] for e in doc["valences"]] == [5, 6]
+    assert doc["closed_form"]["lambda"] == "c/4 + 3/8"
+    assert main(["vertex", "--scheme", "lop", "--valence", "5"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and err.startswith("subdiv: error: unknown scheme 'lop'")
+    assert main(["vertex", "--scheme", "loop", "--valence", "2", "--json"]) == 2
+    assert json.loads(capsys.readouterr().out)["error"]["message"].startswith("valences must lie")
