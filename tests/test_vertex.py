@@ -82,7 +82,42 @@ def test_curvature_behaviour_matches_the_literature(key):
 
 def test_catmull_clark_subsubdominant_is_block_2_from_valence_5():
     a = analyse(scheme_rules("catmull-clark", ring=2), 8)
-    assert a.mu.k == 2 and a.mu.ball.real.contains(sp.Rational(1, 2).p / 2)        # mu(8) = lambda(4) = 1/2
+    assert a.mu.k == 2 and a.mu.ball.real.contains(0.5)        # mu(8) = lambda(4) = 1/2 (block 2: cos(4 pi/8) = 0)
+
+
+def test_characteristic_map_is_the_identity_at_the_regular_valence():
+    """n = 4: the eigenvector is the lattice itself, the Jacobian of every segment patch is 1/4."""
+    from flint import acb, arb
+
+    from analysis.vertex.charmap import SEGMENT, _jacobian_bernstein, _Net, eigenvector
+
+    rules = scheme_rules("catmull-clark", ring=2)
+    v = eigenvector(rules, 4, arb(1) / 2)
+    assert all(x.overlaps(acb(z.real, z.imag)) and x.rad() < 1e-30
+               for x, z in zip(v, [1, 1 + 1j, 2, 2 + 1j, 2 + 2j, 1 + 2j]))
+    net = _Net(rules, 4, v, arb(1) / 2)
+    for a, b in SEGMENT:
+        assert all(x.contains(arb(1) / 4) and x.rad() < 1e-30 for row in _jacobian_bernstein(net.bezier(a, b))
+                   for x in row)
+
+
+@pytest.mark.parametrize("n", [3, 5, 9])
+def test_catmull_clark_characteristic_map_certified(n):
+    from analysis.vertex.charmap import characteristic_map
+
+    r = characteristic_map(scheme_rules("catmull-clark", ring=2), n)
+    assert (r["status"], r["regular"], r["jacobian_sign"], r["winding_number"]) == ("certified", True, 1, 1)
+
+
+def test_the_other_eigenvector_of_block_1_is_refuted():
+    """The second root of block 1's quadratic gives a regular map whose boundary winds 1 - n times."""
+    from analysis.vertex.charmap import characteristic_map
+
+    rules = scheme_rules("catmull-clark", ring=2)
+    a = analyse(rules, 5)
+    other = next(e for e in a.eigenvalues if e.k == 1 and e.factor == a.lam.factor and e is not a.lam)
+    r = characteristic_map(rules, 5, other.ball.real)
+    assert (r["status"], r["regular"], r["winding_number"]) == ("refuted", True, -4)
 
 
 def test_warren_beta_changes_block_0_not_lambda():
@@ -129,9 +164,12 @@ def test_valence_ranges_parse_and_refuse():
             parse_valences(bad)
 
 
-def test_entry_reports_statuses_and_never_certifies_c1():
+def test_c1_is_certified_only_with_the_characteristic_map():
     e = valence_entry(scheme_rules("catmull-clark", ring=2), 5, closed_form_lambda(scheme_rules("catmull-clark")))
     assert e["reif"]["status"] == "certified" and e["lambda"]["closed_form_checked"]
+    assert e["c1"]["status"] == "certified" and e["characteristic_map"]["injective"]
+    e = valence_entry(scheme_rules("loop", ring=2, n=5), 5)
+    assert e["reif"]["status"] == "certified" and "characteristic_map" not in e
     assert e["c1"]["status"] == "inconclusive" and "characteristic map not checked" in e["c1"]["verdict"]
 
 

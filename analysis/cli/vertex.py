@@ -76,7 +76,7 @@ def _line(e: dict) -> str:
                              else "undecided") + f" [{r['status']}]")
     cv = e["curvature"]
     parts.append(f"curvature: {cv['behaviour']} [{cv['status']}]")
-    parts.append(f"C^1: {e['c1']['verdict']}")
+    parts.append(f"C^1: {e['c1']['verdict']} [{e['c1']['status']}]")
     return "  ".join(parts)
 
 
@@ -97,7 +97,16 @@ def _summary(name: str, closed: dict, entries: list[dict]) -> str:
     for e in entries:
         by.setdefault(e.get("curvature", {}).get("behaviour", "inconclusive"), []).append(e["n"])
     lines.append("curvature: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in by.items()))
-    lines.append("C^1: inconclusive at every valence (eigen-conditions only; the characteristic map is not checked)")
+    c1: dict[str, list[int]] = {}
+    for e in entries:
+        c1.setdefault(e["c1"]["status"], []).append(e["n"])
+    if set(c1) == {"certified"}:
+        lines.append("C^1: certified at every valence (eigen-conditions and a regular, injective characteristic map)")
+    elif any("characteristic_map" in e for e in entries):
+        lines.append("C^1: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in c1.items()))
+    else:
+        lines.append("C^1: inconclusive at every valence (eigen-conditions only; the characteristic map is not "
+                     "checked for these rules)")
     return f"{name}:\n  " + "\n  ".join(lines)
 
 
@@ -121,21 +130,20 @@ def cmd_vertex(args) -> None:
     valences = parse_valences(args.valence)
     base = _rules(args, None)
     closed = closed_form_lambda(base)
-    entries, seconds = [], []
+    entries = []
     for n in valences:
         rules = _rules(args, n)
         rules.check_valence(n)
         t0 = time.perf_counter()
         entries.append(valence_entry(rules, n, closed))
-        seconds.append(round(time.perf_counter() - t0, 3))
+        entries[-1]["timing"] = {"seconds": round(time.perf_counter() - t0, 3)}
         if not args.json:
             _print(_line(entries[-1]))
     name = base.name if base.name != "user" else "user rules"
     doc = {"scheme": name, "rules": base.source, "ring": base.ring, "matrix_size": base.size,
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
-           "c1_note": "C^1 needs the characteristic map (regular and injective), which is not checked: "
-                      "every C^1 verdict is inconclusive",
-           "timing": {"seconds_per_valence": dict(zip(map(str, valences), seconds))}}
+           "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
+                      "(checked for quad rules on the 2-ring); otherwise the verdict is inconclusive"}
     if args.json:
         _emit(args, doc, "")
     else:

@@ -74,6 +74,8 @@ class LocalRules:
     ring: int
     source: str
     min_valence: int = 3
+    #: lattice coordinates (x, y) of the sector points in sector 0 (x >= 1, y >= 0), when on a lattice
+    coords: tuple = ()
 
     @property
     def size(self) -> str:
@@ -155,7 +157,8 @@ def triangle_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: 
             o2 = tuple(a + b for a, b in zip(p, _TRI_DIRS[(i + 1) % 6]))
             st = [(sp.Rational(3, 8), p), (sp.Rational(3, 8), q), (sp.Rational(1, 8), o1), (sp.Rational(1, 8), o2)]
         rules.append(_stencil_terms(st, coords, _tri_home, centre_rule))
-    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "triangle", ring, source)
+    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "triangle", ring, source,
+                      coords=tuple(sector))
 
 
 def quad_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: str) -> LocalRules:
@@ -183,7 +186,8 @@ def quad_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: str)
             st = ([(h(3, 8), (x, y)), (h(3, 8), (x, y + 1))]
                   + [(h(1, 16), (x + a, y + b)) for a in (-1, 1) for b in (0, 1)])
         rules.append(_stencil_terms(st, coords, _quad_home, centre_rule))
-    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "quad", ring, source)
+    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "quad", ring, source,
+                      coords=tuple(sector))
 
 
 def doo_sabin_rules() -> LocalRules:
@@ -321,6 +325,6 @@ def user_rules(lattice: str, centre: str, edge: str | None = None, *, ring: int 
         new = list(rules.rules)
         new[1] = (Term(wc, (CENTRE,)), *(Term(w, (i, ALL)) for i, w in enumerate(ws_j)))
         rules = LocalRules(rules.name, True, rules.points, tuple(new), lattice, ring,
-                           rules.source + ", edge rule at the centre given")
+                           rules.source + ", edge rule at the centre given", coords=rules.coords)
     return rules
 

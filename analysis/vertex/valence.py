@@ -7,10 +7,12 @@ frequencies): its factors of degree <= 2 in lambda are solved by radicals, and t
 subdominant eigenvalue is chosen by its Arb value at each valence of the range, where it is checked to lie
 in lambda's isolating ball (so the formula *is* lambda there, not a float match).
 
-C^1: the eigen-conditions are necessary ingredients, not a proof. Without the characteristic map's
-regularity and injectivity (Reif 1995) the verdict is "inconclusive: eigen-conditions hold,
-characteristic map not checked"; where an eigen-condition fails (certified), the standard C^1 test
-does not apply, which is reported, not turned into a claim that the surface is not C^1.
+C^1: the eigen-conditions are necessary ingredients, not a proof. With them and a certified regular and
+injective characteristic map (:mod:`.charmap`, quad schemes on the 2-ring) the verdict is certified
+C^1 (Reif 1995); without the characteristic map (Loop, Doo–Sabin, triangle rules: not implemented) it is
+"inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
+(certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
+surface is not C^1.
 
 Curvature (J. Peters, U. Reif, Shape characterization of subdivision surfaces — basic principles, CAGD
 21 (2004); K. Karčiauskas, J. Peters, U. Reif, Shape characterization of subdivision surfaces — case
@@ -32,7 +34,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError
+from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
 from .spectrum import VertexAnalysis, analyse
@@ -122,7 +124,17 @@ def arb_value(expr: sp.Expr, n: int, prec: int = 128):
         ctx.prec = old
 
 
-def c1_verdict(a: VertexAnalysis) -> tuple[str, str]:
+def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str]:
+    """The C^1 verdict: certified only with the eigen-conditions *and* a certified regular, injective
+    characteristic map (Reif 1995)."""
+    if a.reif_ok and charmap is not None:
+        if charmap["status"] == CERTIFIED:
+            return CERTIFIED, "C^1 (eigen-conditions; characteristic map regular and injective)"
+        if charmap["status"] == REFUTED:
+            return REFUTED, (f"not C^1 in Reif's sense: the characteristic map is regular but its boundary winds "
+                             f"{charmap['winding_number']} times (not injective)")
+        return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
+                             f"{charmap['precision_bits']} bits"
     if a.reif_ok:
         return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not checked"
     if a.reif_status == CERTIFIED:
@@ -160,11 +172,25 @@ def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict
                      "reason": a.reif_reason}
     entry["curvature"] = {"mu_vs_lambda2": a.mu_vs_lam2, "behaviour": a.curvature,
                           "status": a.curvature_status, "text": CURVATURE_TEXT[a.curvature]}
-    status, verdict = c1_verdict(a)
+    cm = None
+    if a.reif_ok and has_characteristic_map(rules):
+        from .charmap import characteristic_map
+
+        for prec in (128, 256):
+            cm = characteristic_map(rules, n, lam_e.ball.real, prec)
+            if cm["status"] != INCONCLUSIVE:
+                break
+        entry["characteristic_map"] = cm
+    status, verdict = c1_verdict(a, cm)
     entry["c1"] = {"status": status, "verdict": verdict}
     if a.notes:
         entry["notes"] = list(a.notes)
     return entry
+
+
+def has_characteristic_map(rules: LocalRules) -> bool:
+    """Whether the characteristic map is checked for these rules (quad lattice, 2-ring: bicubic patches)."""
+    return rules.lattice == "quad" and rules.ring == 2
 
 
 def parse_valences(text: str) -> list[int]:
