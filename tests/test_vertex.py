@@ -185,3 +185,36 @@ def test_cli_vertex_json_and_errors(capsys):
     assert err.count("\n") == 1 and err.startswith("subdiv: error: unknown scheme 'lop'")
     assert main(["vertex", "--scheme", "loop", "--valence", "2", "--json"]) == 2
     assert json.loads(capsys.readouterr().out)["error"]["message"].startswith("valences must lie")
+
+
+def _doc_examples():
+    import re
+    import shlex
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "vertices.md").read_text(encoding="utf-8")
+    out = []
+    for block in re.findall(r"```console\n(.*?)```", text, flags=re.S):
+        cmd, lines = None, []
+        for line in block.splitlines():
+            if line.startswith("$ subdiv "):
+                if cmd:
+                    out.append((cmd, "\n".join(lines)))
+                cmd, lines = shlex.split(line[2:])[1:], []
+            else:
+                lines.append(line)
+        out.append((cmd, "\n".join(lines)))
+    return out
+
+
+DOC_EXAMPLES = _doc_examples()
+
+
+@pytest.mark.parametrize("argv, expected", DOC_EXAMPLES, ids=[" ".join(a)[:40] for a, _ in DOC_EXAMPLES])
+def test_docs_examples_print_what_the_docs_show(argv, expected, capsys):
+    from analysis.cli.main import main
+
+    code = main(argv)
+    cap = capsys.readouterr()
+    assert (cap.out + cap.err).rstrip("\n") == expected
+    assert code == (2 if expected.startswith("subdiv: error") else 0)

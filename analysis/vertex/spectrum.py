@@ -225,20 +225,20 @@ def _lambda_in_c1(lam_e: Eigenvalue, lam_exact: sp.Expr | None) -> sp.Expr | Non
 
 
 def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n: int, sign: int,
-                 eigenvalues: list[Eigenvalue]) -> bool | None:
-    """Is ``mu = sign * lambda^2``? Decided exactly when lambda is a polynomial in C1 (or rational):
-    ``F_mu(sign lambda^2)`` reduced modulo the minimal polynomial of cos(2 pi/n) is zero (so sign lambda^2
-    is a root of mu's factor at c = cos(2 pi k/n)), and the ball of sign lambda^2 meets mu's isolating
-    ball and no other isolating ball of that factor's roots. None: not decided."""
+                 eigenvalues: list[Eigenvalue], power: int = 2) -> bool | None:
+    """Is ``mu = sign * lambda^power``? Decided exactly when lambda is a polynomial in C1 (or rational):
+    ``F_mu(sign lambda^power)`` reduced modulo the minimal polynomial of cos(2 pi/n) is zero (so it is a
+    root of mu's factor at c = cos(2 pi k/n)), and its ball meets mu's isolating ball and no other
+    isolating ball of that factor's roots. False: certainly not equal. None: not decided."""
     lam_c1 = _lambda_in_c1(lam_e, lam_exact)
     if lam_c1 is None:
         return None
-    target = sp.expand(sign * lam_c1 ** 2)
+    target = sp.expand(sign * lam_c1 ** power)
     val = sp.expand(mu.factor.as_expr().subs(c, sp.chebyshevt(mu.k, C1)).subs(lam, target))
     num, _ = sp.fraction(sp.together(val))
     if not sp.Poly(num, C1, domain="QQ").rem(cos_minimal_polynomial(n)).is_zero:
         return False
-    ball = lam_e.ball * lam_e.ball * sign
+    ball = lam_e.ball ** power * sign
     siblings = [e for e in eigenvalues if e.k == mu.k and e.factor == mu.factor]
     meets = [e for e in siblings if e.ball.overlaps(ball)]
     return True if meets == [mu] else None
@@ -313,6 +313,9 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
             a.reif_ok, a.reif_status = False, "certified"
             a.reif_reason = (f"an eigenvalue of block {e.k} ({_fmt(e.ball)}) exceeds block 1's leading "
                              f"eigenvalue ({_fmt(top.ball)}) in modulus")
+        elif (tie := _tie_with_lambda(a, top, others, n)) is not None:
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = tie
         elif top.real is True and top.ball.real < 0:
             a.reif_ok, a.reif_status = False, "certified"
             a.reif_reason = "the subdominant eigenvalue is negative"
@@ -325,6 +328,22 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
     _ = lam_lo, max_other
     _curvature(a, others, n)
     return a
+
+
+def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue], n: int) -> str | None:
+    """An eigenvalue other than lambda (and its mirror) proven equal to +-lambda: lambda is then not a
+    double, strictly dominant eigenvalue. (Exact test as for mu = lambda^2.)"""
+    if not (top.real and top.ball.real > 0):
+        return None
+    lam_exact = _exact_root(top.factor, top.ball, n, 1)
+    for e in others:
+        if e.modulus < top.modulus or not e.real:
+            continue
+        sign = 1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)
+        if sign and _equal_exact(e, top, lam_exact, n, sign, a.eigenvalues, power=1):
+            return (f"an eigenvalue of block {e.k} equals {'-' if sign < 0 else ''}lambda exactly "
+                    f"({'lambda is not double' if sign > 0 else 'not strictly below lambda in modulus'})")
+    return None
 
 
 def _certainly_nonreal(ball) -> bool:
