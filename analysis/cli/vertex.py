@@ -7,7 +7,7 @@ Examples
     subdiv vertex --scheme loop --valence 3..12
     subdiv vertex --scheme catmull-clark --valence 3..50 --json
     subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..8
-    subdiv vertex --lattice triangle --centre "3/(8*n)" --edge "3/8; (1/4 + cos(2*pi*j/n)/2)/n*0 + ..."
+    subdiv vertex --lattice triangle --centre "3/(8*n)" --edge "3/8; (5/8 + cos(2*pi*j/n))/n" --valence 3..8
 
 For each valence n: the subdominant eigenvalue lambda (exact and as a float), the subsubdominant mu, the
 certified separation lambda - max|others|, Reif's eigen-conditions, the curvature behaviour (mu against

@@ -133,8 +133,8 @@ def _stencil_terms(stencil, coords: Mapping[tuple[int, int], int], home, centre_
             src = (coords[(hx, hy)], d)
         else:
             raise AnalysisError(f"the rings are not closed under subdivision: point {(hx, hy)} is needed")
-        out[src] = out.get(src, 0) + sp.nsimplify(wgt)
-    return tuple(Term(sp.Rational(w) if not isinstance(w, sp.Expr) else w, s) for s, w in out.items())
+        out[src] = out.get(src, sp.S.Zero) + wgt
+    return tuple(Term(w, s) for s, w in out.items())
 
 
 def triangle_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: str) -> LocalRules:
