@@ -168,9 +168,43 @@ def test_c1_is_certified_only_with_the_characteristic_map():
     e = valence_entry(scheme_rules("catmull-clark", ring=2), 5, closed_form_lambda(scheme_rules("catmull-clark")))
     assert e["reif"]["status"] == "certified" and e["lambda"]["closed_form_checked"]
     assert e["c1"]["status"] == "certified" and e["characteristic_map"]["injective"]
-    e = valence_entry(scheme_rules("loop", ring=2, n=5), 5)
-    assert e["reif"]["status"] == "certified" and "characteristic_map" not in e
-    assert e["c1"]["status"] == "inconclusive" and "characteristic map not checked" in e["c1"]["verdict"]
+    for rules in (scheme_rules("loop", ring=1, n=5), scheme_rules("doo-sabin")):
+        e = valence_entry(rules, 5)
+        assert e["reif"]["status"] == "certified" and "characteristic_map" not in e
+        assert e["c1"]["status"] == "inconclusive" and "characteristic map not checked" in e["c1"]["verdict"]
+
+
+def test_loop_patch_bezier_form_has_linear_precision():
+    """Control points sampled from x and y (lattice coordinates) give Bézier ordinates j/4 and k/4: the box
+    spline reproduces linear functions, an identity the subdivision equations did not impose."""
+    from analysis.vertex.boxspline import BEZIER_INDEX, NET, loop_bezier_matrix
+
+    G = loop_bezier_matrix()
+    xs = G * sp.Matrix([p[0] for p in NET])
+    ys = G * sp.Matrix([p[1] for p in NET])
+    assert list(xs) == [sp.Rational(j, 4) for _, j, _ in BEZIER_INDEX]
+    assert list(ys) == [sp.Rational(k, 4) for _, _, k in BEZIER_INDEX]
+
+
+@pytest.mark.parametrize("n", [3, 7])
+def test_loop_characteristic_map_certified(n):
+    from analysis.vertex.charmap import characteristic_map
+
+    r = characteristic_map(scheme_rules("loop", ring=2, n=n), n)
+    assert (r["status"], r["regular"], r["winding_number"]) == ("certified", True, 1)
+
+
+def test_loop_characteristic_map_is_affine_at_the_regular_valence():
+    from flint import arb
+
+    from analysis.vertex.boxspline import SUBTRIANGLES
+    from analysis.vertex.charmap import _tri_jacobian, _TriNet, eigenvector
+
+    rules = scheme_rules("loop", ring=2, n=6)
+    net = _TriNet(rules, 6, eigenvector(rules, 6, arb(1) / 2), arb(1) / 2)
+    area = arb(3).sqrt() / 8                      # |det| of the level-1 edge vectors (1/2, 0), (1/4, sqrt(3)/4)
+    for st in SUBTRIANGLES[1:]:
+        assert all(x.overlaps(area) and x.rad() < 1e-12 for x in _tri_jacobian(net.bezier_tri(*st)))
 
 
 def test_cli_vertex_json_and_errors(capsys):

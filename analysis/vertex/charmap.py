@@ -42,7 +42,7 @@ import sympy as sp
 
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError
 from .blocks import _laurent, fourier_block, w
-from .rules import C1, LocalRules, _quad_home
+from .rules import C1, LocalRules, _quad_home, _tri_home
 
 #: the segment: lower-left corners of its three level-1 quads in sector 0
 SEGMENT = ((1, 0), (1, 1), (0, 1))
@@ -99,8 +99,10 @@ class _Net:
         self.rot = [acb(fmpq(2 * d, n)).exp_pi_i() for d in range(n)]
         self.cache: dict = {}
 
+    home = staticmethod(_quad_home)
+
     def _home(self, x, y):
-        d, hx, hy = _quad_home(x, y)
+        d, hx, hy = self.home(x, y)
         return self.rot[d % self.n], (hx, hy)
 
     def level0(self, x, y):
@@ -229,19 +231,45 @@ def _arg_increment(ctrl: list, depth: int = 0):
     return None if a is None or b is None else a + b
 
 
+def _verdict(regular: bool, sign: int, pieces: int, curve: list, n: int, prec: int, arb, method: str) -> dict:
+    """Winding number of the outer boundary (pieces of ``curve``, from sector 0's start to its rotation)
+    and the status: certified (regular, winding = Jacobian sign), refuted (regular, other certified
+    winding number), inconclusive."""
+    incs = [_arg_increment(cp) for cp in curve]
+    winding = None
+    if all(x is not None for x in incs):
+        total = sum(incs, arb(0))
+        m = (total - 2 * arb.pi() / n) / (2 * arb.pi())
+        mid = round(float(m.mid()))
+        if abs(m - mid) < arb(1) / 2:
+            winding = 1 + n * mid
+    injective = bool(regular and winding is not None and winding == sign)
+    if injective:
+        status = CERTIFIED
+    elif regular and winding is not None:
+        status = REFUTED                      # regular, but its boundary winds |w| != 1 times (or against it)
+    else:
+        status = INCONCLUSIVE
+    return {"status": status, "regular": regular, "jacobian_sign": sign, "pieces": pieces,
+            "winding_number": winding, "injective": injective, "precision_bits": prec, "method": method}
+
+
 def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128) -> dict:
     """Certified regularity (Jacobian of one sign on the segment) and injectivity (winding number of the
-    outer boundary equal to that sign) of the characteristic map of a quad scheme on the 2-ring at
+    outer boundary equal to that sign) of the characteristic map of quad or triangle rules on the 2-ring at
     valence n, at ``prec`` bits: status certified (regular and injective), refuted (regular, certified
     winding number of the wrong value: not injective) or inconclusive."""
     from flint import arb, ctx
 
-    if rules.lattice != "quad" or rules.ring != 2:
-        raise AnalysisError("the characteristic map is checked for quad schemes on the 2-ring (Catmull-Clark type)")
+    if rules.lattice not in ("quad", "triangle") or rules.ring != 2:
+        raise AnalysisError("the characteristic map is checked for quad (bicubic) and triangle (Loop box-spline) "
+                            "rules on the 2-ring")
     if lam_ball is None:
         from .spectrum import analyse
 
         lam_ball = analyse(rules, n).lam.ball.real
+    if rules.lattice == "triangle":
+        return characteristic_map_triangle(rules, n, lam_ball, prec)
     old = ctx.prec
     ctx.prec = prec
     try:
@@ -261,27 +289,126 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128
         A, Bq, C = patches
         curve = [[A[3][j] for j in range(4)], [Bq[3][j] for j in range(4)],
                  [Bq[3 - i][3] for i in range(4)], [C[3 - i][3] for i in range(4)]]
-        incs = [_arg_increment(cp) for cp in curve]
-        winding = None
-        if all(x is not None for x in incs):
-            total = sum(incs, arb(0))
-            m = (total - 2 * arb.pi() / n) / (2 * arb.pi())
-            if abs(m) < arb(1) / 2:
-                winding = 1
-            elif m.lower() > 0.5 or m.upper() < -0.5:
-                mid = round(float(m.mid()))
-                if abs(m - mid) < arb(1) / 2:
-                    winding = 1 + n * mid
-        injective = bool(regular and winding is not None and winding == sign)
-        if injective:
-            status = CERTIFIED
-        elif regular and winding is not None:
-            status = REFUTED                      # regular, but its boundary winds |w| != 1 times (or against it)
-        else:
-            status = INCONCLUSIVE
-        return {"status": status, "regular": regular, "jacobian_sign": sign, "pieces": pieces,
-                "winding_number": winding, "injective": injective, "precision_bits": prec,
-                "method": "bicubic Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
-                          "winding number of the outer boundary"}
+        return _verdict(regular, sign, pieces, curve, n, prec, arb,
+                        "bicubic Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
+                        "winding number of the outer boundary")
+    finally:
+        ctx.prec = old
+
+
+# --------------------------------------------------------------------------------------------------
+# Loop-type rules: quartic box-spline patches
+
+class _TriNet(_Net):
+    """The characteristic net on the triangular lattice; level-1 points off the 2-ring by Loop's
+    regular stencils."""
+
+    home = staticmethod(_tri_home)
+
+    def _regular(self, X, Y):
+        from flint import acb
+
+        from .boxspline import loop_stencil
+
+        return sum((acb(int(w_.p)) / int(w_.q) * self.level0(*p) for w_, p in loop_stencil(X, Y)), acb(0))
+
+    def bezier_tri(self, q0, a, b) -> list:
+        """The 15 Bézier ordinates (order of ``BEZIER_INDEX``) of the level-1 sub-triangle (q0, a, b)."""
+        from flint import acb
+
+        from .boxspline import NET, loop_bezier_matrix
+
+        net = [self.level1(q0[0] + x * a[0] + y * b[0], q0[1] + x * a[1] + y * b[1]) for x, y in NET]
+        G = loop_bezier_matrix()
+        out = []
+        for i in range(G.rows):
+            s = acb(0)
+            for j in range(G.cols):
+                if G[i, j] != 0:
+                    s += net[j] * (acb(int(G[i, j].p)) / int(G[i, j].q))
+            out.append(s)
+        return out
+
+
+def _multinomial(d: int, idx) -> int:
+    from math import factorial
+
+    return factorial(d) // (factorial(idx[0]) * factorial(idx[1]) * factorial(idx[2]))
+
+
+def _tri_jacobian(beta: list) -> list:
+    """Bernstein ordinates (degree 6) of Im(conj(D1 F) D2 F), D1, D2 the derivatives along the edges
+    (vertex 0 -> 1, vertex 0 -> 2) of the quartic with ordinates ``beta``."""
+    from .boxspline import bezier_index
+
+    i4, i3, i6 = bezier_index(4), bezier_index(3), bezier_index(6)
+    at = {idx: beta[k] for k, idx in enumerate(i4)}
+    D1 = {(i, j, k): 4 * (at[(i, j + 1, k)] - at[(i + 1, j, k)]) for i, j, k in i3}
+    D2 = {(i, j, k): 4 * (at[(i, j, k + 1)] - at[(i + 1, j, k)]) for i, j, k in i3}
+    out = {idx: None for idx in i6}
+    for a in i3:
+        for b in i3:
+            s = tuple(x + y for x, y in zip(a, b))
+            t = (D1[a].conjugate() * D2[b]).imag * (_multinomial(3, a) * _multinomial(3, b)) / _multinomial(6, s)
+            out[s] = t if out[s] is None else out[s] + t
+    return [out[idx] for idx in i6]
+
+
+def _tri_sign_certified(coeffs: list, sign: int, depth: int = 0) -> tuple[bool, int]:
+    from .boxspline import bezier_index, restriction_matrices
+
+    if all((x > 0) if sign > 0 else (x < 0) for x in coeffs):
+        return True, 1
+    idx = bezier_index(6)
+    corners = [coeffs[idx.index(c)] for c in ((6, 0, 0), (0, 6, 0), (0, 0, 6))]
+    if any((x < 0) if sign > 0 else (x > 0) for x in corners):
+        return False, 1
+    if depth >= 4:
+        return False, 1
+    pieces = 0
+    for R in restriction_matrices(6):
+        sub = []
+        for i in range(R.rows):
+            acc = 0 * coeffs[0]
+            for j in range(R.cols):
+                if R[i, j] != 0:
+                    acc += coeffs[j] * (int(R[i, j].p)) / int(R[i, j].q)
+            sub.append(acc)
+        ok, k = _tri_sign_certified(sub, sign, depth + 1)
+        pieces += k
+        if not ok:
+            return False, pieces
+    return True, pieces
+
+
+def characteristic_map_triangle(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
+    """As :func:`characteristic_map` for Loop-type rules on the 2-ring: the segment is the three level-1
+    triangles of sector 0 away from the centre, each a quartic box-spline patch (Bézier form from
+    :mod:`.boxspline`); the outer boundary runs from level-1 (2,0) over (1,1) to (0,2)."""
+    from flint import arb, ctx
+
+    from .boxspline import SUBTRIANGLES, bezier_index
+
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        v = eigenvector(rules, n, lam_ball)
+        net = _TriNet(rules, n, v, lam_ball)
+        patches = [net.bezier_tri(*st) for st in SUBTRIANGLES[1:]]
+        jac = [_tri_jacobian(P) for P in patches]
+        sign = 1 if jac[0][0] > 0 else (-1 if jac[0][0] < 0 else 0)
+        pieces, regular = 0, sign != 0
+        for J in jac:
+            if not regular:
+                break
+            ok, k = _tri_sign_certified(J, sign)
+            pieces += k
+            regular = regular and ok
+        i4 = bezier_index(4)
+        edge = [(0, 4 - t, t) for t in range(5)]                 # from vertex 1 to vertex 2
+        curve = [[patches[0][i4.index(e)] for e in edge], [patches[1][i4.index(e)] for e in edge]]
+        return _verdict(regular, sign, pieces, curve, n, prec, arb,
+                        "quartic box-spline (Bézier) patches of the segment; Arb Bernstein bounds of the "
+                        "Jacobian; winding number of the outer boundary")
     finally:
         ctx.prec = old

@@ -8,8 +8,8 @@ subdominant eigenvalue is chosen by its Arb value at each valence of the range, 
 in lambda's isolating ball (so the formula *is* lambda there, not a float match).
 
 C^1: the eigen-conditions are necessary ingredients, not a proof. With them and a certified regular and
-injective characteristic map (:mod:`.charmap`, quad schemes on the 2-ring) the verdict is certified
-C^1 (Reif 1995); without the characteristic map (Loop, Doo–Sabin, triangle rules: not implemented) it is
+injective characteristic map (:mod:`.charmap`: quad and triangle rules on the 2-ring) the verdict is
+certified C^1 (Reif 1995); without the characteristic map (Doo–Sabin, the 1-ring) it is
 "inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
 (certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
 surface is not C^1.
@@ -189,8 +189,9 @@ def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict
 
 
 def has_characteristic_map(rules: LocalRules) -> bool:
-    """Whether the characteristic map is checked for these rules (quad lattice, 2-ring: bicubic patches)."""
-    return rules.lattice == "quad" and rules.ring == 2
+    """Whether the characteristic map is checked for these rules (2-ring of the quad lattice: bicubic patches;
+    of the triangle lattice: Loop's quartic box-spline patches)."""
+    return rules.lattice in ("quad", "triangle") and rules.ring == 2
 
 
 def parse_valences(text: str) -> list[int]:
