@@ -166,12 +166,14 @@ def test_valence_ranges_parse_and_refuse():
 
 def test_c1_is_certified_only_with_the_characteristic_map():
     e = valence_entry(scheme_rules("catmull-clark", ring=2), 5, closed_form_lambda(scheme_rules("catmull-clark")))
-    assert e["reif"]["status"] == "certified" and e["lambda"]["closed_form_checked"]
-    assert e["c1"]["status"] == "certified" and e["characteristic_map"]["injective"]
+    assert e["reif"]["status"] == "certified" and e["lambda"]["witness"]["closed_form_checked"]
+    assert sp.Rational(e["lambda"]["lower"]) < sp.Rational(e["lambda"]["upper"])
+    assert e["c1"]["status"] == "certified" and e["characteristic_map"]["value"] is True
     for rules in (scheme_rules("loop", ring=1, n=5), scheme_rules("doo-sabin")):
         e = valence_entry(rules, 5)
         assert e["reif"]["status"] == "certified" and "characteristic_map" not in e
-        assert e["c1"]["status"] == "inconclusive" and "characteristic map not checked" in e["c1"]["verdict"]
+        assert e["c1"]["status"] == "inconclusive" and e["c1"]["value"] is None
+        assert "characteristic map not checked" in e["c1"]["witness"]["verdict"]
 
 
 def test_loop_patch_bezier_form_has_linear_precision():

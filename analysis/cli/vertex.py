@@ -61,31 +61,31 @@ def _rules(args, n: int | None):
 def _line(e: dict) -> str:
     n = e["n"]
     if "lambda" not in e:
-        return f"n={n:<3d} {e['reif'].get('reason', 'not decided')}  [inconclusive]"
+        return f"n={n:<3d} {e['reif']['witness'].get('reason') or 'not decided'}  [inconclusive]"
     lam = e["lambda"]
-    exact = lam["exact"] or f"root of {lam['polynomial']}"
-    parts = [f"n={n:<3d} lambda = {exact} ~ {lam['float']:.10f}"]
-    if "mu" in e:
-        cmp = e["curvature"]["mu_vs_lambda2"]
-        rel = {"<": "< lambda^2", "=": "= lambda^2", ">": "> lambda^2"}.get(cmp, "vs lambda^2 undecided")
-        parts.append(f"mu ~ {e['mu']['float']:.10f} ({rel}, block {e['mu']['block']})")
-    if "separation" in e:
-        parts.append(f"gap >= {e['separation']['lower']:.3g}")
-    r = e["reif"]
-    parts.append("Reif: " + ("holds" if r["holds"] else ("fails: " + r["reason"]) if r["status"] == "certified"
-                             else "undecided") + f" [{r['status']}]")
+    exact = lam["value"] or f"root of {lam['witness']['polynomial']}"
+    parts = [f"n={n:<3d} lambda = {exact} ~ {lam['witness']['float']:.10f}"]
     cv = e["curvature"]
-    parts.append(f"curvature: {cv['behaviour']} [{cv['status']}]")
-    parts.append(f"C^1: {e['c1']['verdict']} [{e['c1']['status']}]")
+    if "mu" in e:
+        cmp = cv["witness"]["mu_vs_lambda2"]
+        rel = {"<": "< lambda^2", "=": "= lambda^2", ">": "> lambda^2"}.get(cmp, "vs lambda^2 undecided")
+        parts.append(f"mu ~ {e['mu']['witness']['float']:.10f} ({rel}, block {e['mu']['witness']['block']})")
+    if "separation" in e:
+        parts.append(f"gap >= {e['separation']['witness']['float']:.3g}")
+    r = e["reif"]
+    parts.append("Reif: " + ("holds" if r["value"] else ("fails: " + r["witness"]["reason"]) if r["status"] == "certified"
+                             else "undecided") + f" [{r['status']}]")
+    parts.append(f"curvature: {cv['value']} [{cv['status']}]")
+    parts.append(f"C^1: {e['c1']['witness']['verdict']} [{e['c1']['status']}]")
     return "  ".join(parts)
 
 
 def _summary(name: str, closed: dict, entries: list[dict]) -> str:
     ns = [e["n"] for e in entries]
-    ok = [e["n"] for e in entries if e.get("reif", {}).get("holds")]
+    ok = [e["n"] for e in entries if e["reif"]["value"]]
     lines = []
     if closed.get("lambda"):
-        checked = [e["n"] for e in entries if e.get("lambda", {}).get("closed_form_checked")]
+        checked = [e["n"] for e in entries if e.get("lambda", {}).get("witness", {}).get("closed_form_checked")]
         lines.append(f"closed form: lambda(n) = {closed['lambda']}, c = cos(2*pi/n) (a root of block 1 for "
                      f"n >= {closed['valid_from']}; its Arb value lies in lambda's isolating ball at "
                      f"{len(checked)} of {len(ns)} valences)")
@@ -95,7 +95,7 @@ def _summary(name: str, closed: dict, entries: list[dict]) -> str:
                  + ("" if len(ok) == len(ns) else f" (not at {_ranges([n for n in ns if n not in ok])})"))
     by: dict[str, list[int]] = {}
     for e in entries:
-        by.setdefault(e.get("curvature", {}).get("behaviour", "inconclusive"), []).append(e["n"])
+        by.setdefault(e.get("curvature", {}).get("value", "inconclusive"), []).append(e["n"])
     lines.append("curvature: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in by.items()))
     c1: dict[str, list[int]] = {}
     for e in entries:

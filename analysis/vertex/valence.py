@@ -34,7 +34,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError
+from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
 from .spectrum import VertexAnalysis, analyse
@@ -142,49 +142,76 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str
     return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
 
 
-def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Any]:
-    """Everything the command prints for one valence, JSON-ready (sympy values as text)."""
+def _q(x) -> sp.Rational:
+    """The exact rational value of an Arb endpoint (a binary floating-point number)."""
+    man, exp = x.mid().man_exp()
+    return sp.Integer(int(man)) * sp.Integer(2) ** int(exp)
+
+
+def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Result]:
+    """The results at valence n (the results contract: value or enclosure, status, witness, provenance):
+    ``lambda`` (exact value and certified enclosure), ``separation`` (certified lower bound of lambda - max
+    |others|), ``mu`` (enclosure of the subsubdominant modulus), ``reif`` (the eigen-conditions),
+    ``curvature``, ``characteristic_map`` (quad/triangle rules on the 2-ring) and ``c1``."""
     a = analyse(rules, n)
+    prov = {"method": "Fourier blocks of the local subdivision matrix; FLINT exact roots or Arb isolation",
+            "precision_bits": a.prec, "valence": n, "rules": rules.source, "ring": rules.ring}
+    out: dict[str, Result] = {}
     lam_e = a.lam
-    entry: dict[str, Any] = {"n": n, "matrix_size": len(rules.points) * n + (1 if rules.centre else 0),
-                             "precision_bits": a.prec}
     if lam_e is None:
-        entry.update({"reif": {"status": INCONCLUSIVE, "reason": a.reif_reason}})
-        entry["c1"] = {"status": INCONCLUSIVE, "verdict": "inconclusive: eigenvalues not isolated"}
-        return entry
-    lam_mid = float(lam_e.ball.real.mid())
-    entry["lambda"] = {"exact": str(a.lam_exact) if a.lam_exact is not None else None,
-                       "polynomial": str(lam_e.factor.as_expr().subs(C1, sp.Symbol("c1"))),
-                       "block": 1, "float": lam_mid, "ball": str(lam_e.ball.real) if lam_e.real else str(lam_e.ball),
-                       "status": CERTIFIED if lam_e.real else INCONCLUSIVE}
+        out["reif"] = Result(value=None, status=INCONCLUSIVE, witness={"reason": a.reif_reason}, provenance=prov)
+        out["c1"] = Result(value=None, status=INCONCLUSIVE,
+                           witness={"verdict": "inconclusive: eigenvalues not isolated"}, provenance=prov)
+        return out
+    ball = lam_e.ball.real
+    wit = {"block": 1, "polynomial": str(lam_e.factor.as_expr().subs(C1, sp.Symbol("c1"))),
+           "ball": str(ball) if lam_e.real else str(lam_e.ball), "float": float(ball.mid()),
+           "c": f"cos(2*pi/{n})"}
     if closed and closed.get("expr") is not None and n >= closed["valid_from"]:
         v = arb_value(closed["expr"], n, max(a.prec, 128))
-        entry["lambda"]["closed_form_checked"] = bool(v is not None and lam_e.ball.real.overlaps(v)
-                                                      and lam_e.ball.real.rad() < 1e-6)
+        wit["closed_form"] = closed["lambda"]
+        wit["closed_form_checked"] = bool(v is not None and ball.overlaps(v) and ball.rad() < 1e-6)
+    out["lambda"] = Result(value=a.lam_exact, lower=_q(ball.lower()), upper=_q(ball.upper()),
+                           status=CERTIFIED if lam_e.real else INCONCLUSIVE, witness=wit, provenance=prov)
     if a.separation is not None:
-        entry["separation"] = {"lower": float(a.separation.lower()), "ball": str(a.separation),
-                               "status": CERTIFIED if a.separation > 0 else INCONCLUSIVE}
+        out["separation"] = Result(lower=_q(a.separation.lower()),
+                                   status=CERTIFIED if a.separation > 0 else INCONCLUSIVE,
+                                   witness={"ball": str(a.separation), "float": float(a.separation.lower())},
+                                   provenance=prov)
     if a.mu is not None:
-        m = a.mu
-        entry["mu"] = {"float": float(m.modulus.mid()), "block": m.k, "ball": str(m.modulus),
-                       "real": bool(m.real)}
-    entry["reif"] = {"status": a.reif_status, "holds": a.reif_ok, "checks": dict(a.checks),
-                     "reason": a.reif_reason}
-    entry["curvature"] = {"mu_vs_lambda2": a.mu_vs_lam2, "behaviour": a.curvature,
-                          "status": a.curvature_status, "text": CURVATURE_TEXT[a.curvature]}
+        m = a.mu.modulus
+        out["mu"] = Result(lower=_q(m.lower()), upper=_q(m.upper()), status=CERTIFIED,
+                           witness={"block": a.mu.k, "ball": str(m), "float": float(m.mid()), "real": bool(a.mu.real),
+                                    "polynomial": str(a.mu.factor.as_expr().subs(C1, sp.Symbol("c1")))},
+                           provenance=prov)
+    out["reif"] = Result(value=a.reif_ok, status=a.reif_status,
+                         witness={"checks": dict(a.checks), "reason": a.reif_reason}, provenance=prov)
+    out["curvature"] = Result(value=a.curvature, status=a.curvature_status,
+                              witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature],
+                                       "notes": list(a.notes)}, provenance=prov)
     cm = None
     if a.reif_ok and has_characteristic_map(rules):
         from .charmap import characteristic_map
 
         for prec in (128, 256):
-            cm = characteristic_map(rules, n, lam_e.ball.real, prec)
+            cm = characteristic_map(rules, n, ball, prec)
             if cm["status"] != INCONCLUSIVE:
                 break
-        entry["characteristic_map"] = cm
+        out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
+                                           witness={k: v for k, v in cm.items() if k not in ("status", "method")},
+                                           provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
     status, verdict = c1_verdict(a, cm)
-    entry["c1"] = {"status": status, "verdict": verdict}
-    if a.notes:
-        entry["notes"] = list(a.notes)
+    out["c1"] = Result(value={CERTIFIED: True, REFUTED: False}.get(status), status=status,
+                       witness={"verdict": verdict}, provenance=prov)
+    return out
+
+
+def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Any]:
+    """The results at valence n as one JSON-ready document: ``n``, ``matrix_size`` and each result of
+    :func:`vertex_results` as :meth:`Result.to_json`."""
+    res = vertex_results(rules, n, closed)
+    entry: dict[str, Any] = {"n": n, "matrix_size": len(rules.points) * n + (1 if rules.centre else 0)}
+    entry.update({k: r.to_json() for k, r in res.items()})
     return entry
 
 
