@@ -228,16 +228,20 @@ def parse_valences(text: str) -> list[int]:
     ([3, 4, 5, 6], [4, 7])
     """
     t = str(text).strip()
+    if len(t) > 2000:
+        raise AnalysisError("--valence is too long: give N, LO..HI or N1,N2,... (e.g. --valence 3..12)")
     try:
         if ".." in t:
             lo, hi = (int(x) for x in t.split(".."))
+            if lo < 3 or hi > MAX_VALENCE:
+                raise AnalysisError(f"valences must lie in 3..{MAX_VALENCE}")
             vals = list(range(lo, hi + 1))
         else:
             vals = [int(x) for x in t.split(",") if x.strip()]
     except ValueError:
-        raise AnalysisError(f"--valence takes N, LO..HI or N1,N2,...; not {t!r} (e.g. --valence 3..12)") from None
+        raise AnalysisError(f"--valence takes N, LO..HI or N1,N2,...; not {t[:40]!r} (e.g. --valence 3..12)") from None
     if not vals:
-        raise AnalysisError(f"--valence {t!r} is empty: give e.g. --valence 3..12")
+        raise AnalysisError(f"--valence {t[:40]!r} is empty: give e.g. --valence 3..12")
     if min(vals) < 3 or max(vals) > MAX_VALENCE:
         raise AnalysisError(f"valences must lie in 3..{MAX_VALENCE}")
     return vals
