@@ -7,7 +7,8 @@ Literature values (each with its source) are checks of the computation, never in
   ch. 6); Catmull–Clark: (c + 5 + sqrt((c + 9)(c + 1)))/16, c = cos(2 pi/n) (Stam 1998; Peters–Reif 2008);
   Doo–Sabin: 1/2 and 1/4 on the n-gon (Doo–Sabin 1978).
 * Curvature (Karčiauskas–Peters–Reif, Shape characterization of subdivision surfaces — case studies,
-  CAGD 21 (2004); Peters–Reif 2008, ch. 7): Catmull–Clark has mu > lambda^2 (unbounded curvature) for
+  CAGD 21 (2004); Peters–Reif 2008, ch. 7; the statements as we read them, to be re-checked against the
+  papers' tables when they are at hand): Catmull–Clark has mu > lambda^2 (unbounded curvature) for
   n >= 5 and a flat spot (mu < lambda^2) at n = 3; Loop has mu > lambda^2 for n >= 7 (the block-2
   eigenvalue 3/8 + cos(4 pi/n)/4) and at n = 3 (the 2-ring eigenvalue 1/8 > 1/16 = lambda^2), while Loop's
   beta_n makes the block-0 eigenvalue equal lambda^2 (bounded curvature at n = 4, 5).
