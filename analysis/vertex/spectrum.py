@@ -41,7 +41,6 @@ from functools import lru_cache
 
 import sympy as sp
 
-from ..result import AnalysisError
 from .blocks import block_charpoly, c, cos_minimal_polynomial, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
 
@@ -244,15 +243,10 @@ def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n
     return True if meets == [mu] else None
 
 
-def _lam_sq(lam_ball, sign: int):
-    return lam_ball.real * lam_ball.real * sign
-
-
 def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis:
-    """The certified eigen-structure at valence n (see the module docstring)."""
-    from flint import arb
-
-    eig = None
+    """The certified eigen-structure at valence n (see the module docstring), at the first precision of
+    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided."""
+    eig, res = None, None
     for prec in PRECISIONS:
         if prec > max_prec:
             break
@@ -262,11 +256,10 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
         res = _check(rules, n, eig, prec)
         if res.reif_status != "inconclusive" and res.curvature_status != "inconclusive":
             return res
-    if eig is None:
+    if res is None:
         a = VertexAnalysis(n, rules.name, [], None, None, None, prec=max_prec)
         a.reif_reason = f"a block's characteristic polynomial could not be isolated at {max_prec} bits"
         return a
-    _ = arb
     return res
 
 
@@ -291,8 +284,6 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
     top = max(b1, key=lambda e: e.modulus.upper())
     a.lam = top
     others = [e for e in eig if e is not top and not (one and e is one[0])]
-    lam_lo = top.modulus.lower()
-    max_other = max((e.modulus.upper() for e in others), default=arb(0))
     a.separation = top.modulus - max(((e.modulus for e in others)), key=lambda m: m.upper(), default=arb(0))
     real = top.real
     positive = real and top.ball.real > 0
@@ -325,7 +316,6 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
         else:
             a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
     a.lam_exact = _exact_root(top.factor, top.ball, n, 1)
-    _ = lam_lo, max_other
     _curvature(a, others, n)
     return a
 

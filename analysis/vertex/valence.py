@@ -53,8 +53,6 @@ CURVATURE_TEXT = {
 def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
     """The roots of block 1's characteristic polynomial with n symbolic, by factors of degree <= 2;
     ``lambda`` is the one that gives the largest value at n = 7 (checked per valence by :func:`valence_entry`)."""
-    from flint import arb
-
     N0 = max(special_frequencies(rules) | {0}) + 2
     P = block_charpoly(fourier_block(rules, 1, None))
     P = sp.expand(P.subs(C1, c))               # in block 1, c = C1 = cos(2 pi/n)
