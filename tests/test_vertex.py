@@ -69,8 +69,7 @@ def test_loop_eigen_conditions_certified(n):
 # (scheme, n): mu against lambda^2, as the literature states it (module docstring)
 CURVATURE = {("loop", 3): ">", ("loop", 4): "=", ("loop", 5): "=", ("loop", 6): "=", ("loop", 7): ">",
              ("loop", 10): ">", ("catmull-clark", 3): "<", ("catmull-clark", 4): "=",
-             ("catmull-clark", 5): ">", ("catmull-clark", 6): ">", ("catmull-clark", 7): ">",
-             ("doo-sabin", 5): "="}
+             ("catmull-clark", 5): ">", ("catmull-clark", 6): ">", ("catmull-clark", 7): ">"}
 
 
 @pytest.mark.parametrize("key", sorted(CURVATURE), ids=[f"{s}-{n}" for s, n in sorted(CURVATURE)])
@@ -79,6 +78,13 @@ def test_curvature_behaviour_matches_the_literature(key):
     a = analyse(scheme_rules(name, ring=2, n=n), n)
     assert a.reif_ok
     assert (a.mu_vs_lam2, a.curvature_status) == (CURVATURE[key], "certified")
+
+
+def test_doo_sabin_curvature_is_not_claimed():
+    """mu = lambda^2 = 1/4 at every valence, but the biquadratic regular part is only C^1."""
+    e = valence_entry(scheme_rules("doo-sabin"), 5)
+    assert e["curvature"]["value"] == "not applicable" and e["curvature"]["status"] == "inconclusive"
+    assert e["curvature"]["witness"]["mu_vs_lambda2"] == "="
 
 
 def test_catmull_clark_subsubdominant_is_block_2_from_valence_5():
@@ -170,7 +176,7 @@ def test_c1_is_certified_only_with_the_characteristic_map():
     assert e["reif"]["status"] == "certified" and e["lambda"]["witness"]["closed_form_checked"]
     assert sp.Rational(e["lambda"]["lower"]) < sp.Rational(e["lambda"]["upper"])
     assert e["c1"]["status"] == "certified" and e["characteristic_map"]["value"] is True
-    for rules in (scheme_rules("loop", ring=1, n=5), scheme_rules("doo-sabin")):
+    for rules in (scheme_rules("loop", ring=1, n=5), scheme_rules("catmull-clark", ring=1)):
         e = valence_entry(rules, 5)
         assert e["reif"]["status"] == "certified" and "characteristic_map" not in e
         assert e["c1"]["status"] == "inconclusive" and e["c1"]["value"] is None
@@ -187,6 +193,20 @@ def test_loop_patch_bezier_form_has_linear_precision():
     ys = G * sp.Matrix([p[1] for p in NET])
     assert list(xs) == [sp.Rational(j, 4) for _, j, _ in BEZIER_INDEX]
     assert list(ys) == [sp.Rational(k, 4) for _, _, k in BEZIER_INDEX]
+
+
+def test_doo_sabin_characteristic_map_is_affine_at_the_regular_valence_and_certified_at_3():
+    from flint import arb
+
+    from analysis.vertex.charmap import SEGMENT, _DualNet, _jacobian_bernstein_2, characteristic_map, eigenvector
+
+    rules = scheme_rules("doo-sabin")
+    net = _DualNet(rules, 4, eigenvector(rules, 4, arb(1) / 2), arb(1) / 2)
+    for a, b in SEGMENT:
+        assert all(x.overlaps(arb(1) / 2) and x.rad() < 1e-12 for row in _jacobian_bernstein_2(net.bezier_dual(a, b))
+                   for x in row)
+    r = characteristic_map(rules, 3)
+    assert (r["status"], r["regular"], r["winding_number"]) == ("certified", True, 1)
 
 
 @pytest.mark.parametrize("n", [3, 7])

@@ -1,5 +1,6 @@
-"""The characteristic map of a Catmull–Clark-type scheme (bicubic B-spline regular part), certified
-regular and injective with Arb balls.
+"""The characteristic map, certified regular and injective with Arb balls: Catmull–Clark-type rules
+(bicubic patches), Loop-type rules (quartic box-spline patches, :mod:`.boxspline`) and Doo–Sabin
+(biquadratic patches on the dual lattice).
 
 The characteristic map is the limit of the planar control net given by the subdominant eigenvector:
 with ``v`` the eigenvector of Fourier block 1 for lambda (normalised ``v_e = 1``), sector j of the net
@@ -261,9 +262,15 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128
     winding number of the wrong value: not injective) or inconclusive."""
     from flint import arb, ctx
 
+    if rules.lattice == "dual quad":
+        if lam_ball is None:
+            from .spectrum import analyse
+
+            lam_ball = analyse(rules, n).lam.ball.real
+        return characteristic_map_doo_sabin(rules, n, lam_ball, prec)
     if rules.lattice not in ("quad", "triangle") or rules.ring != 2:
         raise AnalysisError("the characteristic map is checked for quad (bicubic) and triangle (Loop box-spline) "
-                            "rules on the 2-ring")
+                            "rules on the 2-ring, and for Doo-Sabin")
     if lam_ball is None:
         from .spectrum import analyse
 
@@ -410,5 +417,121 @@ def characteristic_map_triangle(rules: LocalRules, n: int, lam_ball, prec: int =
         return _verdict(regular, sign, pieces, curve, n, prec, arb,
                         "quartic box-spline (Bézier) patches of the segment; Arb Bernstein bounds of the "
                         "Jacobian; winding number of the outer boundary")
+    finally:
+        ctx.prec = old
+
+
+# --------------------------------------------------------------------------------------------------
+# Doo–Sabin at an n-gon: biquadratic patches on the dual lattice
+
+def _dual_home(x: int, y: int) -> tuple[int, int, int]:
+    """Sector offset and doubled coordinates (odd integers, x > 0, y > 0) of the dual-lattice point
+    (x/2, y/2) of sector 0 (rotation by one sector: (x, y) -> (y, -x) in the next sector)."""
+    d = 0
+    while not (x > 0 and y > 0):
+        if y < 0:
+            x, y, d = -y, x, d - 1
+        else:
+            x, y, d = y, -x, d + 1
+    return d, x, y
+
+
+#: Doo–Sabin's sector points (p, a, b, c) at doubled dual coordinates: point index and the sector offset
+#: of the rules' point that sits there (b of sector j - 1 lies in sector j's quadrant)
+_DS_COORDS = {(1, 1): (0, 0), (1, 3): (1, 0), (3, 1): (2, -1), (3, 3): (3, 0)}
+
+
+class _DualNet(_Net):
+    """The characteristic net of Doo–Sabin: level-1 points of the 4n set are lambda v; the others come
+    from the regular rule of a quad (9/16, 3/16, 3/16, 1/16) on level-0 points."""
+
+    def __init__(self, rules: LocalRules, n: int, v: list, lam_ball):
+        super().__init__(rules, n, v, lam_ball)
+
+    def _value(self, x, y, scale):
+        d, hx, hy = _dual_home(x, y)
+        if (hx, hy) not in _DS_COORDS:
+            return None, d, (hx, hy)
+        p, off = _DS_COORDS[(hx, hy)]
+        return scale * self.rot[(d + off) % self.n] * self.v[p], d, (hx, hy)
+
+    def level0(self, x, y):
+        val, _, h = self._value(x, y, 1)
+        if val is None:
+            raise AnalysisError(f"level-0 point {h} is outside the rings")
+        return val
+
+    def level1(self, X, Y):
+        val, d, (hx, hy) = self._value(X, Y, self.lam)
+        if val is not None:
+            return val
+        if (hx, hy) not in self.cache:
+            self.cache[(hx, hy)] = self._regular(hx, hy)
+        return self.rot[d % self.n] * self.cache[(hx, hy)]
+
+    def _regular(self, X, Y):
+        from flint import acb
+
+        # level-1 point (X/2, Y/2) lies in the level-0 dual face around the primal vertex (i, k), near its
+        # corner (i + s/2, k + t/2); level-0 points in doubled coordinates
+        i, k = round(X / 4), round(Y / 4)
+        s = 1 if X > 4 * i else -1
+        t = 1 if Y > 4 * k else -1
+        P = lambda a, b: self.level0(2 * i + a, 2 * k + b)      # noqa: E731
+        return (acb(9) / 16 * P(s, t) + acb(3) / 16 * (P(-s, t) + P(s, -t)) + acb(1) / 16 * P(-s, -t))
+
+    def bezier_dual(self, a: int, b: int) -> list[list]:
+        """The 3 x 3 Bézier net of the level-1 primal square [a, a+1] x [b, b+1] (index [i][j], i along x)."""
+        Q = [[self.level1(2 * a - 1 + 2 * i, 2 * b - 1 + 2 * j) for j in range(3)] for i in range(3)]
+        T = ((1, 1, 0), (0, 2, 0), (0, 1, 1))                       # quadratic B-spline -> Bézier, halves
+        rows = [[sum((Q[i][j] * T[r][i] for i in range(3)), 0 * Q[0][0]) / 2 for j in range(3)] for r in range(3)]
+        return [[sum((rows[r][j] * T[s][j] for j in range(3)), 0 * Q[0][0]) / 2 for s in range(3)] for r in range(3)]
+
+
+def _jacobian_bernstein_2(Bz: list[list]) -> list[list]:
+    """Bernstein coefficients (degree 3 x 3) of Im(conj(F_u) F_v) for a biquadratic Bézier net."""
+    Fu = [[2 * (Bz[i + 1][j] - Bz[i][j]) for j in range(3)] for i in range(2)]     # degree (1, 2)
+    Fv = [[2 * (Bz[i][j + 1] - Bz[i][j]) for j in range(2)] for i in range(3)]     # degree (2, 1)
+    out = [[None] * 4 for _ in range(4)]
+    for k in range(4):
+        for l_ in range(4):
+            s = None
+            for i in range(max(0, k - 2), min(1, k) + 1):
+                ii = k - i
+                for j in range(max(0, l_ - 1), min(2, l_) + 1):
+                    jj = l_ - j
+                    wgt = comb(1, i) * comb(2, ii) * comb(2, j) * comb(1, jj)
+                    t = (Fu[i][j].conjugate() * Fv[ii][jj]).imag * wgt
+                    s = t if s is None else s + t
+            out[k][l_] = s / (comb(3, k) * comb(3, l_))
+    return out
+
+
+def characteristic_map_doo_sabin(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
+    """As :func:`characteristic_map` for Doo–Sabin at an n-gon: the segment is the three level-1 squares
+    [1,2]x[0,1], [1,2]x[1,2], [0,1]x[1,2] (primal lattice, sector 0), each a biquadratic patch."""
+    from flint import arb, ctx
+
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        v = eigenvector(rules, n, lam_ball)
+        net = _DualNet(rules, n, v, lam_ball)
+        patches = [net.bezier_dual(a, b) for a, b in SEGMENT]
+        jac = [_jacobian_bernstein_2(P) for P in patches]
+        sign = 1 if jac[0][0][0] > 0 else (-1 if jac[0][0][0] < 0 else 0)
+        pieces, regular = 0, sign != 0
+        for J in jac:
+            if not regular:
+                break
+            ok, k = _sign_certified(J, sign)
+            pieces += k
+            regular = regular and ok
+        A, Bq, C = patches
+        curve = [[A[2][j] for j in range(3)], [Bq[2][j] for j in range(3)],
+                 [Bq[2 - i][2] for i in range(3)], [C[2 - i][2] for i in range(3)]]
+        return _verdict(regular, sign, pieces, curve, n, prec, arb,
+                        "biquadratic Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
+                        "winding number of the outer boundary")
     finally:
         ctx.prec = old

@@ -9,7 +9,7 @@ in lambda's isolating ball (so the formula *is* lambda there, not a float match)
 
 C^1: the eigen-conditions are necessary ingredients, not a proof. With them and a certified regular and
 injective characteristic map (:mod:`.charmap`: quad and triangle rules on the 2-ring) the verdict is
-certified C^1 (Reif 1995); without the characteristic map (Doo–Sabin, the 1-ring) it is
+certified C^1 (Reif 1995); without the characteristic map (rules on the 1-ring) it is
 "inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
 (certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
 surface is not C^1.
@@ -47,6 +47,7 @@ CURVATURE_TEXT = {
     "bounded": "curvature bounded (mu = lambda^2)",
     "unbounded": "curvature unbounded for generic data (mu > lambda^2)",
     "inconclusive": "curvature behaviour not decided",
+    "not applicable": "the regular part is only C^1 (biquadratic): the curvature criterion needs a C^2 regular part",
 }
 
 
@@ -184,9 +185,14 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
                            provenance=prov)
     out["reif"] = Result(value=a.reif_ok, status=a.reif_status,
                          witness={"checks": dict(a.checks), "reason": a.reif_reason}, provenance=prov)
-    out["curvature"] = Result(value=a.curvature, status=a.curvature_status,
-                              witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature],
-                                       "notes": list(a.notes)}, provenance=prov)
+    if rules.lattice == "dual quad":
+        out["curvature"] = Result(value="not applicable", status=INCONCLUSIVE,
+                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT["not applicable"],
+                                           "notes": list(a.notes)}, provenance=prov)
+    else:
+        out["curvature"] = Result(value=a.curvature, status=a.curvature_status,
+                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature],
+                                           "notes": list(a.notes)}, provenance=prov)
     cm = None
     if a.reif_ok and has_characteristic_map(rules):
         from .charmap import characteristic_map
@@ -215,8 +221,8 @@ def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict
 
 def has_characteristic_map(rules: LocalRules) -> bool:
     """Whether the characteristic map is checked for these rules (2-ring of the quad lattice: bicubic patches;
-    of the triangle lattice: Loop's quartic box-spline patches)."""
-    return rules.lattice in ("quad", "triangle") and rules.ring == 2
+    of the triangle lattice: Loop's quartic box-spline patches; Doo–Sabin: biquadratic patches)."""
+    return rules.lattice == "dual quad" or (rules.lattice in ("quad", "triangle") and rules.ring == 2)
 
 
 def parse_valences(text: str) -> list[int]:
