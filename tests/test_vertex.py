@@ -275,3 +275,13 @@ def test_docs_examples_print_what_the_docs_show(argv, expected, capsys):
     cap = capsys.readouterr()
     assert (cap.out + cap.err).rstrip("\n") == expected
     assert code == (2 if expected.startswith("subdiv: error") else 0)
+
+
+def test_block_0_is_evaluated_at_w_1_for_any_centre_weights():
+    """Regression: block 0 was a polynomial in w before w = 1 was set, and a centre rule that made it
+    asymmetric in w was refused as 'not mirror-symmetric'."""
+    rules = user_rules("quad", "1/n**2, 1/n**2", ring=1)
+    assert not fourier_block(rules, 0, 3).has(sp.Symbol("w"))
+    S = local_matrix(rules, 4)
+    assert sp.expand(S.charpoly(lam).as_expr()) == _block_product(rules, 4)
+    assert analyse(rules, 3).reif_ok

@@ -105,6 +105,8 @@ def fourier_block(rules: LocalRules, k: int, n: int | None) -> sp.Matrix:
                 continue
             p, d = t.source
             B[off + q, off + p] += _all_sum(t.weight, k, n) if d == ALL else t.weight * w ** d
+    if k == 0:                                 # w = exp(0) = 1: block 0 is a matrix of numbers
+        B = B.subs(w, 1)
     return B.subs(n_sym, nn).applyfunc(sp.expand)
 
 
