@@ -63,7 +63,7 @@ def _line(e: dict) -> str:
     if "lambda" not in e:
         return f"n={n:<3d} {e['reif']['witness'].get('reason') or 'not decided'}  [inconclusive]"
     lam = e["lambda"]
-    exact = lam["value"] or f"root of {lam['witness']['polynomial']}"
+    exact = lam["value"] if lam["value"] is not None else f"root of {lam['witness']['polynomial']}"
     parts = [f"n={n:<3d} lambda = {exact} ~ {lam['witness']['float']:.10f}"]
     cv = e["curvature"]
     if "mu" in e:
