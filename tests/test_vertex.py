@@ -285,3 +285,13 @@ def test_block_0_is_evaluated_at_w_1_for_any_centre_weights():
     S = local_matrix(rules, 4)
     assert sp.expand(S.charpoly(lam).as_expr()) == _block_product(rules, 4)
     assert analyse(rules, 3).reif_ok
+
+
+def test_cli_vertex_figure(tmp_path, capsys):
+    from analysis.cli.main import main
+
+    path = tmp_path / "spectrum.png"
+    assert main(["vertex", "--scheme", "loop", "--valence", "4..5", "--ring", "1", "--figure", str(path)]) == 0
+    assert path.stat().st_size > 0 and capsys.readouterr().out.rstrip().endswith(f"figure: {path}")
+    assert main(["vertex", "--scheme", "loop", "--valence", "4", "--figure", str(tmp_path / "x.txt")]) == 2
+    assert "not an image format" in capsys.readouterr().err

@@ -38,6 +38,8 @@ def register(subparsers) -> None:
                    help="valences (default 3..12; at most 200)")
     s.add_argument("--ring", default="2", choices=("1", "2"),
                    help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1")
+    s.add_argument("--figure", metavar="FILE.png",
+                   help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_vertex)
 
@@ -125,9 +127,11 @@ def cmd_vertex(args) -> None:
     import time
 
     from ..vertex.valence import closed_form_lambda, parse_valences, valence_entry
-    from .common import _emit, _print
+    from .common import _emit, _print, check_figure
 
     valences = parse_valences(args.valence)
+    if args.figure:
+        check_figure(args.figure, "--figure")
     base = _rules(args, None)
     closed = closed_form_lambda(base)
     entries = []
@@ -144,7 +148,13 @@ def cmd_vertex(args) -> None:
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
                       "(checked for quad rules on the 2-ring); otherwise the verdict is inconclusive"}
+    if args.figure:
+        from ..report.vertex_plots import plot_vertex_spectrum
+
+        doc["figure"] = plot_vertex_spectrum(entries, args.figure, name)
     if args.json:
         _emit(args, doc, "")
     else:
         _print(_summary(name, closed, entries))
+        if args.figure:
+            _print(f"figure: {args.figure}")
