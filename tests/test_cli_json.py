@@ -99,6 +99,8 @@ CASES = {
                   lambda d: d["wrote"].endswith("p.toml") and "smoothness profile" in d["kinds"]),
     "derive": (["derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1"],
                lambda d: d["dimension"] == 1 and d["status"] == "certified"),
+    "vertex": (["vertex", "--scheme", "loop", "--valence", "4", "--ring", "1"],
+               lambda d: d["valences"][0]["reif"]["status"] == "certified" and d["closed_form"]["lambda"] == "c/4 + 3/8"),
 }
 
 

@@ -106,6 +106,8 @@ TARGETS = [
     ["bound", "--lhs", "1/2**n", "--rhs", "{}"],
     ["reproduce", "--scheme", "exp-bspline-3-trig", "--param", "theta=1", "--lambdas", "{}"],
     ["derive", "--support", "{}", "--sum-rules", "2"],
+    ["vertex", "--lattice", "triangle", "--centre", "{}", "--valence", "4", "--ring", "1"],
+    ["vertex", "--scheme", "loop", "--valence", "{}", "--ring", "1"],
 ]
 
 

@@ -69,8 +69,8 @@ def loaded(mods: set[str], roots) -> list[str]:
 
 
 @pytest.mark.parametrize("argv", [["--help"], ["holder", "--help"], ["range", "--help"], ["list"],
-                                  ["list", "--numeric", "--mary", "--json"], ["--version"]],
-                         ids=["help", "holder-help", "range-help", "list", "list-all", "version"])
+                                  ["list", "--numeric", "--mary", "--json"], ["--version"], ["vertex", "--help"]],
+                         ids=["help", "holder-help", "range-help", "list", "list-all", "version", "vertex-help"])
 def test_help_and_list_import_no_heavy_library(argv):
     mods = imported(*argv)
     assert not loaded(mods, HEAVY), f"`subdiv {' '.join(argv)}` imports {loaded(mods, HEAVY)[:12]}"

@@ -51,7 +51,7 @@ class _VersionAction(argparse._VersionAction):
 
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
-                                     "analysis.cli.paperfile", "analysis.cli.derive")
+                                     "analysis.cli.paperfile", "analysis.cli.derive", "analysis.cli.vertex")
 
 
 #: one or two examples per command, shown at the end of ``subdiv COMMAND --help`` (the user guide, docs/,

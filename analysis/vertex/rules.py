@@ -1,0 +1,330 @@
+"""Local subdivision rules at a vertex of valence n, as data: a centre, n congruent sectors, and the
+rule of every new point in sector 0 as weights on old points.
+
+A rotationally symmetric rule set is given by
+
+* ``centre``: whether there is a centre point (the extraordinary vertex itself; Doo–Sabin has none:
+  its extraordinary element is an n-gon whose corners are sector points);
+* ``points``: the names of the points of one sector (sector j holds the j-th copy of each);
+* one rule per new point: a tuple of :class:`Term` — a weight on the centre, on point ``p`` of the
+  sector ``d`` steps further round (``d`` an integer, taken mod n), or on point ``p`` of *every*
+  sector j with a weight that depends on j through ``W = exp(2 pi i j / n)`` (a Laurent polynomial
+  in ``W``: ``cos(2 pi l j / n)`` is ``(W^l + W^-l)/2``).
+
+Weights are sympy expressions in the valence ``n`` and ``C1 = cos(2 pi / n)`` (Loop's beta_n).
+The catalogue rules are built from the regular stencils on the sector's lattice coordinates
+(:func:`triangle_rules`, :func:`quad_rules`), so that only the rule of the centre is typed in;
+:func:`user_rules` reads a user's centre and edge weights with :mod:`analysis.algebra.reader`.
+
+Examples
+--------
+>>> r = scheme_rules("loop", ring=1)
+>>> r.points, [str(t.weight) for t in r.rules[1]]
+(('e',), ['3/8', '3/8', '1/8', '1/8'])
+>>> len(scheme_rules("catmull-clark").points), len(scheme_rules("doo-sabin").points)
+(6, 4)
+
+References
+----------
+C. Loop, Smooth subdivision surfaces based on triangles, MS thesis, Utah, 1987 (rules, beta_n);
+J. Warren, H. Weimer, Subdivision Methods for Geometric Design, 2002 (beta = 3/(8n));
+E. Catmull, J. Clark, Recursively generated B-spline surfaces on arbitrary topological meshes, CAD 10
+(1978); D. Doo, M. Sabin, Behaviour of recursive division surfaces near extraordinary points, CAD 10
+(1978); J. Peters, U. Reif, Subdivision Surfaces, Springer 2008, ch. 4–6 (sectors, rings, Fourier
+blocks).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Mapping
+
+import sympy as sp
+
+from ..result import AnalysisError
+
+#: the valence and cos(2 pi / n), the symbols weights may use
+n_sym = sp.Symbol("n", positive=True, integer=True)
+C1 = sp.Symbol("C1")
+#: exp(2 pi i j / n) in a weight on every sector j
+W = sp.Symbol("W")
+CENTRE = "centre"
+ALL = "all"
+
+
+@dataclass(frozen=True)
+class Term:
+    """``weight`` times an old point: ``(CENTRE,)``, ``(p, d)`` (point p of sector i + d for the new point
+    of sector i) or ``(p, ALL)`` (every sector j, weight a Laurent polynomial in W = exp(2 pi i j/n))."""
+
+    weight: sp.Expr
+    source: tuple
+
+
+@dataclass(frozen=True)
+class LocalRules:
+    """The rules of one scheme near a vertex: ``rules[0]`` is the centre's (if ``centre``), then one
+    rule per sector point, in the order of ``points``."""
+
+    name: str
+    centre: bool
+    points: tuple[str, ...]
+    rules: tuple[tuple[Term, ...], ...]
+    lattice: str
+    ring: int
+    source: str
+    min_valence: int = 3
+    #: lattice coordinates (x, y) of the sector points in sector 0 (x >= 1, y >= 0), when on a lattice
+    coords: tuple = ()
+
+    @property
+    def size(self) -> str:
+        """The size of the local matrix as a formula in n."""
+        m = len(self.points)
+        return f"{m}n + 1" if self.centre else f"{m}n"
+
+    def sector_rules(self) -> tuple[tuple[Term, ...], ...]:
+        return self.rules[1:] if self.centre else self.rules
+
+    def check_valence(self, n: int) -> None:
+        if n < self.min_valence:
+            raise AnalysisError(f"valence {n} is below {self.min_valence}: give --valence 3..N")
+
+
+# --------------------------------------------------------------------------------------------------
+# lattices: sector coordinates, neighbours, the regular stencils
+
+def _tri_home(x: int, y: int) -> tuple[int, int, int]:
+    """Sector offset and coordinates of the triangular-lattice point ``x u + y v`` of sector 0
+    (u = e_0, v = e_1) in the sector that holds it (x >= 1, y >= 0)."""
+    d = 0
+    while (x, y) != (0, 0) and not (x >= 1 and y >= 0):
+        if y < 0:
+            x, y, d = -y, x + y, d - 1
+        else:
+            x, y, d = x + y, -x, d + 1
+    return d, x, y
+
+
+def _quad_home(x: int, y: int) -> tuple[int, int, int]:
+    d = 0
+    while (x, y) != (0, 0) and not (x >= 1 and y >= 0):
+        if y < 0:
+            x, y, d = -y, x, d - 1
+        else:
+            x, y, d = y, -x, d + 1
+    return d, x, y
+
+
+#: the six neighbour directions of the triangular lattice, in cyclic order
+_TRI_DIRS = ((1, 0), (0, 1), (-1, 1), (-1, 0), (0, -1), (1, -1))
+_QUAD_EDGE = ((1, 0), (0, 1), (-1, 0), (0, -1))
+_QUAD_DIAG = ((1, 1), (-1, 1), (-1, -1), (1, -1))
+
+
+def _stencil_terms(stencil, coords: Mapping[tuple[int, int], int], home, centre_rule) -> tuple[Term, ...]:
+    """Terms of a lattice stencil ``[(weight, (x2, y2)), ...]`` (doubled coordinates of level m)."""
+    out: dict[tuple, sp.Expr] = {}
+    for wgt, (x, y) in stencil:
+        d, hx, hy = home(x, y)
+        if (hx, hy) == (0, 0):
+            src = (CENTRE,)
+        elif (hx, hy) in coords:
+            src = (coords[(hx, hy)], d)
+        else:
+            raise AnalysisError(f"the rings are not closed under subdivision: point {(hx, hy)} is needed")
+        out[src] = out.get(src, sp.S.Zero) + wgt
+    return tuple(Term(w, s) for s, w in out.items())
+
+
+def triangle_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: str) -> LocalRules:
+    """Loop-type rules on the triangular lattice: the centre's rule given, every other new point by
+    Loop's regular stencils (edge 3/8, 3/8, 1/8, 1/8; vertex 5/8 and 1/16 on six neighbours)."""
+    sector = {1: [(1, 0)], 2: [(1, 0), (1, 1), (2, 0)]}[ring]
+    names = {(1, 0): "e", (1, 1): "a", (2, 0): "b"}
+    coords = {p: i for i, p in enumerate(sector)}
+    rules = [centre_rule]
+    for X, Y in sector:                       # new point at level m+1 = (X/2, Y/2) at level m
+        if X % 2 == 0 and Y % 2 == 0:
+            x, y = X // 2, Y // 2
+            st = [(sp.Rational(5, 8), (x, y))] + [(sp.Rational(1, 16), (x + dx, y + dy)) for dx, dy in _TRI_DIRS]
+        else:
+            i = next(i for i, (dx, dy) in enumerate(_TRI_DIRS) if (X - dx) % 2 == 0 and (Y - dy) % 2 == 0)
+            dx, dy = _TRI_DIRS[i]
+            p = ((X - dx) // 2, (Y - dy) // 2)
+            q = (p[0] + dx, p[1] + dy)
+            o1 = tuple(a + b for a, b in zip(p, _TRI_DIRS[(i - 1) % 6]))
+            o2 = tuple(a + b for a, b in zip(p, _TRI_DIRS[(i + 1) % 6]))
+            st = [(sp.Rational(3, 8), p), (sp.Rational(3, 8), q), (sp.Rational(1, 8), o1), (sp.Rational(1, 8), o2)]
+        rules.append(_stencil_terms(st, coords, _tri_home, centre_rule))
+    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "triangle", ring, source,
+                      coords=tuple(sector))
+
+
+def quad_rules(name: str, ring: int, centre_rule: tuple[Term, ...], source: str) -> LocalRules:
+    """Catmull–Clark-type rules on the square lattice: the centre's rule given, every other new point
+    by the bicubic B-spline stencils (face 1/4; edge 3/8, 3/8 and 1/16 on four; vertex 9/16, 3/32, 1/64)."""
+    sector = {1: [(1, 0), (1, 1)], 2: [(1, 0), (1, 1), (2, 0), (2, 1), (2, 2), (1, 2)]}[ring]
+    names = {(1, 0): "e", (1, 1): "f", (2, 0): "g", (2, 1): "h", (2, 2): "i", (1, 2): "l"}
+    coords = {p: i for i, p in enumerate(sector)}
+    rules = [centre_rule]
+    h = sp.Rational
+    for X, Y in sector:
+        if X % 2 == 0 and Y % 2 == 0:
+            x, y = X // 2, Y // 2
+            st = ([(h(9, 16), (x, y))] + [(h(3, 32), (x + a, y + b)) for a, b in _QUAD_EDGE]
+                  + [(h(1, 64), (x + a, y + b)) for a, b in _QUAD_DIAG])
+        elif X % 2 == 1 and Y % 2 == 1:
+            x, y = (X - 1) // 2, (Y - 1) // 2
+            st = [(h(1, 4), (x + a, y + b)) for a, b in ((0, 0), (1, 0), (0, 1), (1, 1))]
+        elif X % 2 == 1:                      # edge along x between (x, y) and (x+1, y)
+            x, y = (X - 1) // 2, Y // 2
+            st = ([(h(3, 8), (x, y)), (h(3, 8), (x + 1, y))]
+                  + [(h(1, 16), (x + a, y + b)) for a in (0, 1) for b in (-1, 1)])
+        else:
+            x, y = X // 2, (Y - 1) // 2
+            st = ([(h(3, 8), (x, y)), (h(3, 8), (x, y + 1))]
+                  + [(h(1, 16), (x + a, y + b)) for a in (-1, 1) for b in (0, 1)])
+        rules.append(_stencil_terms(st, coords, _quad_home, centre_rule))
+    return LocalRules(name, True, tuple(names[p] for p in sector), tuple(rules), "quad", ring, source,
+                      coords=tuple(sector))
+
+
+def doo_sabin_rules() -> LocalRules:
+    """Doo–Sabin at an n-gon: sector j holds the n-gon's corner p_j, the outer corners a_j, b_j of the
+    quad on edge p_j p_(j+1) (a_j next to p_j) and the corner c_j of the quad at p_j opposite p_j."""
+    h = sp.Rational
+    alpha = (3 + W + 1 / W) / (4 * n_sym)          # (3 + 2 cos(2 pi j / n)) / (4n) on every corner j
+    ngon = (Term(h(1, 4), (0, 0)), Term(alpha, (0, ALL)))
+    a = (Term(h(9, 16), (0, 0)), Term(h(3, 16), (0, 1)), Term(h(3, 16), (1, 0)), Term(h(1, 16), (2, 0)))
+    b = (Term(h(9, 16), (0, 1)), Term(h(3, 16), (0, 0)), Term(h(3, 16), (2, 0)), Term(h(1, 16), (1, 0)))
+    c = (Term(h(9, 16), (0, 0)), Term(h(3, 16), (1, 0)), Term(h(3, 16), (2, -1)), Term(h(1, 16), (3, 0)))
+    return LocalRules("doo-sabin", False, ("p", "a", "b", "c"), (ngon, a, b, c), "dual quad", 1,
+                      "Doo, Sabin, CAD 10 (1978): alpha_0 = 1/4 + 5/(4n), alpha_j = (3 + 2 cos(2 pi j/n))/(4n)")
+
+
+def _loop_centre(beta: sp.Expr) -> tuple[Term, ...]:
+    return (Term(1 - n_sym * beta, (CENTRE,)), Term(beta, (0, ALL)))
+
+
+#: Loop's beta_n (Loop 1987): (5/8 - (3/8 + cos(2 pi/n)/4)^2) / n
+LOOP_BETA = (sp.Rational(5, 8) - (sp.Rational(3, 8) + C1 / 4) ** 2) / n_sym
+
+
+def _warren_beta(n: int | None) -> sp.Expr:
+    if n is None:
+        return 3 / (8 * n_sym)
+    return sp.Rational(3, 16) if n == 3 else sp.Rational(3, 8 * n)
+
+
+def _cc_centre() -> tuple[Term, ...]:
+    # v' = (1 - 7/(4n)) v + 3/(2n^2) sum e_j + 1/(4n^2) sum f_j  (Catmull–Clark 1978, with the
+    # face and edge points substituted into (Q + 2R + (n-3) S)/n)
+    return (Term(1 - sp.Rational(7, 4) / n_sym, (CENTRE,)), Term(sp.Rational(3, 2) / n_sym ** 2, (0, ALL)),
+            Term(sp.Rational(1, 4) / n_sym ** 2, (1, ALL)))
+
+
+SCHEMES: dict[str, tuple[str, str]] = {
+    "loop": ("triangle", "Loop 1987: beta_n = (5/8 - (3/8 + cos(2 pi/n)/4)^2)/n"),
+    "loop-warren": ("triangle", "Warren, Weimer 2002: beta = 3/(8n) (n > 3), 3/16 (n = 3)"),
+    "catmull-clark": ("quad", "Catmull, Clark, CAD 10 (1978): alpha = 1 - 7/(4n), beta = 3/(2n^2), gamma = 1/(4n^2)"),
+    "doo-sabin": ("dual quad", "Doo, Sabin, CAD 10 (1978)"),
+}
+
+
+def scheme_rules(name: str, ring: int = 2, n: int | None = None) -> LocalRules:
+    """The local rules of a catalogue scheme on ``ring`` rings (1: the 1-ring, enough for the leading
+    eigenvalues of Loop and Catmull–Clark; 2: the 2-ring, the support of the patches of the first
+    ring, which the characteristic map needs). ``n`` matters only for rules piecewise in n (Warren's
+    beta at n = 3)."""
+    if name not in SCHEMES:
+        raise AnalysisError(f"unknown scheme {name!r} for `subdiv vertex`: use one of {', '.join(SCHEMES)}")
+    if ring not in (1, 2):
+        raise AnalysisError(f"--ring must be 1 or 2, not {ring}")
+    lattice, src = SCHEMES[name]
+    if name == "loop":
+        return triangle_rules(name, ring, _loop_centre(LOOP_BETA), src)
+    if name == "loop-warren":
+        return triangle_rules(name, ring, _loop_centre(_warren_beta(n)), src)
+    if name == "catmull-clark":
+        return quad_rules(name, ring, _cc_centre(), src)
+    return doo_sabin_rules()
+
+
+# --------------------------------------------------------------------------------------------------
+# user rules
+
+def _cos_to_W(expr: sp.Expr, j: sp.Symbol, what: str) -> sp.Expr:
+    """``cos(2 pi l j / n)`` -> ``(W^l + W^-l)/2``; anything else that depends on j is refused."""
+
+    def repl(arg):
+        ratio = sp.simplify(arg / (2 * sp.pi * j / n_sym))
+        if not (ratio.is_Integer):
+            raise AnalysisError(f"{what}: cos({arg}) is not cos(2*pi*l*j/n) with an integer l; "
+                                "write the j-dependence as cos(2*pi*j/n), cos(4*pi*j/n), ...")
+        return (W ** int(ratio) + W ** (-int(ratio))) / 2
+
+    out = expr.replace(lambda e: isinstance(e, sp.cos) and e.has(j), lambda e: repl(e.args[0]))
+    if out.has(j):
+        raise AnalysisError(f"{what}: j may appear only inside cos(2*pi*l*j/n)")
+    return sp.expand(out)
+
+
+def read_weight(text: str, what: str, *, with_j: bool = False) -> sp.Expr:
+    """A weight read by :func:`analysis.algebra.reader.read_expression`: names ``n``, ``c``
+    (= cos(2 pi/n)) and, for weights on every sector, ``j``.
+
+    >>> read_weight("3/(8*n)", "centre weight")
+    3/(8*n)
+    >>> read_weight("(1/4 + cos(2*pi*j/n))/n", "edge weight", with_j=True)
+    W/(2*n) + 1/(4*n) + 1/(2*W*n)
+    """
+    from ..algebra.reader import read_expression
+
+    j = sp.Symbol("j", integer=True)
+    names = {"n": n_sym, "c": C1}
+    if with_j:
+        names["j"] = j
+    e = read_expression(text, names=names, free=False, what=what,
+                        hint="the weights may use n, c = cos(2*pi/n)" + (" and j" if with_j else ""))
+    return _cos_to_W(e, j, what) if with_j else e
+
+
+def user_rules(lattice: str, centre: str, edge: str | None = None, *, ring: int = 2) -> LocalRules:
+    """Rules typed by a user: the regular stencils of ``lattice`` ('triangle': Loop's; 'quad':
+    Catmull–Clark's), the centre's rule ``centre`` = "WEIGHT_ON_EACH_EDGE_NEIGHBOUR" (triangle; the centre
+    keeps 1 - n*w) or "W_EDGE, W_FACE" (quad; the centre keeps 1 - n*(w_e + w_f)), and optionally the rule of
+    the new edge points next to the centre, ``edge`` = "W_CENTRE; W(j)" (weight W(j) on the edge neighbour
+    e_j of the new point on edge e_0, an expression in n and cos(2*pi*l*j/n); on quads "W_CENTRE; W(j); F(j)",
+    F(j) on the face neighbour f_j).
+
+    >>> r = user_rules("triangle", "3/(8*n)")
+    >>> [str(t.weight) for t in r.rules[0]]
+    ['5/8', '3/(8*n)']
+    """
+    if lattice not in ("triangle", "quad"):
+        raise AnalysisError(f"--lattice must be triangle or quad, not {lattice!r}")
+    parts = [p for p in centre.split(",")]
+    want = 1 if lattice == "triangle" else 2
+    if len(parts) != want:
+        raise AnalysisError(f"--centre takes {want} weight{'s' if want > 1 else ''} on a {lattice} lattice "
+                            f"({'the weight of each edge neighbour' if want == 1 else 'W_EDGE, W_FACE'})")
+    ws = [read_weight(p.strip(), "centre weight") for p in parts]
+    terms = [Term(sp.expand(1 - n_sym * sum(ws)), (CENTRE,))]
+    terms += [Term(w, (i, ALL)) for i, w in enumerate(ws)]
+    build = triangle_rules if lattice == "triangle" else quad_rules
+    rules = build("user", ring, tuple(terms), f"user rules on the {lattice} lattice")
+    if edge is not None:
+        e = edge.split(";")
+        if len(e) != want + 1:
+            raise AnalysisError(f'--edge takes {"W_CENTRE; W(j)" if want == 1 else "W_CENTRE; W(j); F(j)"}: the '
+                                'weight of the centre and of each edge neighbour e_j (and face neighbour f_j) '
+                                'in the new point on the edge to e_0, e.g. "3/8; (1/4+cos(2*pi*j/n))/n"')
+        wc = read_weight(e[0].strip(), "edge weight of the centre")
+        ws_j = [read_weight(t.strip(), "edge weight W(j)", with_j=True) for t in e[1:]]
+        new = list(rules.rules)
+        new[1] = (Term(wc, (CENTRE,)), *(Term(w, (i, ALL)) for i, w in enumerate(ws_j)))
+        rules = LocalRules(rules.name, True, rules.points, tuple(new), lattice, ring,
+                           rules.source + ", edge rule at the centre given", coords=rules.coords)
+    return rules
+

@@ -1,0 +1,380 @@
+"""The certified spectrum of the local subdivision matrix at valence n, Reif's eigen-conditions, and the
+curvature behaviour read from the subsubdominant eigenvalue.
+
+For each Fourier block k (:mod:`.blocks`) the characteristic polynomial ``P_k(lam)`` has coefficients in
+``Q(cos(2 pi / n))``. Its exact factors (sympy, over Q with ``c`` and ``C1 = cos(2 pi/n)`` as
+variables) are evaluated at ``c = cos(2 pi k / n)``:
+
+* where both cosines are rational (n = 1, 2, 3, 4, 6 and their blocks) the factor is an integer
+  polynomial and FLINT's ``complex_roots`` gives every root with its exact multiplicity (real roots with
+  an exactly zero imaginary part);
+* otherwise the coefficients are Arb balls and ``acb_poly.roots`` isolates the roots; success *proves*
+  that the factor has ``deg`` simple roots, one in each ball; a factor that is squareful at this
+  valence is retried at higher precision and then reported inconclusive.
+
+The checks (Reif 1995; Peters–Reif 2008, ch. 5) are ball comparisons, never float comparisons:
+1 is an eigenvalue of block 0 (exactly: ``P_0(1) = 0`` in ``Q(C1)``), simple; the subdominant
+``lambda`` is the eigenvalue of block 1 of largest modulus, real (its isolating ball meets its
+conjugate ball and no other), positive, simple in block 1 (hence double: blocks 1 and n - 1, and
+semisimple: two Jordan blocks of size 1); every other eigenvalue has a modulus certified below lambda.
+The subsubdominant ``mu`` (largest modulus after lambda) is compared with lambda^2 by balls, and an
+equality is decided exactly when lambda is rational-linear in ``C1`` (Loop) or both are rational.
+
+Examples
+--------
+>>> from analysis.vertex.rules import scheme_rules
+>>> a = analyse(scheme_rules("loop", ring=1), 5)
+>>> a.lam_exact, a.reif_ok, a.curvature
+(sqrt(5)/16 + 5/16, True, 'bounded')
+
+References
+----------
+U. Reif, A unified approach to subdivision algorithms near extraordinary vertices, CAGD 12 (1995);
+J. Peters, U. Reif, Subdivision Surfaces, Springer 2008, ch. 5 (spectral properties), ch. 7 (curvature);
+F. Johansson, Arb: efficient arbitrary-precision midpoint-radius interval arithmetic, IEEE TC 2017.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from functools import lru_cache
+
+import sympy as sp
+
+from .blocks import block_charpoly, c, cos_minimal_polynomial, fourier_block, lam, special_frequencies
+from .rules import C1, LocalRules, n_sym
+
+PRECISIONS = (64, 128, 256, 512)
+
+
+@dataclass
+class Eigenvalue:
+    """One eigenvalue: its ball, multiplicity (within its block), block k, and the exact factor of
+    ``P_k`` it is a root of (a polynomial in lam, with c and C1 to be set to the cosines)."""
+
+    ball: object          # flint.acb
+    mult: int
+    k: int
+    factor: sp.Poly
+    real: bool
+
+    @property
+    def modulus(self):
+        return abs(self.ball)
+
+
+@dataclass
+class VertexAnalysis:
+    n: int
+    scheme: str
+    eigenvalues: list[Eigenvalue]
+    lam: Eigenvalue | None
+    lam_exact: sp.Expr | None
+    mu: Eigenvalue | None
+    checks: dict = field(default_factory=dict)
+    reif_ok: bool | None = None
+    reif_status: str = "inconclusive"
+    reif_reason: str = ""
+    separation: object = None          # arb: lambda - max |other|
+    curvature: str = "inconclusive"
+    curvature_status: str = "inconclusive"
+    mu_vs_lam2: str = "?"
+    prec: int = 0
+    notes: list = field(default_factory=list)
+
+
+# --------------------------------------------------------------------------------------------------
+
+def _is_rational_cos(d: int) -> bool:
+    return d in (1, 2, 3, 4, 6)
+
+
+def _cos_value(k: int, n: int) -> sp.Rational | None:
+    from math import gcd
+
+    g = gcd(k, n)
+    d = n // g
+    if not _is_rational_cos(d):
+        return None
+    return {1: sp.Integer(1), 2: sp.Integer(-1), 3: sp.Rational(-1, 2), 4: sp.Integer(0), 6: sp.Rational(1, 2)}[d]
+
+
+@lru_cache(maxsize=64)
+def _generic_charpoly(rules: LocalRules) -> sp.Expr:
+    k = max(special_frequencies(rules) | {0}) + 1
+    return block_charpoly(fourier_block(rules, k, None))
+
+
+def block_polynomials(rules: LocalRules, n: int) -> list[tuple[int, int, sp.Expr]]:
+    """``(k, copies, P_k(lam, c, C1))`` for k = 0..floor(n/2): copies = 2 for blocks k and n-k."""
+    rules.check_valence(n)
+    special = {0} | {s % n for s in special_frequencies(rules)} | {(-s) % n for s in special_frequencies(rules)}
+    gen = None
+    out = []
+    for k in range(n // 2 + 1):
+        copies = 1 if (k == 0 or 2 * k == n) else 2
+        if k in special or (n - k) % n in special:
+            P = block_charpoly(fourier_block(rules, k, n))
+        else:
+            if gen is None:
+                gen = sp.expand(_generic_charpoly(rules).subs(n_sym, n))
+            P = gen
+        if k == 0:
+            P = sp.expand(P.subs(c, 1))
+        out.append((k, copies, P))
+    return out
+
+
+@lru_cache(maxsize=4096)
+def _factors(P: sp.Expr) -> tuple[tuple[sp.Poly, int], ...]:
+    gens = [g for g in (lam, c, C1) if P.has(g)]
+    if lam not in gens:
+        gens.insert(0, lam)
+    _, fl = sp.factor_list(sp.Poly(P, *gens, domain="QQ"))
+    return tuple((f, e) for f, e in fl if f.degree(lam) > 0)
+
+
+def _arb_value(expr: sp.Expr, ck, c1):
+    """An Arb ball for a polynomial expression in c, C1 with rational coefficients."""
+    from flint import arb
+
+    poly = sp.Poly(expr, c, C1)
+    total = arb(0)
+    for (i, j), co in poly.terms():
+        q = sp.Rational(co)
+        total += arb(int(q.p)) / int(q.q) * ck ** i * c1 ** j
+    return total
+
+
+def _roots(F: sp.Poly, k: int, n: int, prec: int):
+    """Isolated roots of the factor F(lam, c_k, C1) as (acb ball, multiplicity, real?) or None."""
+    from flint import acb, acb_poly, arb, ctx, fmpq, fmpq_poly
+
+    ck_q, c1_q = _cos_value(k, n), _cos_value(1, n)
+    deg = F.degree(lam)
+    coeffs = [sp.expand(F.as_expr()).coeff(lam, i) for i in range(deg + 1)]
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        free = F.free_symbols
+        if (c not in free or ck_q is not None) and (C1 not in free or c1_q is not None):
+            qs = [sp.Rational(co.subs({c: ck_q if ck_q is not None else 0, C1: c1_q if c1_q is not None else 0}))
+                  for co in coeffs]
+            fp = fmpq_poly([fmpq(int(q.p), int(q.q)) for q in qs])
+            num = fp.numer()
+            return [(r, m, r.imag.is_zero()) for r, m in num.complex_roots()]
+        ck = arb.cos_pi_fmpq(fmpq(2 * k, n))
+        c1 = arb.cos_pi_fmpq(fmpq(2, n))
+        poly = acb_poly([acb(_arb_value(co, ck, c1)) for co in coeffs])
+        try:
+            roots = poly.roots(maxprec=prec * 2)
+        except ValueError:
+            return None
+        out = []
+        for i, r in enumerate(roots):
+            cj = r.conjugate()
+            meets = [j for j, s in enumerate(roots) if cj.overlaps(s)]
+            out.append((r, 1, meets == [i]))
+        return out
+    finally:
+        ctx.prec = old
+
+
+def spectrum(rules: LocalRules, n: int, prec: int = 64) -> list[Eigenvalue] | None:
+    """Every eigenvalue of the local matrix at valence n (blocks k <= n/2; block k != 0, n/2 stands for
+    itself and its mirror n - k), or None if some factor could not be isolated at ``prec``."""
+    out = []
+    for k, copies, P in block_polynomials(rules, n):
+        for F, e in _factors(P):
+            rs = _roots(F, k, n, prec)
+            if rs is None:
+                return None
+            for r, m, real in rs:
+                out.append(Eigenvalue(r, m * e, k, F, real))
+    return out
+
+
+# --------------------------------------------------------------------------------------------------
+
+def _exact_root(F: sp.Poly, ball, n: int, k: int):
+    """The root of F(lam, cos(2 pi k/n)) in ``ball`` as a radical expression when deg F <= 2."""
+    from flint import acb
+
+    if F.degree(lam) > 2:
+        return None
+    ck = sp.cos(2 * sp.pi * k / n)
+    expr = F.as_expr().subs({c: ck, C1: sp.cos(2 * sp.pi / n)})
+    for r in sp.roots(sp.Poly(expr, lam), multiple=True):
+        val = complex(sp.N(r, 30))
+        if ball.overlaps(acb(val.real, val.imag)) or abs(complex(ball.mid()) - val) < 1e-12:
+            return sp.radsimp(sp.nsimplify(r)) if r.is_Rational else sp.simplify(r)
+    return None
+
+
+def _lambda_in_c1(lam_e: Eigenvalue, lam_exact: sp.Expr | None) -> sp.Expr | None:
+    """lambda as a polynomial in C1 = cos(2 pi/n), when it is one: rational, or the root of a factor of
+    block 1 that is linear in lam (c = C1 in block 1)."""
+    if lam_exact is not None and lam_exact.is_Rational:
+        return lam_exact
+    lin = sp.Poly(lam_e.factor.as_expr().subs(c, C1), lam)
+    if lin.degree() != 1:
+        return None
+    a1, a0 = lin.all_coeffs()
+    return sp.expand(-a0 / a1)
+
+
+def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n: int, sign: int,
+                 eigenvalues: list[Eigenvalue], power: int = 2) -> bool | None:
+    """Is ``mu = sign * lambda^power``? Decided exactly when lambda is a polynomial in C1 (or rational):
+    ``F_mu(sign lambda^power)`` reduced modulo the minimal polynomial of cos(2 pi/n) is zero (so it is a
+    root of mu's factor at c = cos(2 pi k/n)), and its ball meets mu's isolating ball and no other
+    isolating ball of that factor's roots. False: certainly not equal. None: not decided."""
+    lam_c1 = _lambda_in_c1(lam_e, lam_exact)
+    if lam_c1 is None:
+        return None
+    target = sp.expand(sign * lam_c1 ** power)
+    val = sp.expand(mu.factor.as_expr().subs(c, sp.chebyshevt(mu.k, C1)).subs(lam, target))
+    num, _ = sp.fraction(sp.together(val))
+    if not sp.Poly(num, C1, domain="QQ").rem(cos_minimal_polynomial(n)).is_zero:
+        return False
+    ball = lam_e.ball ** power * sign
+    siblings = [e for e in eigenvalues if e.k == mu.k and e.factor == mu.factor]
+    meets = [e for e in siblings if e.ball.overlaps(ball)]
+    return True if meets == [mu] else None
+
+
+def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis:
+    """The certified eigen-structure at valence n (see the module docstring), at the first precision of
+    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided."""
+    eig, res = None, None
+    for prec in PRECISIONS:
+        if prec > max_prec:
+            break
+        eig = spectrum(rules, n, prec)
+        if eig is None:
+            continue
+        res = _check(rules, n, eig, prec)
+        if res.reif_status != "inconclusive" and res.curvature_status != "inconclusive":
+            return res
+    if res is None:
+        a = VertexAnalysis(n, rules.name, [], None, None, None, prec=max_prec)
+        a.reif_reason = f"a block's characteristic polynomial could not be isolated at {max_prec} bits"
+        return a
+    return res
+
+
+def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> VertexAnalysis:
+    from flint import arb
+
+    a = VertexAnalysis(n, rules.name, eig, None, None, None, prec=prec)
+    one = [e for e in eig if e.k == 0 and e.real and e.ball.real.contains(1)]
+    P0 = dict((k, P) for k, _, P in block_polynomials(rules, n))[0]
+    p0_at_1 = sp.expand(P0.subs(lam, 1))
+    if p0_at_1.has(C1):
+        num, _ = sp.fraction(sp.together(p0_at_1))
+        one_exact = sp.Poly(num, C1, domain="QQ").rem(cos_minimal_polynomial(n)).is_zero
+    else:
+        one_exact = p0_at_1 == 0
+    a.checks["1 eigenvalue of block 0 (exact)"] = bool(one_exact)
+    a.checks["1 simple"] = one_exact and len(one) == 1 and one[0].mult == 1
+    b1 = [e for e in eig if e.k == 1]
+    if not b1:
+        a.reif_reason = "no block 1"
+        return a
+    top = max(b1, key=lambda e: e.modulus.upper())
+    a.lam = top
+    others = [e for e in eig if e is not top and not (one and e is one[0])]
+    a.separation = top.modulus - max(((e.modulus for e in others)), key=lambda m: m.upper(), default=arb(0))
+    real = top.real
+    positive = real and top.ball.real > 0
+    simple = top.mult == 1
+    dominated = all(e.modulus < top.modulus for e in others)
+    below_one = top.modulus < 1
+    a.checks.update({"lambda real": bool(real), "lambda > 0": bool(positive), "lambda < 1": bool(below_one),
+                     "lambda simple in block 1 (double: blocks 1, n-1; semisimple)": bool(simple),
+                     "others < lambda in modulus": bool(dominated)})
+    if all(a.checks.values()):
+        a.reif_ok, a.reif_status = True, "certified"
+    else:
+        failed = [k for k, v in a.checks.items() if not v]
+        # a failure is certified when the ball comparison that failed is decided the other way
+        bigger = [e for e in others if e.modulus > top.modulus]
+        if bigger:
+            e = bigger[0]
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = (f"an eigenvalue of block {e.k} ({_fmt(e.ball)}) exceeds block 1's leading "
+                             f"eigenvalue ({_fmt(top.ball)}) in modulus")
+        elif (tie := _tie_with_lambda(a, top, others, n)) is not None:
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = tie
+        elif top.real is True and top.ball.real < 0:
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = "the subdominant eigenvalue is negative"
+        elif _certainly_nonreal(top.ball):
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = "the subdominant eigenvalue is not real"
+        else:
+            a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
+    a.lam_exact = _exact_root(top.factor, top.ball, n, 1)
+    _curvature(a, others, n)
+    return a
+
+
+def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue], n: int) -> str | None:
+    """An eigenvalue other than lambda (and its mirror) proven equal to +-lambda: lambda is then not a
+    double, strictly dominant eigenvalue. (Exact test as for mu = lambda^2.)"""
+    if not (top.real and top.ball.real > 0):
+        return None
+    lam_exact = _exact_root(top.factor, top.ball, n, 1)
+    for e in others:
+        if e.modulus < top.modulus or not e.real:
+            continue
+        sign = 1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)
+        if sign and _equal_exact(e, top, lam_exact, n, sign, a.eigenvalues, power=1):
+            return (f"an eigenvalue of block {e.k} equals {'-' if sign < 0 else ''}lambda exactly "
+                    f"({'lambda is not double' if sign > 0 else 'not strictly below lambda in modulus'})")
+    return None
+
+
+def _certainly_nonreal(ball) -> bool:
+    return not ball.imag.contains(0)
+
+
+def _fmt(ball) -> str:
+    x = complex(ball.mid())
+    return f"{x.real:.6g}" if abs(x.imag) < 1e-300 else f"{x.real:.6g}{x.imag:+.6g}i"
+
+
+def _curvature(a: VertexAnalysis, others: list[Eigenvalue], n: int) -> None:
+    """mu (the largest modulus after lambda) against lambda^2."""
+    top = a.lam
+    rest = [e for e in others if not (e.k == 1 and e.factor == top.factor and e.ball.overlaps(top.ball))]
+    if not rest or not a.reif_ok:
+        return
+    mu = max(rest, key=lambda e: e.modulus.upper())
+    a.mu = mu
+    lam2 = top.ball.real * top.ball.real
+    if all(e.modulus < lam2 for e in rest):
+        a.mu_vs_lam2, a.curvature, a.curvature_status = "<", "zero", "certified"
+        return
+    big = [e for e in rest if e.modulus > lam2]
+    if big:
+        a.mu = max(big, key=lambda e: e.modulus.lower())
+        a.mu_vs_lam2, a.curvature, a.curvature_status = ">", "unbounded", "certified"
+        return
+    tied = [e for e in rest if not (e.modulus < lam2)]
+    verdicts = []
+    for e in tied:
+        if not e.real:
+            verdicts.append(None)
+            continue
+        sign = 1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)
+        verdicts.append(_equal_exact(e, top, a.lam_exact, n, sign, a.eigenvalues) if sign else None)
+    if any(v is False for v in verdicts):
+        a.notes.append("mu != lambda^2 (exact) but not yet separated by the balls")
+    elif all(v is True for v in verdicts):
+        a.mu = tied[0]
+        a.mu_vs_lam2, a.curvature, a.curvature_status = "=", "bounded", "certified"
+    else:
+        a.notes.append("mu and lambda^2 not separated by the balls and not decided exactly "
+                       "(exact equality is decided when lambda is a polynomial in cos(2 pi/n))")

@@ -1,0 +1,251 @@
+"""One scheme over a range of valences: the subdominant eigenvalue in closed form in n, and for each n
+the certified eigen-structure, the curvature behaviour and the C^1 verdict with its status.
+
+The closed form comes from the characteristic polynomial of block 1 with the valence as a symbol (the
+weights on every sector contribute through their frequency -1 only when n exceeds the rules'
+frequencies): its factors of degree <= 2 in lambda are solved by radicals, and the root that is the
+subdominant eigenvalue is chosen by its Arb value at each valence of the range, where it is checked to lie
+in lambda's isolating ball (so the formula *is* lambda there, not a float match).
+
+C^1: the eigen-conditions are necessary ingredients, not a proof. With them and a certified regular and
+injective characteristic map (:mod:`.charmap`: quad and triangle rules on the 2-ring) the verdict is
+certified C^1 (Reif 1995); without the characteristic map (rules on the 1-ring) it is
+"inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
+(certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
+surface is not C^1.
+
+Curvature (J. Peters, U. Reif, Shape characterization of subdivision surfaces — basic principles, CAGD
+21 (2004); K. Karčiauskas, J. Peters, U. Reif, Shape characterization of subdivision surfaces — case
+studies, CAGD 21 (2004); Peters–Reif, Subdivision Surfaces, 2008, ch. 7), for schemes whose regular part
+is C^2 and generic data: the second fundamental form near the vertex scales like (mu / lambda^2)^m on
+the m-th ring, so mu < lambda^2 gives curvature tending to zero at the vertex (a flat spot), mu =
+lambda^2 bounded curvature, mu > lambda^2 unbounded curvature.
+
+Examples
+--------
+>>> from analysis.vertex.rules import scheme_rules
+>>> closed_form_lambda(scheme_rules("catmull-clark", ring=1))["lambda"]
+'c/16 + sqrt((c + 1)*(c + 9))/16 + 5/16'
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import sympy as sp
+
+from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
+from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
+from .rules import C1, LocalRules, n_sym
+from .spectrum import VertexAnalysis, analyse
+
+#: the largest valence range the command accepts
+MAX_VALENCE = 200
+
+CURVATURE_TEXT = {
+    "zero": "curvature tends to zero at the vertex (mu < lambda^2: flat spot for generic data)",
+    "bounded": "curvature bounded (mu = lambda^2)",
+    "unbounded": "curvature unbounded for generic data (mu > lambda^2)",
+    "inconclusive": "curvature behaviour not decided",
+    "not applicable": "the regular part is only C^1 (biquadratic): the curvature criterion needs a C^2 regular part",
+}
+
+
+def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
+    """The roots of block 1's characteristic polynomial with n symbolic, by factors of degree <= 2;
+    ``lambda`` is the one that gives the largest value at n = 7 (checked per valence by :func:`valence_entry`)."""
+    N0 = max(special_frequencies(rules) | {0}) + 2
+    P = block_charpoly(fourier_block(rules, 1, None))
+    P = sp.expand(P.subs(C1, c))               # in block 1, c = C1 = cos(2 pi/n)
+    gens = [g for g in (lam, c, n_sym) if P.has(g)]
+    _, fl = sp.factor_list(sp.Poly(P, *gens))
+    roots = []
+    for f, _e in fl:
+        if f.degree(lam) == 0:
+            continue
+        if f.degree(lam) > 2:
+            return {"lambda": None, "valid_from": N0, "factors": [str(g.as_expr()) for g, _ in fl],
+                    "reason": "block 1 has an irreducible factor of degree > 2 in lambda"}
+        roots += sp.roots(sp.Poly(f.as_expr(), lam), multiple=True)
+    best = None
+    for r in roots:
+        v = arb_value(r, 7)
+        if v is not None and (best is None or v.mid() > best[1].mid()):
+            best = (r, v)
+    expr = sp.simplify(best[0]) if best else None
+    return {"lambda": str(expr) if expr is not None else None, "expr": expr, "valid_from": N0,
+            "factors": [str(g.as_expr()) for g, _ in fl if g.degree(lam) > 0]}
+
+
+def arb_value(expr: sp.Expr, n: int, prec: int = 128):
+    """An Arb ball for an expression in c = cos(2 pi/n) and n built from rationals, + * / and powers
+    with integer or half-integer exponents; None if it has anything else (or a square root of a
+    ball that may be negative)."""
+    from flint import arb, ctx, fmpq
+
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        cval = arb.cos_pi_fmpq(fmpq(2, n))
+
+        def ev(e):
+            if e.is_Rational:
+                return arb(int(e.p)) / int(e.q)
+            if e == c or e == C1:
+                return cval
+            if e == n_sym:
+                return arb(n)
+            if e.is_Add:
+                out = arb(0)
+                for a in e.args:
+                    out += ev(a)
+                return out
+            if e.is_Mul:
+                out = arb(1)
+                for a in e.args:
+                    out *= ev(a)
+                return out
+            if e.is_Pow:
+                b, x = ev(e.base), e.exp
+                if x.is_Integer:
+                    return b ** int(x)
+                if x == sp.Rational(1, 2) and b > 0:
+                    return b.sqrt()
+                if x == sp.Rational(-1, 2) and b > 0:
+                    return 1 / b.sqrt()
+            raise ValueError
+
+        try:
+            return ev(expr)
+        except (ValueError, ZeroDivisionError):
+            return None
+    finally:
+        ctx.prec = old
+
+
+def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str]:
+    """The C^1 verdict: certified only with the eigen-conditions *and* a certified regular, injective
+    characteristic map (Reif 1995)."""
+    if a.reif_ok and charmap is not None:
+        if charmap["status"] == CERTIFIED:
+            return CERTIFIED, "C^1 (eigen-conditions; characteristic map regular and injective)"
+        if charmap["status"] == REFUTED:
+            return REFUTED, (f"not C^1 in Reif's sense: the characteristic map is regular but its boundary winds "
+                             f"{charmap['winding_number']} times (not injective)")
+        return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
+                             f"{charmap['precision_bits']} bits"
+    if a.reif_ok:
+        return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not checked"
+    if a.reif_status == CERTIFIED:
+        return INCONCLUSIVE, f"inconclusive: an eigen-condition fails ({a.reif_reason}); the standard C^1 test does not apply"
+    return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
+
+
+def _q(x) -> sp.Rational:
+    """The exact rational value of an Arb endpoint (a binary floating-point number)."""
+    man, exp = x.mid().man_exp()
+    return sp.Integer(int(man)) * sp.Integer(2) ** int(exp)
+
+
+def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Result]:
+    """The results at valence n (the results contract: value or enclosure, status, witness, provenance):
+    ``lambda`` (exact value and certified enclosure), ``separation`` (certified lower bound of lambda - max
+    |others|), ``mu`` (enclosure of the subsubdominant modulus), ``reif`` (the eigen-conditions),
+    ``curvature``, ``characteristic_map`` (quad/triangle rules on the 2-ring) and ``c1``."""
+    a = analyse(rules, n)
+    prov = {"method": "Fourier blocks of the local subdivision matrix; FLINT exact roots or Arb isolation",
+            "precision_bits": a.prec, "valence": n, "rules": rules.source, "ring": rules.ring}
+    out: dict[str, Result] = {}
+    lam_e = a.lam
+    if lam_e is None:
+        out["reif"] = Result(value=None, status=INCONCLUSIVE, witness={"reason": a.reif_reason}, provenance=prov)
+        out["c1"] = Result(value=None, status=INCONCLUSIVE,
+                           witness={"verdict": "inconclusive: eigenvalues not isolated"}, provenance=prov)
+        return out
+    ball = lam_e.ball.real
+    wit = {"block": 1, "polynomial": str(lam_e.factor.as_expr().subs(C1, sp.Symbol("c1"))),
+           "ball": str(ball) if lam_e.real else str(lam_e.ball), "float": float(ball.mid()),
+           "c": f"cos(2*pi/{n})"}
+    if closed and closed.get("expr") is not None and n >= closed["valid_from"]:
+        v = arb_value(closed["expr"], n, max(a.prec, 128))
+        wit["closed_form"] = closed["lambda"]
+        wit["closed_form_checked"] = bool(v is not None and ball.overlaps(v) and ball.rad() < 1e-6)
+    out["lambda"] = Result(value=a.lam_exact, lower=_q(ball.lower()), upper=_q(ball.upper()),
+                           status=CERTIFIED if lam_e.real else INCONCLUSIVE, witness=wit, provenance=prov)
+    if a.separation is not None:
+        out["separation"] = Result(lower=_q(a.separation.lower()),
+                                   status=CERTIFIED if a.separation > 0 else INCONCLUSIVE,
+                                   witness={"ball": str(a.separation), "float": float(a.separation.lower())},
+                                   provenance=prov)
+    if a.mu is not None:
+        m = a.mu.modulus
+        out["mu"] = Result(lower=_q(m.lower()), upper=_q(m.upper()), status=CERTIFIED,
+                           witness={"block": a.mu.k, "ball": str(m), "float": float(m.mid()), "real": bool(a.mu.real),
+                                    "polynomial": str(a.mu.factor.as_expr().subs(C1, sp.Symbol("c1")))},
+                           provenance=prov)
+    out["reif"] = Result(value=a.reif_ok, status=a.reif_status,
+                         witness={"checks": dict(a.checks), "reason": a.reif_reason}, provenance=prov)
+    if rules.lattice == "dual quad":
+        out["curvature"] = Result(value="not applicable", status=INCONCLUSIVE,
+                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT["not applicable"],
+                                           "notes": list(a.notes)}, provenance=prov)
+    else:
+        out["curvature"] = Result(value=a.curvature, status=a.curvature_status,
+                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature],
+                                           "notes": list(a.notes)}, provenance=prov)
+    cm = None
+    if a.reif_ok and has_characteristic_map(rules):
+        from .charmap import characteristic_map
+
+        for prec in (128, 256):
+            cm = characteristic_map(rules, n, ball, prec)
+            if cm["status"] != INCONCLUSIVE:
+                break
+        out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
+                                           witness={k: v for k, v in cm.items() if k not in ("status", "method")},
+                                           provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
+    status, verdict = c1_verdict(a, cm)
+    out["c1"] = Result(value={CERTIFIED: True, REFUTED: False}.get(status), status=status,
+                       witness={"verdict": verdict}, provenance=prov)
+    return out
+
+
+def valence_entry(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Any]:
+    """The results at valence n as one JSON-ready document: ``n``, ``matrix_size`` and each result of
+    :func:`vertex_results` as :meth:`Result.to_json`."""
+    res = vertex_results(rules, n, closed)
+    entry: dict[str, Any] = {"n": n, "matrix_size": len(rules.points) * n + (1 if rules.centre else 0)}
+    entry.update({k: r.to_json() for k, r in res.items()})
+    return entry
+
+
+def has_characteristic_map(rules: LocalRules) -> bool:
+    """Whether the characteristic map is checked for these rules (2-ring of the quad lattice: bicubic patches;
+    of the triangle lattice: Loop's quartic box-spline patches; Doo–Sabin: biquadratic patches)."""
+    return rules.lattice == "dual quad" or (rules.lattice in ("quad", "triangle") and rules.ring == 2)
+
+
+def parse_valences(text: str) -> list[int]:
+    """``"5"``, ``"3..12"`` or ``"3,5,7"``.
+
+    >>> parse_valences("3..6"), parse_valences("4,7")
+    ([3, 4, 5, 6], [4, 7])
+    """
+    t = str(text).strip()
+    if len(t) > 2000:
+        raise AnalysisError("--valence is too long: give N, LO..HI or N1,N2,... (e.g. --valence 3..12)")
+    try:
+        if ".." in t:
+            lo, hi = (int(x) for x in t.split(".."))
+            if lo < 3 or hi > MAX_VALENCE:
+                raise AnalysisError(f"valences must lie in 3..{MAX_VALENCE}")
+            vals = list(range(lo, hi + 1))
+        else:
+            vals = [int(x) for x in t.split(",") if x.strip()]
+    except ValueError:
+        raise AnalysisError(f"--valence takes N, LO..HI or N1,N2,...; not {t[:40]!r} (e.g. --valence 3..12)") from None
+    if not vals:
+        raise AnalysisError(f"--valence {t[:40]!r} is empty: give e.g. --valence 3..12")
+    if min(vals) < 3 or max(vals) > MAX_VALENCE:
+        raise AnalysisError(f"valences must lie in 3..{MAX_VALENCE}")
+    return vals
