@@ -164,7 +164,7 @@ def quote_html(statement: str) -> str | None:
 
     def flush_math() -> bool:
         if run:
-            latex = _BARE_GREEK.sub(r"\\\1", " ".join(run))
+            latex = _BARE_GREEK.sub(r"\\\1", " ".join(run)).replace("\\setminus", "\\smallsetminus")
             m = latex_mathml(latex)
             if m is None:
                 return False

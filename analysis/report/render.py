@@ -288,7 +288,8 @@ blockquote.plain{font-family:monospace;font-size:.85em;word-break:break-all}
 pre.latex{white-space:pre-wrap;word-break:break-all;background:#f6f8fa;padding:.4em;font-size:.8em;margin:.2em 0}
 details{margin:.3em 0 .3em 1em;font-size:.9em}summary{cursor:pointer;color:#555}
 code{background:#f6f8fa;padding:1px 3px;font-size:.85em;word-break:break-all}.claim{border-top:2px solid #ddd;margin-top:1.5em}
-.m{display:inline-block;max-width:100%;overflow-x:auto;vertical-align:middle}math{font-size:1.05em}
+.m{display:inline-block;max-width:100%;overflow-x:auto;vertical-align:middle}math{font-size:1.1em}
+blockquote math,.m math{math-style:normal}
 img.formula{vertical-align:middle;max-width:100%}img.fig{max-width:100%;border:1px solid #eee}
 .warning{background:#fff8c5;border:1px solid #d4a72c;padding:.4em .8em}
 .profile{background:#eef6ff;border:1px solid #9cc3ec;padding:.4em .8em;margin:.5em 0}
