@@ -4,6 +4,7 @@ links between reports, and the certified smoothness profile shown beside the cla
 
 from __future__ import annotations
 
+import pytest
 import sympy as sp
 
 from analysis.claims.model import Claim, Evidence, Paper, certified, evaluate_paper, exact_result
@@ -91,3 +92,20 @@ def test_profile_beside_the_claims_on_a_small_family():
     assert page.index("Certified profile beside the claim") < page.index('id="claim-995-profile"')
     assert "the paper understates" in page and "profile: certified C<sup>0</sup> set (0, 1/4): inside" in page
     assert "## Certified smoothness profiles" in md and "- beside 995:C1: claim: C^1 for w in (0, 1/4)" in md
+
+
+def test_beside_names_a_claim_of_the_file(tmp_path):
+    from analysis.claims.paperfile import load_paper
+    from analysis.result import AnalysisError
+
+    text = ('[paper]\nid = "994"\ntitle = "t"\n[schemes.s]\nmask = ["2*w", "1 - 2*w", "1 - 2*w", "2*w"]\nstart = -2\n'
+            '[[claims]]\nid = "P"\nstatement = "p"\nkind = "smoothness profile"\nwithin = "(0, 1/4)"\n'
+            'beside = [{ claim = "%s", j = 0, interval = "(0, 1/8)" }]\n'
+            '[[claims]]\nid = "C0"\nstatement = "c"\nkind = "smoothness"\nC = 0\nat = { w = "1/8" }\n')
+    good = tmp_path / "good.toml"
+    good.write_text(text % "C0")
+    assert [c.id for c in load_paper(good).claims] == ["994:P", "994:C0"]
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text % "C9")
+    with pytest.raises(AnalysisError, match="beside names the claim 'C9'"):
+        load_paper(bad)
