@@ -38,9 +38,12 @@ def test_report_files_are_written(report_dir):
     assert "| claim | kind | verdict | summary |" in md
     assert "| 004:Sec7(C6) | holder | REFUTED |" in md
     html = (report_dir / "004.html").read_text(encoding="utf-8")
-    assert 'id="verdicts"' in html and "figures/formulas/" in html
+    assert 'id="verdicts"' in html and "<math" in html          # formulas typeset as MathML
+    assert "figures/formulas/" in md                              # the Markdown report shows them as SVG
     assert (report_dir / "figures" / "blf-design-control.png").exists()
     assert list((report_dir / "figures" / "formulas").glob("f-*.svg"))
+    index = (report_dir / "index.html").read_text(encoding="utf-8")
+    assert 'href="004.html#claim-004-sec7-c6"' in index and 'href="index.html"' in html
     data = json.loads((report_dir / "verdicts.json").read_text())
     assert set(data["papers"]["004"]["claims"]) == set(FAST)
 
@@ -120,30 +123,47 @@ def _chromium():
     return None
 
 
+_PROBE = ("<script>window.addEventListener('load',()=>{const im=[...document.images];"
+          "const W=document.documentElement.clientWidth;const over=document.documentElement.scrollWidth>W+1;"
+          "const b=[...document.querySelectorAll('#verdicts .badge')];"
+          "const cut=b.filter(x=>x.getBoundingClientRect().right>W+1||x.getBoundingClientRect().width<2).length;"
+          "const m=[...document.querySelectorAll('math')];"
+          "document.title='PROBE '+[im.filter(i=>i.complete&&i.naturalWidth>0).length,im.length,"
+          "m.filter(x=>x.getBoundingClientRect().width>0).length,m.length,over?1:0,cut,b.length].join(' ');});"
+          "</script></body>")
+
+
+def _probe(page: Path, tmp_path: Path, width: int) -> list[int]:
+    """Load ``page`` in headless chromium at ``width`` px with a script that reports the images loaded,
+    the MathML elements rendered with a nonzero width, horizontal overflow and verdict badges cut off."""
+    probe = page.with_name(f"probe-{width}.html")
+    probe.write_text(page.read_text(encoding="utf-8").replace("</body>", _PROBE), encoding="utf-8")
+    cmd = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+           "--disable-component-update", "--disable-sync", "--no-first-run", "--hide-scrollbars",
+           f"--user-data-dir={tmp_path / 'profile'}", "--allow-file-access-from-files",
+           f"--window-size={width},900", "--virtual-time-budget=5000", "--dump-dom", probe.as_uri()]
+    try:
+        dom = subprocess.run(cmd, capture_output=True, text=True, timeout=90).stdout
+    except (subprocess.TimeoutExpired, OSError) as exc:
+        pytest.fail(f"chromium did not run: {exc}")
+    assert "<title>PROBE" in dom, dom[:500]
+    return [int(x) for x in dom.split("<title>PROBE ", 1)[1].split("</title>", 1)[0].split()]
+
+
 @pytest.mark.skipif(_chromium() is None, reason="no chromium: `apt-get install -y chromium` to run the "
                     "headless rendering check")
 def test_html_renders_with_figures_and_formulas_in_headless_chromium(report_dir, tmp_path):
     page = (report_dir / "004.html").resolve()
-    # a tiny probe page: loads the report in an iframe-free way by appending a script that records
-    # how many images finished loading with a nonzero natural size
-    probe = report_dir / "probe.html"
-    text = page.read_text(encoding="utf-8").replace(
-        "</body>", "<script>window.addEventListener('load',()=>{const im=[...document.images];"
-        "document.title='IMAGES '+im.filter(i=>i.complete&&i.naturalWidth>0).length+'/'+im.length;});"
-        "</script></body>")
-    probe.write_text(text, encoding="utf-8")
-    cmd = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
-           "--disable-component-update", "--disable-sync", "--no-first-run",
-           f"--user-data-dir={tmp_path / 'profile'}", "--allow-file-access-from-files",
-           "--virtual-time-budget=5000", "--dump-dom", probe.as_uri()]
-    try:
-        dom = subprocess.run(cmd, capture_output=True, text=True, timeout=60).stdout
-    except (subprocess.TimeoutExpired, OSError) as exc:
-        pytest.skip(f"chromium did not run: {exc}")
-    assert "<title>IMAGES" in dom, dom[:500]
-    loaded, total = dom.split("<title>IMAGES ", 1)[1].split("</title>", 1)[0].split("/")
-    assert int(total) > 3 and loaded == total
+    source = page.read_text(encoding="utf-8")
+    loaded, images, drawn, maths, overflow, cut, badges = _probe(page, tmp_path, 1200)
+    assert images >= 1 and loaded == images
+    assert maths == source.count("<math") > 3 and drawn == maths      # every formula element rendered
+    # phone width: nothing wider than the screen, every verdict badge fully visible
+    loaded, images, drawn, maths, overflow, cut, badges = _probe(page, tmp_path, 420)
+    assert badges == len(FAST) and cut == 0 and overflow == 0
+    assert drawn == maths
     shot = tmp_path / "shot.png"
-    subprocess.run(cmd[:-2] + [f"--screenshot={shot}", "--window-size=1200,1600", page.as_uri()],
-                   capture_output=True, timeout=60)
+    cmd = [_chromium(), "--headless", "--no-sandbox", "--disable-gpu", f"--user-data-dir={tmp_path / 'profile'}",
+           f"--screenshot={shot}", "--window-size=1200,1600", page.as_uri()]
+    subprocess.run(cmd, capture_output=True, timeout=60)
     assert shot.exists() and shot.stat().st_size > 100_000     # a blank page is ~13 kB

@@ -201,6 +201,9 @@ class Verdict:
     evidence: tuple = ()
     numbers: tuple = ()
     figures: tuple = ()
+    #: a smoothness profile of a family (kind ``smoothness profile``): its C^j sets in short, the largest
+    #: alpha, the exceptional values and ``beside`` (claim id, sentence) for the claims it speaks to
+    profile: Mapping | None = field(default=None, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "evidence", tuple(self.evidence))

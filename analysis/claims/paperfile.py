@@ -369,7 +369,7 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
     claims_t = data.get("claims", [])
     if not isinstance(claims_t, list):
         raise AnalysisError(f"{where}: claims are an array of tables [[claims]]")
-    claims = []
+    claims, besides = [], []
     for k, t in enumerate(claims_t, start=1):
         if not isinstance(t, Mapping):
             raise AnalysisError(f"{where}: claim #{k} is not a table (write [[claims]] and key = value lines)")
@@ -385,6 +385,7 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
         fields = {x: v for x, v in t.items() if x not in CLAIM_META}
         obj = cls(fields, schemes, w, python=python) if cls is Python else cls(fields, schemes, w)
         runs = str(obj.get("evaluator")) if cls is Python and python == "allowed" else ""
+        besides += [(w, str(b.get("claim"))) for b in (obj.get("beside") or ()) if isinstance(b, Mapping)]
         objects = t.get("objects", [obj.fields["scheme"]] if obj.uses_scheme else [])
         if not isinstance(objects, list) or not all(isinstance(x, str) for x in objects):
             raise AnalysisError(f"{w}: 'objects' must be a list of names")
@@ -395,6 +396,11 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
                             command=_text(t, "command", w) or f"subdiv report {where} --claim '{cid}'"
                             + (" --allow-python" if runs else ""),
                             location=_text(t, "location", w), runs_python=runs))
+    ids = {c.id for c in claims}
+    for w, b in besides:                     # a profile speaks beside claims of this paper: they must exist
+        if (b if ":" in b else f"{pid}:{b}") not in ids:
+            raise AnalysisError(f"{w}: beside names the claim {b!r}, which the file does not define "
+                                f"(its claims: {', '.join(sorted(c.split(':', 1)[1] for c in ids))})")
     notes = [_text(meta, "notes", f"{where}: [paper]")]
     if authors:
         notes.insert(0, "Authors: " + ", ".join(map(str, authors)) + ".")

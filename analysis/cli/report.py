@@ -202,7 +202,7 @@ def _targets(outdir: Path, pids) -> None:
     """Check, before any computation, that every file a report writes stays inside ``outdir``."""
     from ..report.files import inside
 
-    for parts in (("verdicts.json",), ("figures",), ("figures", "formulas"),
+    for parts in (("verdicts.json",), ("index.html",), ("figures",), ("figures", "formulas"),
                   *((f"{pid}.{ext}",) for pid in pids for ext in ("md", "html"))):
         inside(outdir, *parts)
 
@@ -246,11 +246,14 @@ def _report_file(args, outdir: Path, write: bool) -> None:
             _print_details(results)
     _python_lines(results, path, args.json)
     if write:
+        from ..report.index import render_index, siblings
         from ..report.render import render_paper
 
-        for p in render_paper(paper, results, outdir, with_figures=not args.no_figures):
+        others = siblings(outdir, {paper.id: [ev.claim.id for ev in results]})
+        for p in render_paper(paper, results, outdir, with_figures=not args.no_figures, siblings=others):
             print(f"wrote {p}", file=sys.stderr)
         _write_combined(outdir, data, merge=True)
+        print(f"wrote {render_index(outdir)}", file=sys.stderr)
         _prune(outdir, started)
     if args.update_golden:
         atomic_write_text(golden, _dump(data))
@@ -300,12 +303,15 @@ def cmd_report(args) -> None:
         if only is not None:
             _print_details(results)
     if write:
+        from ..report.index import render_index, siblings
         from ..report.render import render_paper
 
+        others = siblings(outdir, {pid: [ev.claim.id for ev in res] for pid, res in all_results.items()})
         for pid, results in all_results.items():
-            for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures):
+            for p in render_paper(get_paper(pid), results, outdir, with_figures=not args.no_figures, siblings=others):
                 print(f"wrote {p}", file=sys.stderr)
         _write_combined(outdir, verdicts_json(all_results), merge=args.paper != "all")
+        print(f"wrote {render_index(outdir)}", file=sys.stderr)
         _prune(outdir, started)
     if args.update_golden:
         for pid, results in all_results.items():

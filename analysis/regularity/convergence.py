@@ -56,7 +56,17 @@ def convergence_failure(a: LaurentSymbol) -> str | None:
     if sm1 != 0:
         t = sp.sstr(sm1)
         bad.append(f"a(-1) = {t} != 0" if len(t) <= 24 else f"a(-1) = {sp.sstr(sp.N(sm1, 3))} != 0")
+    if bad and _from_doubles(a) and abs(s1 - 2) + abs(sm1) < sp.Rational(1, 10 ** 12):
+        bad.append("the coefficients are doubles taken at their exact binary values, which miss the sum rules by "
+                   "rounding: give decimals as text ('0.1' is 1/10) or read the doubles as balls "
+                   "(analysis.Scheme(mask), subdiv holder --approx)")
     return "; ".join(bad) or None
+
+
+def _from_doubles(a: LaurentSymbol) -> bool:
+    """Do some coefficients look like doubles read exactly (denominators powers of two of 2^40 or more)?"""
+    qs = [c.q for c in a.mask if isinstance(c, sp.Rational)]
+    return any(q >= 2 ** 40 and q & (q - 1) == 0 for q in qs)
 
 
 def difference_mask(a: LaurentSymbol) -> tuple[int, LaurentSymbol]:

@@ -57,7 +57,7 @@ from ..model import Number, Verdict
 from .base import Kind, evidence, interval_text, parse_interval, alpha_maximum
 from ...algebra.reader import as_expr
 
-__all__ = ["SmoothnessProfile", "boundary_text", "run_matches", "which_set"]
+__all__ = ["SmoothnessProfile", "beside_text", "boundary_text", "compact_set", "run_matches", "which_set"]
 
 
 def _ra(x) -> RealAlgebraic:
@@ -162,6 +162,40 @@ def _short(b: dict) -> str:
     return sp.sstr(v) if as_expr(v).is_Rational else f"{sp.sstr(v)} ≈ {float(sp.N(v, 20)):.10g}"
 
 
+def compact_set(r, isolated=()) -> str:
+    """A C^j set in short: its runs with exact or bracketed ends (and isolated points), or "empty"."""
+    parts = [f"({_short(x['left'])}, {_short(x['right'])})" for x in r.value] + [f"{{{sp.sstr(q)}}}" for q in isolated]
+    return " ∪ ".join(parts) or "empty"
+
+
+def beside_text(sets: dict, points: dict, j: int, lo, hi, p) -> tuple[str, str]:
+    """What the certified C^j set says beside a claim "C^j on (lo, hi)": a sentence and a short key
+    (``"is the C^j set"``, ``"inside the C^j set (understated)"``, ``"not inside the C^j set"``)."""
+    txt = interval_text(lo, hi)
+    if j not in sets:
+        return (f"claim: C^{j} on {txt}; the profile has no C^{j} set (it stops at the first empty set: "
+                f"nowhere C^{j} in the searched interval)", f"no C^{j} set")
+    r = sets[j]
+    true = compact_set(r, points.get(j, ()))
+    status = "certified" if r.status == CERTIFIED else _interior_status(r)
+    head = f"claim: C^{j} for {p.name} in {txt}; certified C^{j} set: {true} [{status}]"
+    matches = {run_matches(x, lo, hi) for x in r.value}
+    if "exact" in matches:
+        return head + f" — the claimed interval is exactly the C^{j} set", f"is the C^{j} set"
+    if "window" in matches:
+        return (head + f" — the claimed interval is the C^{j} set within the searched interval (an end of it is an "
+                "end of the search)", f"is the C^{j} set (search window)")
+    if any(_run_contains(x, lo, hi) for x in r.value):
+        if r.status == CERTIFIED:
+            return (head + f" — the claimed interval lies strictly inside the C^{j} set: the paper understates "
+                    f"(C^{j} holds on the larger set, certified)", f"inside the C^{j} set (understated)")
+        return (head + f" — the claimed interval lies strictly inside the C^{j} set found (its boundaries are "
+                "certified; the part of its interior named in the status is not proven)",
+                f"inside the C^{j} set found (interior not all proven)")
+    return (head + f" — the claimed interval is not inside the C^{j} set (C^{j} fails somewhere on it)",
+            f"not inside the C^{j} set")
+
+
 class SmoothnessProfile(Kind):
     """The C^j set for every j, the largest Hölder exponent and where, beside the claimed range."""
 
@@ -171,7 +205,9 @@ class SmoothnessProfile(Kind):
                 "claimed": "{ j = ..., interval = \"(a, b)\" }: the printed C^j range",
                 "max_j": "largest j to examine (default: generic smoothing factors - 1)",
                 "grid": "grid intervals per C^j search (default 8)", "samples": "alpha sample intervals (default 8)",
-                "tol": "boundary bracket width (default 1e-8)", "at": "values of the other parameters"}
+                "tol": "boundary bracket width (default 1e-8)", "at": "values of the other parameters",
+                "beside": "[{ claim = \"ID\", j = ..., interval = \"(a, b)\" }, ...]: other claims of the paper about "
+                          "this family's C^j range, each shown beside the certified C^j set"}
     example = 'within = "(1/32, 1/8)"\nclaimed = { j = 1, interval = "(1/16, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
     mary = True
 
@@ -185,6 +221,10 @@ class SmoothnessProfile(Kind):
             if not isinstance(c, dict) or set(c) != {"j", "interval"}:
                 raise AnalysisError(f"{self.where}: claimed = {{ j = ..., interval = \"(a, b)\" }}")
             parse_interval(c["interval"], f"{self.where}: claimed interval")
+        for b in self.get("beside") or ():
+            if not isinstance(b, dict) or set(b) != {"claim", "j", "interval"} or not isinstance(b["claim"], str):
+                raise AnalysisError(f"{self.where}: beside = [{{ claim = \"ID\", j = ..., interval = \"(a, b)\" }}, ...]")
+            parse_interval(b["interval"], f"{self.where}: beside {b['claim']}")
         self._within()
 
     def _within(self):
@@ -197,6 +237,15 @@ class SmoothnessProfile(Kind):
         return dom.lo, dom.hi
 
     def evaluate(self) -> Verdict:
+        """The profile verdict; its ``profile`` (the C^j sets in short, the largest alpha, the exceptional
+        values, and the sentences for the claims of ``beside``) is what reports show beside the claims."""
+        import dataclasses
+
+        self.profile = None
+        v = self._evaluate()
+        return dataclasses.replace(v, profile=self.profile) if self.profile is not None else v
+
+    def _evaluate(self) -> Verdict:
         if self.arity != 2:                       # issue 12: ck_range_mary for each j
             from .mary import profile_verdict
 
@@ -257,6 +306,18 @@ class SmoothnessProfile(Kind):
         ev.append(alpha_ev)
         nums.insert(0, Number("largest j", largest))
         profile = "; ".join(f"{r[0]}: {r[1]}" for r in rows) + f"; {alpha_line}"
+        beside = []
+        for b in self.get("beside") or ():
+            blo, bhi, _, _ = parse_interval(b["interval"])
+            j = int(b["j"])
+            text, key = beside_text(sets, points, j, blo, bhi, p)
+            short = f"certified C^{j} set {compact_set(sets[j], points.get(j, ()))}: {key}" if j in sets else key
+            beside.append((b["claim"], text, short))
+            nums.append(Number(f"beside {b['claim']}", key))
+        self.profile = {"parameter": p.name, "within": interval_text(lo, hi), "largest": largest,
+                        "rows": rows, "compact": [(f"C^{j}", compact_set(sets[j], points[j]), row[2]) for j, row in zip(sets, rows)],
+                        "alpha": alpha_line, "exceptional": [(sp.sstr(q), m) for q, m in exc.items()],
+                        "beside": beside}
         claim = self.get("claimed")
         if claim is None:
             if all_cert:
