@@ -132,7 +132,14 @@ def _decimal(q, up: bool, digits: int = 17) -> str:
 
 
 def _word(word) -> str:
-    return " ".join(f"A{i}" for i in word)
+    """The product ``A_{w_1} ... A_{w_L}`` with powers for runs: ``(0, 0, 0, 1) -> 'A0^3 A1'``."""
+    out: list[str] = []
+    for i in word:
+        if out and out[-1][0] == i:
+            out[-1][1] += 1
+        else:
+            out.append([i, 1])
+    return " ".join(f"A{i}" + (f"^{c}" if c > 1 else "") for i, c in out)
 
 
 def cmd_jsr(args) -> None:
@@ -162,6 +169,8 @@ def cmd_jsr(args) -> None:
     if root is not None and r.status == "certified" and (
             method.startswith("spectral radius (single matrix)") or method.startswith("commuting")):
         exact_jsr = root                     # JSR = rho(A_i) exactly: proven, not bounded
+    elif r.value is not None:
+        exact_jsr = r.value                  # the certified bounds coincide
     if r.witness.get("closed") and w.get("polytope_vertices"):
         how = (f"invariant polytope with {w['polytope_vertices']} vertices, closed; certified norm "
                f"bound {float(w['certified_norm_bound']):.17g} at scale {float(w['scale_r']):.17g}")
@@ -189,8 +198,10 @@ def cmd_jsr(args) -> None:
     lines.append(f"witness: {how}")
     lines.append(f"method: {method}")
     lines.append(f"work: {r.provenance['work']} of {budget} units")
-    if r.status != "certified" and r.provenance.get("message"):
-        lines.append(f"note: {r.provenance['message']}")
+    if r.status != "certified":
+        lines.append(f"note: not certified to --gap {args.gap}: the invariant polytope did not close "
+                     f"({w.get('stop_reason', 'not attempted')}); a larger --budget tightens the "
+                     "bounds and may close it")
     data = {"file": args.file, "matrices": len(mats), "dimension": len(mats[0]),
             "lower": r.lower, "upper": r.upper, "status": r.status,
             "exact_value": exact_jsr, "smp_candidate": list(word),
