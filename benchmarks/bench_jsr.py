@@ -16,8 +16,9 @@ Families:
 * random nonnegative pairs (``integers(0, 10, ...)``, n = 4, 8, 16, seed 1);
 * the golden-ratio pair ``[[1,1],[0,1]], [[1,0],[1,1]]`` (JSR = golden ratio, s.m.p. A0 A1);
 * Gripenberg (1996), Sec. 4: ``[[3,0],[1,3]]/5, [[3,-3],[0,-1]]/5`` (JSR ~ 0.6597);
-* the 4x4 integer pair of the invariant-polytope literature (Guglielmi–Zennaro; also the example
-  of the D-Tarnu ``jsr`` prototype) and Jungers–Cicone–Guglielmi (2014) Ex. 6.1 (JSR ~ 1.7779);
+* the 4x4 integer pair of the README of the D-Tarnu ``jsr`` prototype (a Python implementation of
+  the Guglielmi–Protasov / Guglielmi–Zennaro polytope algorithms) and Jungers–Cicone–Guglielmi
+  (2014) Ex. 6.1 (JSR ~ 1.7779);
 * the finiteness counterexample family ``[[1,1],[0,1]], t [[1,0],[1,1]]`` (Blondel–Theys–Vladimirov
   2003; no s.m.p. at the critical ``t* = 0.7493265463...``, Hare–Morris–Sidorov–Theys 2011) at
   rationals near ``t*``;
@@ -72,7 +73,7 @@ def cases(quick: bool) -> list[tuple[str, list]]:
         ("nonneg 16x16 seed 1", random_pair(1, 16, 0)),
         ("golden pair", [[[1, 1], [0, 1]], [[1, 0], [1, 1]]]),
         ("Gripenberg 1996 Sec. 4", [[["3/5", 0], ["1/5", "3/5"]], [["3/5", "-3/5"], [0, "-1/5"]]]),
-        ("Guglielmi-Zennaro 4x4", [[[-3, -2, 1, 2], [-2, 0, -2, 1], [1, 3, -1, -5], [-3, -3, -2, -1]],
+        ("4x4 pair of the D-Tarnu jsr README", [[[-3, -2, 1, 2], [-2, 0, -2, 1], [1, 3, -1, -5], [-3, -3, -2, -1]],
                                    [[1, 0, -3, -1], [-4, -2, -1, -4], [-1, 0, -1, 2], [-1, -2, -1, 2]]]),
         ("Jungers-Cicone-Guglielmi Ex 6.1", [[[0, -1, 1, 1], [1, 0, 0, 0], [0, -1, 0, 0], [1, -1, -1, 0]],
                                              [[0, -1, 1, 0], [-1, -1, 1, 1], [-1, 0, 0, 0], [-1, -1, 0, -1]]]),

@@ -63,9 +63,13 @@ Algorithm (``method="auto"``)
    balanced hull of ``u``, ``conj(u)`` and their orbits, closes exactly; memberships are second
    order cone programs and the certificate is re-checked in Arb complex balls
    (:mod:`analysis.jsr._complex`).
-6. If no polytope closes: the same algorithm for ``A_i / (r (1 + eps))`` with decreasing
-   ``eps`` (a certified ``upper <= rho (1 + eps) c``), and always the rigorous norm bound
-   ``max_{|w|=l} ||P_w||^(1/l)`` in a balanced basis, in Arb ball arithmetic.
+6. If no polytope closes: a best-first product tree (Gripenberg's branch and bound,
+   :mod:`analysis.jsr._tree`) in the balanced ellipsoidal norm, certified in Arb balls: every
+   infinite product has a prefix ``u`` among the leaves, so ``JSR <= max_u ||P_u||^(1/|u|)``; its
+   longer products also raise the lower bound. Then the same polytope algorithm for
+   ``A_i / (r (1 + eps))`` with decreasing ``eps`` below the tree's gap (a certified
+   ``upper <= rho (1 + eps) c``); the rigorous norm bound ``max_{|w|=l} ||P_w||^(1/l)`` in a
+   balanced basis is the last resort.
 
 ``method="polytope"`` skips step 1's structural shortcuts (not the single-matrix case);
 ``method="norms"`` is the textbook method: exhaustive products up to ``max_length``.
@@ -559,10 +563,12 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         polytope, two membership tests (0.5 each), a quarter of a small LP, ``500 / (m n)`` of a
         full LP over ``m`` vertices, and a new vertex ``m n^2 / 30000``; in the complex polytope, two
         tests or ``1 / (5 + m n / 20)`` of a cone program; in the rigorous norm bound,
-        ``14000 / (n^3 + 8 n^2 + 400)`` Arb products. The search gets a quarter of the budget, the
-        polytope half of what is left (0.15 for a complex leading eigenvalue), the rebuilt, complex
-        and relaxed polytopes shares of the rest, the norm bound what remains (at least
-        ``MIN_UNITS``). Soft: a phase may overrun its share by one step, and the certificate of a
+        ``14000 / (n^3 + 8 n^2 + 400)`` Arb products; in the product tree, ``3500`` node entries (a
+        node counting ``n^2 + 16``) and ``16000 / (n^3 + 400)`` Arb products of its certificate.
+        The search gets a quarter of the budget, the polytope half of what is left (0.15 for a
+        complex leading eigenvalue), the rebuilt and complex polytopes shares of the rest; when no
+        polytope closed, the product tree ``TREE_SHARE`` (0.6) of what is then left (at least
+        ``MIN_UNITS``), the relaxed polytopes the rest. Soft: a phase may overrun its share by one step, and the certificate of a
         closed polytope always completes (it is not counted). ``provenance["work"]`` says how many
         units were spent, ``provenance["timing"]`` the wall-clock seconds (reported only).
     method
