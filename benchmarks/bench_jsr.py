@@ -132,6 +132,7 @@ def main() -> None:
           "inf-norm brute force: gap in our CPU | its CPU to our gap | balanced brute force: "
           "gap in our CPU | its CPU to our gap |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    jsr_bounds([[[1, 1], [0, 1]], [[1, 0], [1, 1]]], method="polytope")   # warm-up: imports
     for name, mats in cases(args.quick):
         if args.only and args.only not in name:
             continue
