@@ -7,7 +7,7 @@ and ``subdiv list`` start in a fraction of a second; ``tests/test_startup.py`` k
 
 The command groups live in their own modules and register themselves (:data:`COMMAND_MODULES`):
 :mod:`.stationary`, :mod:`.regularity`, :mod:`.atlas`, :mod:`.levels`, :mod:`.nonuniform`,
-:mod:`.report`, :mod:`.derive`; what they share is in :mod:`.common`.
+:mod:`.report`, :mod:`.derive`, :mod:`.jsr`; what they share is in :mod:`.common`.
 
 Every command takes a scheme in one of four ways — a catalogue name, a mask, paper-style
 rules, or a symbol expression — and parameter values with ``--param NAME=VALUE`` (exact:
@@ -51,7 +51,8 @@ class _VersionAction(argparse._VersionAction):
 
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
-                                     "analysis.cli.paperfile", "analysis.cli.derive", "analysis.cli.vertex")
+                                     "analysis.cli.paperfile", "analysis.cli.derive", "analysis.cli.vertex",
+                                     "analysis.cli.jsr")
 
 
 #: one or two examples per command, shown at the end of ``subdiv COMMAND --help`` (the user guide, docs/,

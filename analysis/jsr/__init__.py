@@ -63,9 +63,13 @@ Algorithm (``method="auto"``)
    balanced hull of ``u``, ``conj(u)`` and their orbits, closes exactly; memberships are second
    order cone programs and the certificate is re-checked in Arb complex balls
    (:mod:`analysis.jsr._complex`).
-6. If no polytope closes: the same algorithm for ``A_i / (r (1 + eps))`` with decreasing
-   ``eps`` (a certified ``upper <= rho (1 + eps) c``), and always the rigorous norm bound
-   ``max_{|w|=l} ||P_w||^(1/l)`` in a balanced basis, in Arb ball arithmetic.
+6. If no polytope closes: a best-first product tree (Gripenberg's branch and bound,
+   :mod:`analysis.jsr._tree`) in the balanced ellipsoidal norm, certified in Arb balls: every
+   infinite product has a prefix ``u`` among the leaves, so ``JSR <= max_u ||P_u||^(1/|u|)``; its
+   longer products also raise the lower bound. Then the same polytope algorithm for
+   ``A_i / (r (1 + eps))`` with decreasing ``eps`` below the tree's gap (a certified
+   ``upper <= rho (1 + eps) c``); the rigorous norm bound ``max_{|w|=l} ||P_w||^(1/l)`` in a
+   balanced basis is the last resort.
 
 ``method="polytope"`` skips step 1's structural shortcuts (not the single-matrix case);
 ``method="norms"`` is the textbook method: exhaustive products up to ``max_length``.
@@ -103,6 +107,7 @@ from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family
 from ._search import brute_force_bounds, canonical_word, smp_search
+from ._tree import tree_bounds
 from ._work import Work
 
 __all__ = ["jsr_bounds", "brute_force_bounds", "parse_family", "canonical_word", "Work", "DEFAULT_BUDGET"]
@@ -117,8 +122,10 @@ SUBSPACE_MAX_N = 40
 THIN_COND = 1e10
 #: default work budget of :func:`jsr_bounds` (units: see its docstring)
 DEFAULT_BUDGET = 10_000
-#: the fallback norm bound always gets at least this many units
+#: the fallback bounds always get at least this many units
 MIN_UNITS = 50
+#: share of what is left that the product tree gets when the invariant polytope did not close
+TREE_SHARE = 0.6
 
 
 # --------------------------------------------------------------------------------------------
@@ -437,6 +444,26 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
                                     "stop_reason": "closed (complex polytope)"})
         witness["complex_polytope"] = cinfo
 
+    # the product tree (Gripenberg's branch and bound in a balanced norm, certified in Arb):
+    # bounds from products that are never worse than the textbook ones, and longer products
+    # with a larger spectral radius (a better lower bound)
+    if not gap_ok(upper):
+        tr = tree_bounds(F, _at_least(work.share(TREE_SHARE), MIN_UNITS),
+                         lower_hint=float(lower), rel_gap=rel_gap)
+        nl, nrp = _lower_from_word(F, tr.word)
+        if nl > lower:
+            notes.append(f"the product tree found a better product {tr.word} "
+                         f"(rho^(1/L) ~ {tr.float_lower:.15g})")
+            lower, rp, word = nl, nrp, tr.word
+        witness["product_tree"] = {"nodes": tr.nodes, "depth": tr.depth, "leaves": tr.leaves,
+                                   "certified_products": tr.certified_products,
+                                   "certified_bound": _q(round_up(tr.upper)),
+                                   "stop": tr.stop_reason}
+        if upper is None or tr.upper < upper:
+            upper = tr.upper
+            method = ("product tree (Gripenberg branch and bound) in the balanced ellipsoidal "
+                      "norm, certified in Arb (the invariant polytope did not close)")
+
     # relaxed polytopes: A_i / (r (1 + eps)) contract, so the tree closes for eps > 0
     relaxed: dict[str, Any] = {}
     if not gap_ok(upper):
@@ -445,6 +472,8 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
                           reverse=True):
             if work.left <= 0.02 * total:
                 break
+            if upper is not None and r * (1 + Fraction(eps)) >= upper:
+                continue                       # cannot improve on the bound already certified
             re = r * (1 + Fraction(eps))
             roots, _ = _start_vertices(Fc.floats, rho_f, cands)
             st2 = build_polytope(Fc.floats, float(re), roots,
@@ -465,7 +494,7 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
                 break
         if relaxed:
             witness["relaxed_polytope"] = relaxed
-    if not gap_ok(upper):
+    if upper is None:
         nu, nl_ = rigorous_norm_upper(F, max_length, _at_least(work, MIN_UNITS))
         if upper is None or nu < upper:
             upper = nu
@@ -534,10 +563,12 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         polytope, two membership tests (0.5 each), a quarter of a small LP, ``500 / (m n)`` of a
         full LP over ``m`` vertices, and a new vertex ``m n^2 / 30000``; in the complex polytope, two
         tests or ``1 / (5 + m n / 20)`` of a cone program; in the rigorous norm bound,
-        ``14000 / (n^3 + 8 n^2 + 400)`` Arb products. The search gets a quarter of the budget, the
-        polytope half of what is left (0.15 for a complex leading eigenvalue), the rebuilt, complex
-        and relaxed polytopes shares of the rest, the norm bound what remains (at least
-        ``MIN_UNITS``). Soft: a phase may overrun its share by one step, and the certificate of a
+        ``14000 / (n^3 + 8 n^2 + 400)`` Arb products; in the product tree, ``3500`` node entries (a
+        node counting ``n^2 + 16``) and ``16000 / (n^3 + 400)`` Arb products of its certificate.
+        The search gets a quarter of the budget, the polytope half of what is left (0.15 for a
+        complex leading eigenvalue), the rebuilt and complex polytopes shares of the rest; when no
+        polytope closed, the product tree ``TREE_SHARE`` (0.6) of what is then left (at least
+        ``MIN_UNITS``), the relaxed polytopes the rest. Soft: a phase may overrun its share by one step, and the certificate of a
         closed polytope always completes (it is not counted). ``provenance["work"]`` says how many
         units were spent, ``provenance["timing"]`` the wall-clock seconds (reported only).
     method
@@ -658,11 +689,13 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
     if status == INCONCLUSIVE:
         prov["message"] = (
             f"upper/lower - 1 = {gap:.3g} > {rel_gap:g}: the invariant polytope did not close "
-            f"({b.witness.get('stop_reason', 'not attempted')}). A larger budget or "
-            "max_vertices, or a longer max_length (a better s.m.p. candidate) may settle it; "
-            "families with many near-tied products (the polytope grows towards each of them) "
-            "or a reducible family without an exact invariant subspace (ball or algebraic "
-            "entries) can need an analysis of their s.m.p.s by hand." if gap is not None else
+            f"({b.witness.get('stop_reason', 'not attempted')}) for the candidate s.m.p. "
+            f"{word}; the bounds are certified ({b.method}). What may settle it: a larger budget "
+            "(it tightens the product tree's bound and may close the polytope), a longer "
+            "max_length or a larger max_vertices (a better s.m.p. candidate). Families with many near-tied "
+            "products (the polytope grows towards each of them) or a reducible family without "
+            "an exact invariant subspace (ball or algebraic entries) can need an analysis of "
+            "their s.m.p.s by hand." if gap is not None else
             "no rigorous upper bound within the budget")
     value = _q(lower) if (upper is not None and lower == upper) else None
     return Result(value=value, status=status, lower=_q(lower), upper=_q(upper),
