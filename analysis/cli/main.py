@@ -87,6 +87,9 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "derive": ("subdiv derive --support 7 --interpolatory --symmetric primal --reproduce 1",
                "subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 "
                "--maximize holder --within=-1/16,0"),
+    "vertex": ("subdiv vertex --scheme loop --valence 3..8",
+               'subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..5'),
+    "jsr": ("subdiv jsr examples/jsr-gripenberg.json", "subdiv jsr examples/jsr-golden-pair.json --json"),
 }
 
 
