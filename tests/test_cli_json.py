@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import json
 import os
+from fractions import Fraction
 import subprocess
 import sys
 import textwrap
@@ -99,6 +100,11 @@ CASES = {
                   lambda d: d["wrote"].endswith("p.toml") and "smoothness profile" in d["kinds"]),
     "derive": (["derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1"],
                lambda d: d["dimension"] == 1 and d["status"] == "certified"),
+    "jsr": (["jsr", os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples",
+                                 "jsr-golden-pair.json")],
+            # JSR of [[1,1],[0,1]], [[1,0],[1,1]] is the golden ratio 1.61803398874989...
+            lambda d: d["status"] == "certified"
+            and Fraction(d["lower"]) < Fraction(16180339875, 10**10) < Fraction(d["upper"]) < Fraction(1618034, 10**6)),
     "vertex": (["vertex", "--scheme", "loop", "--valence", "4", "--ring", "1"],
                lambda d: d["valences"][0]["reif"]["status"] == "certified" and d["closed_form"]["lambda"] == "c/4 + 3/8"),
 }
