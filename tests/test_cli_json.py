@@ -104,7 +104,7 @@ CASES = {
                                  "jsr-golden-pair.json")],
             # JSR of [[1,1],[0,1]], [[1,0],[1,1]] is the golden ratio 1.61803398874989...
             lambda d: d["status"] == "certified"
-            and Fraction(d["lower"]) < Fraction(16180339875, 10**10) < Fraction(d["upper"]) < Fraction(1618034, 10**6)),
+            and Fraction(161803398874, 10**11) < Fraction(d["lower"]) <= Fraction(d["upper"]) < Fraction(161803398875, 10**11)),
     "vertex": (["vertex", "--scheme", "loop", "--valence", "4", "--ring", "1"],
                lambda d: d["valences"][0]["reif"]["status"] == "certified" and d["closed_form"]["lambda"] == "c/4 + 3/8"),
 }
