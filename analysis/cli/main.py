@@ -51,7 +51,8 @@ class _VersionAction(argparse._VersionAction):
 
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
-                                     "analysis.cli.paperfile", "analysis.cli.derive")
+                                     "analysis.cli.paperfile", "analysis.cli.derive",
+                                     "analysis.cli.surface")
 
 
 def build_parser(extra_modules: Sequence[str] = ()) -> argparse.ArgumentParser:

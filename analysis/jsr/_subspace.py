@@ -46,7 +46,10 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from flint import fmpq, fmpq_mat
+from flint import fmpq, fmpq_mat, nmod_mat
+
+#: the prime of the modular pre-check of a Krylov spin (:func:`_full_mod_p`)
+_PRIME = (1 << 61) - 1
 
 
 def _rref_rows(rows: list[list[fmpq]], n: int) -> list[list[fmpq]]:
@@ -85,6 +88,36 @@ def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> 
                 break
         basis = cur
     return basis
+
+
+def _to_mod_p(A: fmpq_mat) -> nmod_mat | None:
+    """``A`` reduced modulo :data:`_PRIME` (``A = N / d`` with ``d`` invertible mod p), or None."""
+    N, d = A.numer_denom()
+    if int(d) % _PRIME == 0:
+        return None
+    inv = pow(int(d), -1, _PRIME)
+    return nmod_mat(A.nrows(), A.ncols(), [int(x) % _PRIME * inv % _PRIME for x in N.entries()], _PRIME)
+
+
+def _full_mod_p(mats_p: Sequence[nmod_mat], start: list[fmpq], n: int) -> bool:
+    """True when the spin of ``start`` reduced mod p spans ``F_p^n``: then the rational spin spans ``Q^n``
+    (the rank of the reductions of the vectors ``A_w v`` is at most their rank over ``Q``), and the exact
+    spin, which could only return the whole space, is skipped. Pure speed-up: False decides nothing."""
+    col = _to_mod_p(fmpq_mat(n, 1, start))
+    if col is None:
+        return False
+    S = col.transpose()                                  # rows span the current space
+    dim = S.rank()
+    while dim < n:
+        rows = [S] + [(A * S.transpose()).transpose() for A in mats_p]
+        stacked = nmod_mat(sum(r.nrows() for r in rows), n,
+                           [int(x) for r in rows for x in r.entries()], _PRIME)
+        R, rank = stacked.rref()
+        if rank == dim:
+            return False
+        dim = rank
+        S = nmod_mat(rank, n, [int(R[i, j]) for i in range(rank) for j in range(n)], _PRIME)
+    return True
 
 
 def _kernel(M: fmpq_mat) -> list[list[fmpq]]:
@@ -154,12 +187,20 @@ def invariant_subspace(mats: Sequence[fmpq_mat]) -> fmpq_mat | None:
     if n < 2:
         return None
     best: list[list[fmpq]] | None = None
+    mats_p = [_to_mod_p(A) for A in mats]
+    if any(A is None for A in mats_p):
+        mats_p = None
     for v in _spin_candidates(mats):
+        if mats_p is not None and _full_mod_p(mats_p, v, n):
+            continue
         W = _krylov(mats, v, n, n)
         if 0 < len(W) < n and (best is None or len(W) < len(best)):
             best = W
     trans = [A.transpose() for A in mats]
+    trans_p = None if mats_p is None else [A.transpose() for A in mats_p]
     for v in _spin_candidates(trans):
+        if trans_p is not None and _full_mod_p(trans_p, v, n):
+            continue
         U = _krylov(trans, v, n, n)
         if 0 < len(U) < n:
             W = _orth_complement(U, n)
