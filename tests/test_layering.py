@@ -22,7 +22,7 @@ PACKAGES = ("analysis", "schemes", "papers")
 
 #: rank of each engine layer; equal rank = siblings (may not import each other)
 LAYERS = {"result": 0, "jsonable": 0, "algebra": 1, "stationary": 2, "jsr": 3, "regularity": 4,
-          "levels": 5, "nonuniform": 5, "claims": 6, "report": 7, "cli": 8, "__main__": 9}
+          "bivariate": 4, "levels": 5, "nonuniform": 5, "claims": 6, "report": 7, "cli": 8, "__main__": 9}
 #: the results contract: one base layer of two modules
 BASE = {"result", "jsonable"}
 MAX_LINES = 720

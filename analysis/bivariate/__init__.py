@@ -14,4 +14,7 @@ Modules: :mod:`.dilation` (digits, dual points, isotropy), :mod:`.mask` (the mas
 :mod:`.algebra` (sum rules, generation and reproduction degree, symmetry, box-spline factors),
 :mod:`.transition` (invariant support, transition operators, difference subspaces),
 :mod:`.holder` (certified Hölder exponent and C^k verdicts).
+
+Layering: a sibling of :mod:`analysis.regularity`; may import :mod:`analysis.algebra` (the reader) and
+:mod:`analysis.jsr` (the certified joint spectral radius), nothing above.
 """

@@ -49,6 +49,9 @@ def _mask_from_args(args):
     general = a
     if vals:
         a = a.at(vals)
+    if a.params:
+        raise AnalysisError(f"give values to the parameters {', '.join(p.name for p in a.params)} with "
+                            "--param NAME=VALUE (exact, e.g. w=1/16)")
     return general, a, label, vals
 
 
