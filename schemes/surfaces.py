@@ -45,6 +45,7 @@ class SurfaceEntry:
     defaults: Mapping[str, str] = field(default_factory=dict)
     claims: Mapping[str, Any] = field(default_factory=dict)
     aliases: tuple[str, ...] = ()
+    dilation_name: str = "dyadic"
 
     def mask(self, values: Mapping[str, Any] | None = None, **kw: Any):
         """The mask, with the parameters given (or the defaults) substituted; ``general=True`` keeps them."""
@@ -227,13 +228,13 @@ _ENTRIES = (
     SurfaceEntry("sqrt3", "Kobbelt's sqrt 3 scheme, regular part", _sqrt3,
                  "L. Kobbelt, sqrt(3)-subdivision, Proc. SIGGRAPH 2000, 103-112",
                  notes="dilation sqrt3 = [[2,-1],[1,1]] in the three-direction coordinates; alpha_6 = 1/3",
-                 claims={"sum_rules": 3, "C": 2}),
+                 claims={"sum_rules": 3, "C": 2}, dilation_name="sqrt3"),
     SurfaceEntry("quincunx-zp", "Quincunx scheme (1+z1)(1+z2)/2 (two steps: the Zwart-Powell element)",
                  lambda: box_spline_mask([_E1, _E2], dilation="quincunx", name="quincunx-zp"),
                  "two quincunx steps give the symbol a(z) a(z^M) of the Zwart-Powell mask with M = 2I (checked "
                  "exactly in the tests); L. Velho, D. Zorin, 4-8 subdivision, CAGD 18 (2001) 397-427 (quincunx "
                  "refinement of box splines)",
-                 claims={"sum_rules": 2, "alpha": 2, "C": 1}),
+                 claims={"sum_rules": 2, "alpha": 2, "C": 1}, dilation_name="quincunx"),
 )
 
 _BY_NAME = {e.slug: e for e in _ENTRIES}

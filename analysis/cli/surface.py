@@ -55,8 +55,21 @@ def _mask_from_args(args):
     return general, a, label, vals
 
 
+def _list(args) -> None:
+    from schemes.surfaces import entries
+
+    rows = [{"name": e.slug, "title": e.title, "dilation": e.dilation_name, "defaults": dict(e.defaults),
+             "source": e.source} for e in entries()]
+    text = "\n".join(f"{r['name']:<14} {r['title']}" + (f" [{', '.join(f'{k}={v}' for k, v in r['defaults'].items())}]"
+                                                        if r["defaults"] else "") for r in rows)
+    _emit(args, {"schemes": rows}, text)
+
+
 def cmd_surface(args) -> None:
     import sympy as sp
+
+    if args.list:
+        return _list(args)
 
     from ..bivariate.algebra import box_factors, reproduction, sum_rules, symmetry_group
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
@@ -117,10 +130,15 @@ def cmd_surface(args) -> None:
     data["smoothness"] = {f"C{l}": v for l, v in ck.items()}
     lines.append(f"transition operators: {D.m} matrices on |Omega| = {len(h.witness['omega'])} points, "
                  f"restricted to V_{h.witness['k']} (dimension {h.witness['dimension']})")
-    jl = f"JSR(T|V_{h.witness['k']}) in [{float(j.lower):.12g}, " + \
-        (f"{float(j.upper):.12g}]" if j.upper is not None else "?]") + f" ({j.status})"
+    kk = h.witness["k"]
     if "jsr_value" in h.witness:
-        jl = f"JSR(T|V_{h.witness['k']}) = {sp.sstr(h.witness['jsr_value'])} ({j.status})"
+        jl = f"JSR(T|V_{kk}) = {sp.sstr(h.witness['jsr_value'])} ({j.status})"
+    else:
+        w = "".join(map(str, j.witness.get("product") or ()))
+        lo_j = sp.sstr(j.lower) if sp.Rational(j.lower).q < 10 ** 6 else f"{float(j.lower):.15g}"
+        jl = f"JSR(T|V_{kk}) >= {lo_j} (rho(T_{w})^(1/{len(w)}), exact)"
+        if j.upper is not None:
+            jl += f", <= lower + {float(sp.Rational(j.upper) - sp.Rational(j.lower)):.2g} ({j.status})"
     lines.append(jl)
     if not D.isotropic:
         lines.append("alpha: inconclusive — M is anisotropic, -log_rho(M) JSR is not the Hölder exponent "
@@ -128,9 +146,11 @@ def cmd_surface(args) -> None:
     elif h.value is not None:
         lines.append(f"alpha = {sp.sstr(h.value)} exactly ({h.status})")
     else:
-        lo = "?" if h.lower is None else f"{float(h.lower):.12g}"
-        hi = "?" if h.upper is None else f"{float(h.upper):.12g}"
-        lines.append(f"alpha in [{lo}, {hi}] ({h.status})")
+        lo = "?" if h.lower is None else f"{float(h.lower):.15g}"
+        hi = "?" if h.upper is None else (sp.sstr(h.upper) if h.witness.get("alpha_upper_exact")
+                                          else f"{float(h.upper):.15g}")
+        note = "; the upper end is exact" if h.witness.get("alpha_upper_exact") else ""
+        lines.append(f"alpha in [{lo}, {hi}] ({h.status}{note})")
     verdicts = []
     for l, v in ck.items():
         verdicts.append(f"C^{l}: " + ("yes" if v else "no" if v is False else "undecided"))
@@ -151,5 +171,6 @@ def register(subparsers) -> None:
     s.add_argument("--dilation", help="dyadic (2I, default), quincunx, sqrt3, triadic, or the rows a,b;c,d")
     s.add_argument("--param", action="append", metavar="NAME=VALUE", help="a parameter value (exact), repeatable")
     s.add_argument("--budget", default="20000", help="work budget of the JSR certification (units counted, not timed)")
+    s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
