@@ -279,3 +279,37 @@ def test_cli_surface_errors_are_one_line(argv, match, capsys):
     cap = capsys.readouterr()
     assert cap.err.count("\n") == 1 and cap.err.startswith("subdiv: error:") and match in cap.err
     assert "error" in json.loads(cap.out)
+
+
+def test_butterfly_is_c1_not_c2_with_alpha_at_most_two_exactly():
+    # Guglielmi-Protasov 2016: alpha = 2 at w = 1/16; here alpha <= 2 exactly (JSR >= rho(T_eps) = 1/4) and
+    # alpha > 2 - 1e-12 from the certified polytope
+    h = holder_exponent(get("butterfly").mask())
+    assert h.status == CERTIFIED and h.upper == 2 and h.witness["alpha_upper_exact"]
+    assert 2 - h.lower < sp.Rational(1, 10 ** 12)
+    ck = smoothness_verdicts(h)
+    assert ck[1] is True and ck[2] is False
+
+
+# ----------------------------------------------------------------------------------------------
+# the documentation's console examples, run as written
+# ----------------------------------------------------------------------------------------------
+
+def _console_examples():
+    import re
+    import shlex
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parent.parent / "docs" / "surfaces.md").read_text(encoding="utf-8")
+    out = []
+    for block in re.findall(r"```console\n(.*?)```", text, flags=re.S):
+        lines = block.rstrip("\n").split("\n")
+        assert lines[0].startswith("$ subdiv ")
+        out.append((shlex.split(lines[0][len("$ subdiv "):]), "\n".join(lines[1:])))
+    return out
+
+
+@pytest.mark.parametrize("argv,expected", _console_examples(), ids=lambda x: " ".join(x)[:40] if isinstance(x, list) else "")
+def test_docs_console_examples(argv, expected, capsys):
+    assert main(argv) == 0
+    assert capsys.readouterr().out.rstrip("\n") == expected
