@@ -65,11 +65,72 @@ def _list(args) -> None:
     _emit(args, {"schemes": rows}, text)
 
 
+def _alpha_text(h) -> str:
+    import sympy as sp
+
+    if h.value is not None:
+        return f"alpha = {sp.sstr(h.value)} exactly ({h.status})"
+    lo = "?" if h.lower is None else f"{float(h.lower):.15g}"
+    hi = "?" if h.upper is None else (sp.sstr(h.upper) if h.witness.get("alpha_upper_exact")
+                                      else f"{float(h.upper):.15g}")
+    note = "; the upper end is exact" if h.witness.get("alpha_upper_exact") else ""
+    return f"alpha in [{lo}, {hi}] ({h.status}{note})"
+
+
+#: the most parameter values one --sweep takes (each is a certified JSR computation)
+MAX_SWEEP = 40
+
+
+def _sweep(args) -> None:
+    """``--sweep NAME=v1,v2,...``: the certified alpha enclosure and C^l verdicts at each value (a table; the
+    parameter values between the points are not certified)."""
+    import sympy as sp
+
+    from ..bivariate.holder import holder_exponent, smoothness_verdicts
+    from .common import read_number
+
+    if "=" not in args.sweep:
+        raise AnalysisError("--sweep takes NAME=v1,v2,..., e.g. w=0,1/32,1/16")
+    name, vals = (t.strip() for t in args.sweep.split("=", 1))
+    values = [v.strip() for v in vals.split(",") if v.strip()]
+    if not values or len(values) > MAX_SWEEP:
+        raise AnalysisError(f"--sweep takes 1 to {MAX_SWEEP} values, e.g. w=0,1/32,1/16")
+    if args.param and any(p.split("=", 1)[0].strip() == name for p in args.param):
+        raise AnalysisError(f"{name} is swept: do not also give --param {name}")
+    budget = work_arg(args.budget, "--budget")
+    rows, lines = [], []
+    for v in values:
+        x = read_number(v, f"--sweep {name}")
+        args_one = list(args.param or []) + [f"{name}={sp.sstr(x)}"]
+        args.param, saved = args_one, args.param
+        try:
+            _, a, label, _ = _mask_from_args(args)
+        finally:
+            args.param = saved
+        h = holder_exponent(a, budget=budget)
+        ck = smoothness_verdicts(h)
+        lo = None if h.lower is None else sp.sstr(h.lower)
+        hi = None if h.upper is None else sp.sstr(h.upper)
+        rows.append({name: sp.sstr(x), "status": h.status, "lower": lo, "upper": hi,
+                     "value": None if h.value is None else sp.sstr(h.value),
+                     "smoothness": {f"C{l}": c for l, c in ck.items()}})
+        enc = _alpha_text(h)
+        top = max((l for l, c in ck.items() if c), default=None)
+        smooth = "not C^0" if top is None and ck.get(0) is False else (
+            f"C^{top}" + ("" if ck.get(top + 1) is False else ", C^" + str(top + 1) + " undecided")
+            if top is not None else "C^0 undecided")
+        lines.append(f"{name} = {sp.sstr(x)}: {enc}; {smooth}")
+    lines.append("(each value certified on its own; the values between them are not)")
+    _emit(args, {"sweep": name, "points": rows}, "\n".join(lines))
+
+
 def cmd_surface(args) -> None:
     import sympy as sp
 
     if args.list:
         return _list(args)
+    if args.sweep:
+        return _sweep(args)
 
     from ..bivariate.algebra import box_factors, reproduction, sum_rules, symmetry_group
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
@@ -143,14 +204,8 @@ def cmd_surface(args) -> None:
     if not D.isotropic:
         lines.append("alpha: inconclusive — M is anisotropic, -log_rho(M) JSR is not the Hölder exponent "
                      "(Charina-Protasov 2019); only C^0 is decided")
-    elif h.value is not None:
-        lines.append(f"alpha = {sp.sstr(h.value)} exactly ({h.status})")
     else:
-        lo = "?" if h.lower is None else f"{float(h.lower):.15g}"
-        hi = "?" if h.upper is None else (sp.sstr(h.upper) if h.witness.get("alpha_upper_exact")
-                                          else f"{float(h.upper):.15g}")
-        note = "; the upper end is exact" if h.witness.get("alpha_upper_exact") else ""
-        lines.append(f"alpha in [{lo}, {hi}] ({h.status}{note})")
+        lines.append(_alpha_text(h))
     verdicts = []
     for l, v in ck.items():
         verdicts.append(f"C^{l}: " + ("yes" if v else "no" if v is False else "undecided"))
@@ -171,6 +226,8 @@ def register(subparsers) -> None:
     s.add_argument("--dilation", help="dyadic (2I, default), quincunx, sqrt3, triadic, or the rows a,b;c,d")
     s.add_argument("--param", action="append", metavar="NAME=VALUE", help="a parameter value (exact), repeatable")
     s.add_argument("--budget", default="20000", help="work budget of the JSR certification (units counted, not timed)")
+    s.add_argument("--sweep", metavar="NAME=v1,v2,...",
+                   help="the certified alpha and C^l at each value of one parameter (a table)")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
