@@ -32,7 +32,7 @@ from typing import Any, Iterator, Mapping
 
 import sympy as sp
 
-from ..algebra.reader import LIMITS, read_expression
+from ..algebra.reader import LIMITS, as_expr, read_expression
 from ..result import AnalysisError
 from .dilation import Dilation, parse_dilation
 
@@ -54,8 +54,9 @@ class BivariateMask:
     def __post_init__(self):
         clean = {}
         for (i, j), v in self.coeffs.items():
-            v = sp.nsimplify(v) if isinstance(v, sp.Float) else sp.sympify(v) if not isinstance(v, sp.Basic) else v
-            v = sp.expand(v)
+            if isinstance(v, (float, sp.Float)):
+                raise AnalysisError(f"the coefficient {i},{j} is a float; give it exactly (e.g. 1/16)")
+            v = sp.expand(as_expr(v, what=f"coefficient {i},{j}"))
             if v != 0:
                 clean[(int(i), int(j))] = v
         if not clean:
@@ -151,7 +152,8 @@ class BivariateMask:
             if k not in names:
                 raise AnalysisError(f"the mask has no parameter {k!r}" +
                                     (f"; its parameters: {', '.join(names)}" if names else ""))
-            subs[names[k]] = read_expression(v, free=False, what=f"value of {k}") if isinstance(v, str) else sp.sympify(v)
+            subs[names[k]] = (read_expression(v, free=False, what=f"value of {k}") if isinstance(v, str)
+                              else as_expr(v, what=f"value of {k}"))
         return BivariateMask({ij: v.subs(subs) for ij, v in self.coeffs.items()}, self.dilation, self.name)
 
     def grid(self) -> list[list[sp.Expr]]:
