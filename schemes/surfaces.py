@@ -46,6 +46,8 @@ class SurfaceEntry:
     claims: Mapping[str, Any] = field(default_factory=dict)
     aliases: tuple[str, ...] = ()
     dilation_name: str = "dyadic"
+    #: the grid whose lattice coordinates the mask uses (``quad`` or ``triangular``, for drawing)
+    grid: str = "quad"
 
     def mask(self, values: Mapping[str, Any] | None = None, **kw: Any):
         """The mask, with the parameters given (or the defaults) substituted; ``general=True`` keeps them."""
@@ -190,16 +192,18 @@ _ENTRIES = (
     SurfaceEntry("box-111", "Courant element (three-direction box spline B_111, piecewise linear)",
                  lambda: box_spline_mask([_E1, _E2, _E3], name="box-111"),
                  "C. de Boor, K. Höllig, S. Riemenschneider, Box splines, Springer (1993), Ch. I",
-                 claims={"sum_rules": 2, "reproduction": 1, "alpha": 1, "C": 0}, aliases=("courant",)),
+                 claims={"sum_rules": 2, "reproduction": 1, "alpha": 1, "C": 0}, aliases=("courant",),
+                 grid="triangular"),
     SurfaceEntry("loop", "Loop's scheme, regular part (three-direction box spline B_222)",
                  lambda: box_spline_mask([_E1, _E2, _E3] * 2, name="loop"),
                  "C. Loop, Smooth subdivision surfaces based on triangles, MS thesis, Univ. of Utah (1987); "
                  "de Boor-Höllig-Riemenschneider (1993)",
-                 claims={"sum_rules": 4, "reproduction": 1, "alpha": 3, "C": 2}, aliases=("box-222",)),
+                 claims={"sum_rules": 4, "reproduction": 1, "alpha": 3, "C": 2}, aliases=("box-222",),
+                 grid="triangular"),
     SurfaceEntry("box-333", "Three-direction box spline B_333",
                  lambda: box_spline_mask([_E1, _E2, _E3] * 3, name="box-333"),
                  "de Boor-Höllig-Riemenschneider (1993): C^{m(Xi)-2}, m(Xi) = 6",
-                 claims={"sum_rules": 6, "alpha": 5, "C": 4}),
+                 claims={"sum_rules": 6, "alpha": 5, "C": 4}, grid="triangular"),
     SurfaceEntry("zwart-powell", "Zwart-Powell element (four-direction box spline B_1111)",
                  lambda: box_spline_mask([_E1, _E2, _E3, _E4], name="zwart-powell"),
                  "P. B. Zwart, Multivariate splines with nondegenerate partitions, SIAM J. Numer. Anal. 10 (1973); "
@@ -219,7 +223,8 @@ _ENTRIES = (
                  "tension control, ACM Trans. Graph. 9 (1990) 160-169; alpha(1/16) = 2: N. Guglielmi, V. Protasov, "
                  "Invariant polytopes of linear operators with applications to regularity of wavelets and of "
                  "subdivisions, SIAM J. Matrix Anal. Appl. 37 (2016) 18-52",
-                 defaults={"w": "1/16"}, claims={"sum_rules": 4, "reproduction": 3, "alpha": 2, "C": 1}),
+                 defaults={"w": "1/16"}, claims={"sum_rules": 4, "reproduction": 3, "alpha": 2, "C": 1},
+                 grid="triangular"),
     SurfaceEntry("kobbelt-quad", "Kobbelt's interpolatory quad scheme, regular part (tensor 4-point)",
                  _tensor("four-point"),
                  "L. Kobbelt, Interpolatory subdivision on open quadrilateral nets with arbitrary topology, "
@@ -228,7 +233,7 @@ _ENTRIES = (
     SurfaceEntry("sqrt3", "Kobbelt's sqrt 3 scheme, regular part", _sqrt3,
                  "L. Kobbelt, sqrt(3)-subdivision, Proc. SIGGRAPH 2000, 103-112",
                  notes="dilation sqrt3 = [[2,-1],[1,1]] in the three-direction coordinates; alpha_6 = 1/3",
-                 claims={"sum_rules": 3, "C": 2}, dilation_name="sqrt3"),
+                 claims={"sum_rules": 3, "C": 2}, dilation_name="sqrt3", grid="triangular"),
     SurfaceEntry("quincunx-zp", "Quincunx scheme (1+z1)(1+z2)/2 (two steps: the Zwart-Powell element)",
                  lambda: box_spline_mask([_E1, _E2], dilation="quincunx", name="quincunx-zp"),
                  "two quincunx steps give the symbol a(z) a(z^M) of the Zwart-Powell mask with M = 2I (checked "

@@ -305,3 +305,14 @@ def _console_examples():
 def test_docs_console_examples(argv, expected, capsys):
     assert main(argv) == 0
     assert capsys.readouterr().out.rstrip("\n") == expected
+
+
+def test_refine_delta_keeps_the_mass_and_draws_a_figure(tmp_path, capsys):
+    from analysis.bivariate.refine import basic_limit_samples
+
+    pts, vals = basic_limit_samples(get("loop").mask(), 3, "triangular")
+    assert abs(vals.sum() - 4 ** 3) < 1e-9 and abs(pts[:, 0]).max() <= 2        # hexagonal support of radius 2
+    fig = tmp_path / "phi.png"
+    assert main(["surface", "--scheme", "box-111", "--refine", "2", "--figure", str(fig)]) == 0
+    assert fig.stat().st_size > 1000 and "triangular grid" in capsys.readouterr().out
+    assert main(["surface", "--scheme", "box-111", "--figure", str(fig)]) == 2

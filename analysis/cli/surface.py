@@ -23,6 +23,38 @@ from ..result import AnalysisError
 from .common import _emit, _parse_params, work_arg
 
 
+def _refine(args) -> None:
+    from ..bivariate.refine import basic_limit_samples
+    from .common import check_figure
+
+    if args.figure:
+        check_figure(args.figure, "--figure")
+    _, a, label, _ = _mask_from_args(args)
+    grid = args.grid
+    if grid is None:
+        grid = "quad"
+        if args.scheme is not None:
+            from schemes.surfaces import get
+
+            grid = get(args.scheme).grid
+    pts, vals = basic_limit_samples(a, args.refine, grid)
+    data = {"scheme": label, "steps": args.refine, "grid": grid, "samples": int(len(vals)),
+            "max": float(vals.max()), "min": float(vals.min()),
+            "bounding_box": [[float(pts[:, 0].min()), float(pts[:, 1].min())],
+                             [float(pts[:, 0].max()), float(pts[:, 1].max())]]}
+    text = (f"{label}: S^{args.refine} delta on the {grid} grid: {len(vals)} samples (floating point), "
+            f"values in [{data['min']:.6g}, {data['max']:.6g}], support within "
+            f"[{data['bounding_box'][0][0]:.4g}, {data['bounding_box'][1][0]:.4g}] x "
+            f"[{data['bounding_box'][0][1]:.4g}, {data['bounding_box'][1][1]:.4g}]")
+    if args.figure:
+        from ..report.surface_plots import plot_basic_limit
+
+        plot_basic_limit(pts, vals, args.figure, f"{label}: S^{args.refine} delta")
+        data["figure"] = args.figure
+        text += f"\nwrote {args.figure}"
+    _emit(args, data, text)
+
+
 def _mask_from_args(args):
     from ..bivariate.mask import BivariateMask
 
@@ -131,6 +163,10 @@ def cmd_surface(args) -> None:
         return _list(args)
     if args.sweep:
         return _sweep(args)
+    if args.refine is not None:
+        return _refine(args)
+    if args.figure or args.grid:
+        raise AnalysisError("--figure and --grid go with --refine N (e.g. --refine 4 --figure phi.png)")
 
     from ..bivariate.algebra import box_factors, reproduction, sum_rules, symmetry_group
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
@@ -228,6 +264,11 @@ def register(subparsers) -> None:
     s.add_argument("--budget", default="20000", help="work budget of the JSR certification (units counted, not timed)")
     s.add_argument("--sweep", metavar="NAME=v1,v2,...",
                    help="the certified alpha and C^l at each value of one parameter (a table)")
+    s.add_argument("--refine", type=int, metavar="N",
+                   help="apply N steps to the delta sequence (samples of the basic limit function, floating point)")
+    s.add_argument("--grid", choices=("quad", "triangular"),
+                   help="how to draw the lattice for --refine (default: the catalogue entry's grid, else quad)")
+    s.add_argument("--figure", help="with --refine: write a heat map (.png, .svg, .pdf)")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
