@@ -316,3 +316,12 @@ def test_refine_delta_keeps_the_mass_and_draws_a_figure(tmp_path, capsys):
     assert main(["surface", "--scheme", "box-111", "--refine", "2", "--figure", str(fig)]) == 0
     assert fig.stat().st_size > 1000 and "triangular grid" in capsys.readouterr().out
     assert main(["surface", "--scheme", "box-111", "--figure", str(fig)]) == 2
+
+
+def test_sum_rule_order_beyond_the_limit_is_refused(monkeypatch):
+    # with the limit lowered to 2, the bilinear mask (sum rules of order exactly 2) reaches it
+    import analysis.bivariate.holder as H
+
+    monkeypatch.setattr(H, "sum_rules", lambda a: sum_rules(a, max_order=2))
+    with pytest.raises(AnalysisError, match="every order up to 2"):
+        H.holder_exponent(BivariateMask.from_symbol("(1+z1)**2*(1+z2)**2/(4*z1*z2)"))

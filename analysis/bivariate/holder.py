@@ -97,7 +97,11 @@ def holder_exponent(a: BivariateMask, *, budget: int = BUDGET, max_length: int =
 
     D = a.dilation
     if k is None:
-        k = sum_rules(a).value
+        sr = sum_rules(a)
+        k = sr.value
+        if sr.witness["failing"] is None:
+            raise AnalysisError(f"the mask satisfies sum rules of every order up to {k} (the limit): the "
+                                "Hölder formula needs the exact order")
     if k == 0:
         raise AnalysisError("the mask does not satisfy the sum rules of order 1 (each coset summing to 1): "
                             "the scheme does not converge")
