@@ -98,6 +98,8 @@ CASES = {
     "check": (["check", "000"], lambda d: d["agree"] is True and d["claims"] > 0),
     "new-paper": (["new-paper", os.path.join(__import__("tempfile").mkdtemp(), "p.toml")],        # issue 11
                   lambda d: d["wrote"].endswith("p.toml") and "smoothness profile" in d["kinds"]),
+    "surface": (["surface", "--scheme", "box-111"],
+                lambda d: d["holder"]["value"] == "1" and d["smoothness"] == {"C0": True, "C1": False, "C2": False}),
     "derive": (["derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1"],
                lambda d: d["dimension"] == 1 and d["status"] == "certified"),
     "jsr": (["jsr", os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "examples",

@@ -24,6 +24,7 @@ PACKAGES = ("analysis", "schemes", "papers")
 
 #: rank of each engine layer; equal rank = siblings (may not import each other)
 LAYERS = {"result": 0, "jsonable": 0, "progress": 0, "_lazy": 0, "algebra": 1, "stationary": 2, "jsr": 3, "regularity": 4,
+          "bivariate": 4,
           "levels": 5, "nonuniform": 5, "claims": 6, "report": 7, "cli": 8, "api": 8, "__main__": 9}
 #: extraordinary vertices of surface schemes: above the algebra (local matrices, their spectra)
 LAYERS["vertex"] = 5

@@ -52,7 +52,7 @@ class _VersionAction(argparse._VersionAction):
 COMMAND_MODULES: tuple[str, ...] = ("analysis.cli.stationary", "analysis.cli.regularity", "analysis.cli.atlas",
                                      "analysis.cli.levels", "analysis.cli.nonuniform", "analysis.cli.report",
                                      "analysis.cli.paperfile", "analysis.cli.derive", "analysis.cli.vertex",
-                                     "analysis.cli.jsr")
+                                     "analysis.cli.jsr", "analysis.cli.surface")
 
 
 #: one or two examples per command, shown at the end of ``subdiv COMMAND --help`` (the user guide, docs/,
@@ -90,6 +90,7 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "vertex": ("subdiv vertex --scheme loop --valence 3..8",
                'subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..5'),
     "jsr": ("subdiv jsr examples/jsr-gripenberg.json", "subdiv jsr examples/jsr-golden-pair.json --json"),
+    "surface": ("subdiv surface --scheme loop", "subdiv surface --scheme butterfly --param w=1/16 --json"),
 }
 
 

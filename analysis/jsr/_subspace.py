@@ -46,7 +46,10 @@ from __future__ import annotations
 
 from typing import Sequence
 
-from flint import fmpq, fmpq_mat
+from flint import fmpq, fmpq_mat, nmod_mat
+
+#: the prime of the modular pre-check of a Krylov spin (:func:`_full_mod_p`)
+_PRIME = (1 << 61) - 1
 
 
 def _rref_rows(rows: list[list[fmpq]], n: int) -> list[list[fmpq]]:
@@ -58,33 +61,139 @@ def _rref_rows(rows: list[list[fmpq]], n: int) -> list[list[fmpq]]:
     return [[R[i, j] for j in range(n)] for i in range(rank)]
 
 
+class _Echelon:
+    """An echelon basis grown one vector at a time: each row has a pivot (its first nonzero entry,
+    scaled to 1) where the later rows vanish; :meth:`add` reduces a vector against the rows in
+    order (O(rank n) operations instead of a new row reduction of everything)."""
+
+    def __init__(self, n: int):
+        self.n = n
+        self.rows: list[tuple[int, list[fmpq]]] = []
+
+    def add(self, v: list[fmpq]) -> bool:
+        """Add ``v``; True when it was independent of the rows (the rank grew)."""
+        w = list(v)
+        for p, r in self.rows:
+            c = w[p]
+            if c != 0:
+                for j in range(p, self.n):
+                    if r[j] != 0:
+                        w[j] -= c * r[j]
+        for p in range(self.n):
+            if w[p] != 0:
+                inv = 1 / w[p]
+                self.rows.append((p, [x * inv for x in w]))
+                return True
+        return False
+
+    def __len__(self) -> int:
+        return len(self.rows)
+
+
 def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> list[list[fmpq]]:
-    """Basis (rows) of the smallest common invariant subspace containing ``start``; stops early
-    (returning what it has, of dimension ``>= limit``) once the dimension reaches ``limit``."""
-    basis = _rref_rows([start], n)
+    """Basis (rows, reduced echelon form) of the smallest common invariant subspace containing
+    ``start``; stops early (returning what it has, of dimension ``>= limit``) once the dimension
+    reaches ``limit``."""
+    ech = _Echelon(n)
+    if not ech.add(start):
+        return []
+    vecs = [start]
     frontier = [start]
-    while frontier and len(basis) < limit:
+    while frontier and len(ech) < limit:
         new_vecs = []
         for v in frontier:
             col = fmpq_mat(n, 1, v)
             for A in mats:
                 w = A * col
                 new_vecs.append([w[a, 0] for a in range(n)])
-        grown = _rref_rows(basis + new_vecs, n)
-        if len(grown) == len(basis):
-            break
-        # the new directions: candidates that increased the rank
+        # the new directions: candidates that increased the rank, in order
         frontier = []
-        cur = basis
         for v in new_vecs:
-            t = _rref_rows(cur + [v], n)
-            if len(t) > len(cur):
+            if ech.add(v):
                 frontier.append(v)
-                cur = t
-            if len(cur) >= limit:
+                vecs.append(v)
+            if len(ech) >= limit:
                 break
-        basis = cur
-    return basis
+    return _rref_rows(vecs, n)
+
+
+def _to_mod_p(A: fmpq_mat) -> nmod_mat | None:
+    """``A`` reduced modulo :data:`_PRIME` (``A = N / d`` with ``d`` invertible mod p), or None."""
+    N, d = A.numer_denom()
+    if int(d) % _PRIME == 0:
+        return None
+    inv = pow(int(d), -1, _PRIME)
+    return nmod_mat(A.nrows(), A.ncols(), [int(x) % _PRIME * inv % _PRIME for x in N.entries()], _PRIME)
+
+
+def _full_mod_p(mats_p: Sequence[nmod_mat], start: list[fmpq], n: int) -> bool:
+    """True when the spin of ``start`` reduced mod p spans ``F_p^n``: then the rational spin spans ``Q^n``
+    (the rank of the reductions of the vectors ``A_w v`` is at most their rank over ``Q``), and the exact
+    spin, which could only return the whole space, is skipped. Pure speed-up: False decides nothing."""
+    col = _to_mod_p(fmpq_mat(n, 1, start))
+    if col is None:
+        return False
+    S = col.transpose()                                  # rows span the current space
+    dim = S.rank()
+    while dim < n:
+        rows = [S] + [(A * S.transpose()).transpose() for A in mats_p]
+        stacked = nmod_mat(sum(r.nrows() for r in rows), n,
+                           [int(x) for r in rows for x in r.entries()], _PRIME)
+        R, rank = stacked.rref()
+        if rank == dim:
+            return False
+        dim = rank
+        S = nmod_mat(rank, n, [int(R[i, j]) for i in range(rank) for j in range(n)], _PRIME)
+    return True
+
+
+def _krylov_guided(mats: Sequence[fmpq_mat], mats_p: Sequence[nmod_mat], start: list[fmpq],
+                   n: int) -> list[list[fmpq]] | None:
+    """:func:`_krylov` with the independent vectors chosen modulo p (one C row reduction per level: the
+    pivot columns of ``[basis | candidates]``), the products computed exactly, and the span verified exactly:
+    it contains ``start`` and is invariant, and it is spanned by vectors ``A_w start``, so it *is* the
+    Krylov space, returned in the same reduced echelon form. None when the verification fails (a vector
+    dependent mod p only); the caller then runs the exact spin."""
+    def mod_col(v):
+        return _to_mod_p(fmpq_mat(n, 1, v))
+
+    first = mod_col(start)
+    if first is None:
+        return None
+    vecs = [start]
+    cols_p = [first]
+    frontier = [start]
+    while frontier:
+        cands = []
+        for v in frontier:
+            col = fmpq_mat(n, 1, v)
+            for A in mats:
+                w = A * col
+                cands.append([w[a, 0] for a in range(n)])
+        cand_p = [mod_col(v) for v in cands]
+        if any(c is None for c in cand_p):
+            return None
+        allc = cols_p + cand_p
+        M = nmod_mat(n, len(allc), [int(c[a, 0]) for a in range(n) for c in allc], _PRIME)
+        R, rank = M.rref()
+        pivots = []
+        for i in range(rank):
+            for j in range(len(allc)):
+                if int(R[i, j]) != 0:
+                    pivots.append(j)
+                    break
+        frontier = [cands[j - len(cols_p)] for j in pivots if j >= len(cols_p)]
+        cols_p = [allc[j] for j in pivots]
+        vecs += frontier
+    W = _rref_rows(vecs, n)
+    d = len(W)
+    Wm = fmpq_mat(d, n, [x for r in W for x in r])
+    for A in mats:
+        img = (A * Wm.transpose()).transpose()
+        stacked = fmpq_mat(2 * d, n, [x for r in W for x in r] + [img[i, j] for i in range(d) for j in range(n)])
+        if stacked.rank() != d:
+            return None
+    return W
 
 
 def _kernel(M: fmpq_mat) -> list[list[fmpq]]:
@@ -145,6 +254,18 @@ def _spin_candidates(mats: Sequence[fmpq_mat], trials: int = 3):
                 yield v
 
 
+def _spin(mats, mats_p, v, n) -> list[list[fmpq]] | None:
+    """The exact Krylov space of ``v``, or None when it is known (mod p) to be the whole space."""
+    if mats_p is None:
+        return _krylov(mats, v, n, n)
+    if _full_mod_p(mats_p, v, n):
+        return None
+    W = _krylov_guided(mats, mats_p, v, n)
+    if W is None:
+        W = _krylov(mats, v, n, n)
+    return W
+
+
 def invariant_subspace(mats: Sequence[fmpq_mat]) -> fmpq_mat | None:
     """An exact proper common invariant subspace (columns of the returned ``n x d`` matrix), or
     ``None`` when none is found among the spins of the start vectors of
@@ -154,13 +275,21 @@ def invariant_subspace(mats: Sequence[fmpq_mat]) -> fmpq_mat | None:
     if n < 2:
         return None
     best: list[list[fmpq]] | None = None
+    mats_p = [_to_mod_p(A) for A in mats]
+    if any(A is None for A in mats_p):
+        mats_p = None
     for v in _spin_candidates(mats):
-        W = _krylov(mats, v, n, n)
+        W = _spin(mats, mats_p, v, n)
+        if W is None:
+            continue
         if 0 < len(W) < n and (best is None or len(W) < len(best)):
             best = W
     trans = [A.transpose() for A in mats]
+    trans_p = None if mats_p is None else [A.transpose() for A in mats_p]
     for v in _spin_candidates(trans):
-        U = _krylov(trans, v, n, n)
+        U = _spin(trans, trans_p, v, n)
+        if U is None:
+            continue
         if 0 < len(U) < n:
             W = _orth_complement(U, n)
             if 0 < len(W) < n and (best is None or len(W) < len(best)):
