@@ -3,11 +3,11 @@
 One implementation for every arity ``m``: the binary case is
 :meth:`analysis.levels.level_dependent.LevelDependentScheme.difference` (``(2/(1+z))^j a^n``, unchanged);
 ``m >= 3`` divides by ``q_m`` with the synthetic division of :func:`divide_by_q` (used by
-:func:`analysis.levels.mary.difference_scheme_mary` and by the C^k routes of :mod:`.ck`).
+:meth:`analysis.levels.level_dependent.LevelDependentScheme.difference` and by the C^k routes of :mod:`.ck`).
 
 Why ``m/q_m``. With ``f^{n+1}(z) = a^n(z) f^n(z^m)`` and ``(1-z) a^n(z) = (1-z^m) a^n(z)/q_m(z)``,
 ``m^{n+1} (1-z) f^{n+1}(z) = (m a^n/q_m)(z) * m^n (1-z^m) f^n(z^m)``: the scaled differences ``m^n Delta f^n`` are
-refined by ``e^n = m a^n/q_m``. The stationary m-ary difference schemes of :mod:`analysis.stationary.mary`,
+refined by ``e^n = m a^n/q_m``. The stationary difference schemes of :mod:`analysis.stationary.difference`,
 ``a_k = (m z^{m-1}/q_m)^k a``, are the same up to the shift ``z^{(m-1)k}``, which norms and smoothness do not see
 (here the lowest exponent is kept, as the binary "divided" spelling does).
 

@@ -88,26 +88,30 @@ ARITHMETICS = ("arb", "mp", "float")
 # expressions in h
 # --------------------------------------------------------------------------------------------
 
-def to_h(expr) -> sp.Expr:
-    """Rewrite an expression in the level ``n`` as one in ``h = 2^-n``.
+def to_h(expr, arity: int = 2) -> sp.Expr:
+    """Rewrite an expression in the level ``n`` as one in ``h = m^-n`` (``m`` the arity).
 
     >>> to_h(sp.sin(3 * sp.Symbol("alpha") / 2 ** (N + 2)))
     sin(3*alpha*h/4)
     >>> to_h("4**(-n) + 1/8**n")                 # bases that are powers of 2
     h**3 + h**2
+    >>> to_h(sp.cos(sp.Symbol("theta") / 3 ** (N + 1)), 3)
+    cos(h*theta/3)
     """
+    m = arity
     if isinstance(expr, str):
         e = parse_coefficient(expr, locals_={"n": N, "h": H})
     else:
         e = as_expr(expr)
     e = e.subs(sp.Symbol("n"), N).subs(sp.Symbol("h", positive=True), H)
-    e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
-    e = e.subs(2 ** N, 1 / H)
+    if m == 2:
+        e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
+    e = e.subs(sp.Integer(m) ** N, 1 / H)
     if N in e.free_symbols:
-        e = sp.powsimp(sp.expand_power_exp(e)).subs(2 ** N, 1 / H)
+        e = sp.powsimp(sp.expand_power_exp(e)).subs(sp.Integer(m) ** N, 1 / H)
     if N in e.free_symbols:
-        raise AnalysisError(f"cannot write {expr} as a function of h = 2^-n "
-                            "(the level must enter only through 2^n)")
+        raise AnalysisError(f"cannot write {expr} as a function of h = {m}^-n "
+                            f"(the level must enter only through {m}^n)")
     return e
 
 
@@ -211,7 +215,8 @@ def resolve_where(where) -> dict:
 
 @dataclass(frozen=True)
 class LevelDependentScheme:
-    """A binary level-dependent scheme ``{S_{a^n}}``, mask coefficients exact in ``h = 2^-n``.
+    """A level-dependent scheme ``{S_{a^n}}`` of arity ``m`` (``(S_{a^n} f)_i = sum_j a^n_{i-mj} f_j``), mask
+    coefficients exact in ``h = m^-n`` (``2^-n`` for binary schemes, the default).
 
     Attributes
     ----------
@@ -222,6 +227,9 @@ class LevelDependentScheme:
         The lowest exponent.
     params : tuple of sympy.Symbol
         Free parameters (declare them ``positive=True`` when they are).
+    arity : int
+        The dilation ``m >= 2``; every analysis reads it from the scheme (``h = m^-n``, ``m`` residue
+        classes, weights ``m^{kn}``).
     """
 
     mask: tuple
@@ -232,9 +240,13 @@ class LevelDependentScheme:
     source: str = ""
     notes: str = ""
     defaults: Mapping[str, Any] = field(default_factory=dict, hash=False, compare=False)
+    arity: int = 2
 
     def __post_init__(self) -> None:
-        mask = tuple(to_h(c) for c in self.mask)
+        from ..algebra.factorization import check_arity
+
+        object.__setattr__(self, "arity", check_arity(self.arity))
+        mask = tuple(to_h(c, self.arity) for c in self.mask)
         if not mask:
             raise AnalysisError("the mask is empty")
         object.__setattr__(self, "mask", mask)
@@ -267,7 +279,8 @@ class LevelDependentScheme:
     @classmethod
     def from_symbol(cls, expr, *, where=None, params: Sequence[sp.Symbol] | None = None,
                     **kw) -> "LevelDependentScheme":
-        """The scheme of a symbol ``a^n(z)`` given as a string or sympy expression in ``z`` and ``n``.
+        """The scheme of a symbol ``a^n(z)`` given as a string or sympy expression in ``z`` and ``n``
+        (``arity=m`` in ``kw``: the level enters through ``m^n``).
 
         ``where``: helper definitions ``NAME -> EXPR`` (a mapping, or ``"NAME=EXPR"`` strings) that
         may use ``n``, parameters and each other (:func:`resolve_where`). Every other free symbol
@@ -277,6 +290,10 @@ class LevelDependentScheme:
         ...                                      where={"c": "cos(theta/2**(n+1))"})
         >>> e.params, e.limit()
         ((theta,), LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ))
+        >>> t = LevelDependentScheme.from_symbol("(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)",
+        ...     where=["c=cos(t/3**(n+1))", "d=cos(2*t/3**(n+1))"], arity=3)      # ternary exp. B-spline
+        >>> t.params, t.limit()
+        ((t,), LaurentSymbol([1/9, 1/3, 2/3, 7/9, 2/3, 1/3, 1/9], start=-3, domain=QQ))
         """
         defs = resolve_where(where)
         e = _read(expr, defs, "symbol")
@@ -305,7 +322,7 @@ class LevelDependentScheme:
 
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
-        coeffs = [to_h(as_expr(c).subs(defs)) for c in coeffs]
+        coeffs = [to_h(as_expr(c).subs(defs), kw.get("arity", 2)) for c in coeffs]
         # h (2 + 1/h) -> 2h + 1; (cos(h) + 4/h^3)/(16/h^3) -> (h^3 cos(h) + 4)/16: no negative power of h is left
         coeffs = [sp.cancel(c) if c.is_rational_function(H) or _negative_h_power(c) else c for c in coeffs]
         while len(coeffs) > 1 and coeffs[-1] == 0:
@@ -329,13 +346,21 @@ class LevelDependentScheme:
         return tuple(p.name for p in self.params)
 
     def mask_in_n(self) -> tuple:
-        """The coefficients as functions of the level ``n`` (``h = 2^-n``)."""
-        return tuple(c.subs(H, 2 ** (-N)) for c in self.mask)
+        """The coefficients as functions of the level ``n`` (``h = m^-n``)."""
+        return tuple(c.subs(H, sp.Integer(self.arity) ** (-N)) for c in self.mask)
 
     def symbol_expr(self) -> sp.Expr:
         """``a^n(z)`` as a sympy expression in ``z`` and ``h``."""
         z = sp.Symbol("z")
         return sum(c * z ** (self.start + k) for k, c in enumerate(self.mask))
+
+    def symbol_in_n(self) -> sp.Expr:
+        """``a^n(z)`` with ``h`` written as ``m^-n``."""
+        return self.symbol_expr().subs(H, sp.Integer(self.arity) ** (-N))
+
+    def residue_groups(self) -> list[list[int]]:
+        """The mask indices ``k`` by the residue class ``(start + k) mod m`` (the rows of ``S_{a^n}``)."""
+        return list(_residue_groups(self, self.arity).values())
 
     def _param(self, name: str) -> sp.Symbol:
         for p in self.params:
@@ -350,12 +375,12 @@ class LevelDependentScheme:
                for k, v in dict(values).items()}
         return LevelDependentScheme(tuple(c.subs(rep) for c in self.mask), self.start,
                                     tuple(p for p in self.params if p not in rep), slug=self.slug,
-                                    title=self.title, source=self.source, notes=self.notes)
+                                    title=self.title, source=self.source, notes=self.notes, arity=self.arity)
 
     def mask_at(self, n: int, values: Mapping[str, Any] | None = None) -> list[sp.Expr]:
         """The exact coefficients of ``a^n`` at level ``n`` (sympy expressions)."""
         s = self.subs(values) if values else self
-        return [c.subs(H, sp.Rational(1, 2 ** int(n))) for c in s.mask]
+        return [c.subs(H, sp.Rational(1, self.arity ** int(n))) for c in s.mask]
 
     # ---------------------------------------------------------------- limit and expansion
     @cached_property
@@ -421,7 +446,24 @@ class LevelDependentScheme:
 
         The remainder of each division, ``a^n(-1)``, must simplify to 0 exactly (else an
         :class:`AnalysisError`).
+
+        Arity ``m > 2``: the divided difference scheme ``(m/(1+z+...+z^(m-1)))^k a^n``
+        (:func:`analysis.levels.divided.divide_by_q`; the lowest exponent is kept, the shift
+        ``z^(m-1)`` of ``m^{n+1} Delta f^{n+1} = S_{z^(m-1) b^n} (m^n Delta f^n)`` dropped).
+
+        >>> d = ternary_exponential_bspline_2().difference(1)
+        >>> d.limit().expr().factor()                   # the ternary linear B-spline (shifted by one index)
+        (z**2 + z + 1)**2/(3*z**3)
         """
+        if self.arity != 2:
+            from .divided import divide_by_q
+
+            if isinstance(k, bool) or not isinstance(k, int) or k < 0:
+                raise AnalysisError(f"difference must be a non-negative integer, not {k!r}")
+            return LevelDependentScheme(tuple(divide_by_q(self.mask, self.arity, k)), self.start, self.params,
+                                        slug=f"{self.slug}-diff{k}",
+                                        title=f"{k}-th divided difference of {self.title or self.slug}",
+                                        source=self.source, arity=self.arity)
         if spelling not in ("divided", "paper"):
             raise AnalysisError(f"unknown spelling {spelling!r}; use 'divided' or 'paper'")
         coeffs = list(self.mask)
@@ -459,6 +501,32 @@ class LevelDependentScheme:
         return sum(c for i, c in enumerate(self.mask) if (self.start + i) % 2 == 0)
 
 
+def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDependentScheme:
+    """The ternary exponential B-spline scheme of degree 2 with frequencies ``{0, i theta, -i theta}``.
+
+    Derivation. ``e^{lambda x} chi_[0,1)(x) = sum_{k<3} e^{lambda k/3} (e^{lambda .} chi_[0,1/3))(x - k/3)``: the
+    exponential box with frequency ``lambda`` at spacing ``tau`` has the ternary mask ``1 + e^{lambda tau} z +
+    e^{2 lambda tau} z^2``; the exponential B-spline is the convolution of the boxes, so its level-n symbol is
+    the product of the factors with ``tau = 3^-(n+1)``. For ``lambda = +-i theta`` the product of the two factors is
+    ``1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4``, ``c_j = cos(j theta/3^(n+1))``; with the factor
+    ``1 + z + z^2`` (``lambda = 0``) and the normalisation ``a^n(1) = 3``:
+
+        a^n(z) = (1+z+z^2)(1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4) / ((3 + 4 c_1 + 2 c_2) z^3).
+
+    Check (tests): ``a^n(eps e^{-+ i theta tau}) = 0`` for ``eps = e^{+-2 pi i/3}`` (the scheme generates
+    ``1, cos(theta x), sin(theta x)``), and the limit is the ternary quadratic B-spline ``(1+z+z^2)^3/(9 z^3)``.
+    """
+    t = theta if theta is not None else sp.Symbol("theta", positive=True)
+    c1, c2 = sp.cos(t * H / 3), sp.cos(2 * t * H / 3)
+    num = sp.expand((1 + _Z + _Z ** 2) * (1 + 2 * c1 * _Z + (1 + 2 * c2) * _Z ** 2 + 2 * c1 * _Z ** 3 + _Z ** 4))
+    den = 3 + 4 * c1 + 2 * c2
+    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range(7)]
+    return LevelDependentScheme(tuple(coeffs), -3, (t,), slug="ternary-exp-bspline-2",
+                                title="ternary exponential B-spline of degree 2 (trigonometric)",
+                                source="derived here (analysis.levels.level_dependent.ternary_exponential_bspline_2)",
+                                arity=3)
+
+
 # --------------------------------------------------------------------------------------------
 # leading asymptotics of ||S_{a^n} - S_a||
 # --------------------------------------------------------------------------------------------
@@ -471,13 +539,14 @@ def _residue_groups(s: LevelDependentScheme, arity: int = 2) -> dict[int, list[i
     return groups
 
 
-def leading_asymptotics(s: LevelDependentScheme, arity: int = 2) -> Result:
+def leading_asymptotics(s: LevelDependentScheme, arity: int | None = None) -> Result:
     """``||S_{a^n} - S_a||_inf = C 2^{-q n} + O(2^{-(q+1) n})``: the exact ``C`` and ``q``.
 
     ``C = max_r sum_{k = r mod 2} |g_{k,q}|`` with ``g_{k,q}`` the exact ``h^q`` Taylor
     coefficient of ``a^n_k - a_k``. Certified (exact series); where ``C`` vanishes for special
     parameter values the order there is higher (``witness["per_residue"]`` shows the pieces).
     """
+    arity = s.arity if arity is None else arity
     q = s.order()
     rows = s.taylor(q + 1)
     per_res = {}
@@ -505,8 +574,9 @@ def level_precision(q: int, n: int, arity: int = 2, target_bits: int = 64) -> in
     return int(target_bits + q * n + 32) if arity == 2 else int(target_bits + q * n * math.log2(arity) + 32)
 
 
-def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64, *, arity: int = 2) -> int:
+def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64, *, arity: int | None = None) -> int:
     """Working precision for level n: ``target + q n log2(m) + 32`` bits (q = the leading order, m the arity)."""
+    arity = s.arity if arity is None else arity
     try:
         q = s.order()
     except AnalysisError:
@@ -532,8 +602,9 @@ def _env_values(s: LevelDependentScheme, values: Mapping[str, Any] | None) -> di
 
 
 def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, prec: int | None = None,
-                            arity: int = 2):
+                            arity: int | None = None):
     """Arb enclosures of ``a^n_k - a_k`` for every k (``h = m^-n``, m = ``arity``; params exact or boxes)."""
+    arity = s.arity if arity is None else arity
     env = _env_values(s, values)
     prec = prec or default_precision(s, n, arity=arity)
     with workprec(prec):
@@ -548,7 +619,7 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
 
 
 def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None = None, *,
-             arithmetic: str = "arb", prec: int | None = None, arity: int = 2) -> Result:
+             arithmetic: str = "arb", prec: int | None = None, arity: int | None = None) -> Result:
     """``||S_{a^n} - S_a||_inf`` at level ``n`` (``arity`` m: ``h = m^-n``, m residue classes).
 
     ``arithmetic="arb"``: a certified enclosure ``[lower, upper]`` (exact rationals) from ball
@@ -556,6 +627,7 @@ def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None =
     exact numbers or ``(lo, hi)`` boxes. ``"mp"``: mpmath at ``prec`` bits, numerical.
     ``"float"``: float64, numerical, and wrong at large n (cancellation).
     """
+    arity = s.arity if arity is None else arity
     if arithmetic not in ARITHMETICS:
         raise AnalysisError(f"unknown arithmetic {arithmetic!r}; use one of {', '.join(ARITHMETICS)}")
     if not isinstance(n, int) or n < 0:
