@@ -1,6 +1,6 @@
 """Issue 12 (+ issue 13 item 6): C^k verdicts of level-dependent m-ary schemes reach the truth.
 
-:func:`analysis.levels.mary.level_smoothness` is :func:`analysis.levels.ck.level_smoothness` with
+:func:`analysis.levels.ck.level_smoothness` on a scheme of arity m (carried by the scheme) is the binary chain with
 ``arity = m``: Dyn–Levin direct, on the m-ary divided difference schemes ``(m/q_m)^j a^n``, on the generalized
 ones ``m^j a^n/p_n`` (exponential factors ``q_m(e^{lambda m^-(n+1)} z)``), and "not C^d" for m-ary exponential
 B-spline schemes.

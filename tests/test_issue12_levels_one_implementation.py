@@ -1,6 +1,6 @@
 """Issue 12 (level-dependent m-ary schemes) / issue 13 item 6: one implementation of the level-dependent code
-for every arity — the m-ary functions (:mod:`analysis.levels.mary`, :mod:`analysis.levels.reproduction`,
-:mod:`analysis.cli.levels_mary`) run the binary code with ``arity = m``, so its checks serve every arity.
+for every arity — a level-dependent scheme carries its arity and the functions of :mod:`analysis.levels`
+(series, reproduction) and :mod:`analysis.cli.levels` run one code with ``arity = m``, so its checks serve every arity.
 
 Independent checks: the supports below are read off the exact masks by hand (stated in each test); the mpmath
 distance is a separate evaluation (sympy lambdify in mpmath at 60 digits) of the same exact coefficients.
@@ -16,8 +16,10 @@ import pytest
 import sympy as sp
 
 from analysis.levels import series
-from analysis.levels.level_dependent import LevelDependentScheme, distance, ternary_exponential_bspline_2
-from analysis.levels.series import same_support, series_by_leading_term
+from analysis.levels.expbspline import ternary_exponential_bspline_2
+from analysis.levels.level_dependent import LevelDependentScheme, distance
+from analysis.levels.leading_term import series_by_leading_term
+from analysis.levels.series import same_support
 from analysis.result import CERTIFIED
 
 SYM3 = "(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)"

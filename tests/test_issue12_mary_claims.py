@@ -232,5 +232,5 @@ def test_mary_kinds_list_matches_the_classes():
     from analysis.claims.kinds.base import ANY_ARITY_KINDS as MARY_KINDS
     from analysis.claims.template import template
 
-    assert sorted(n for n, c in KIND_CLASSES.items() if c.mary) == sorted(MARY_KINDS)
+    assert sorted(n for n, c in KIND_CLASSES.items() if c.any_arity) == sorted(MARY_KINDS)
     assert all(k in " ".join(template().split()) for k in MARY_KINDS)

@@ -28,8 +28,11 @@ import sympy as sp
 from analysis.claims.model import compare_verdicts, evaluate_paper, verdicts_json
 from analysis.claims.paperfile import parse_paper
 from analysis.cli.report import load_file
-from analysis.levels.level_dependent import H, LevelDependentScheme, ternary_exponential_bspline_2
-from analysis.levels.series import series_by_leading_term, weighted_series
+from analysis.levels.expbspline import ternary_exponential_bspline_2
+from analysis.levels.divided import divided_difference
+from analysis.levels.level_dependent import H, LevelDependentScheme
+from analysis.levels.leading_term import series_by_leading_term
+from analysis.levels.series import weighted_series
 from analysis.levels.reproduction import generation, reproduction
 from analysis.result import AnalysisError
 
@@ -159,7 +162,7 @@ def _frac_mask(n):
 
 def test_difference_scheme_by_direct_refinement():
     s = LevelDependentScheme.from_mask(HAT, -3, arity=3)
-    d = s.difference(1)
+    d = divided_difference(s, 1)
     f = {j: Fraction((7 * j * j + 3 * j) % 11 - 5) for j in range(-8, 9)}
     for n in (0, 1, 2):
         g = _refine(_frac_mask(n), -3, f, 3)
@@ -175,7 +178,7 @@ def test_difference_scheme_by_direct_refinement():
 
 def test_difference_scheme_not_divisible_is_one_line():
     with pytest.raises(AnalysisError, match="does not divide"):
-        LevelDependentScheme.from_symbol("(1+z+z**2)/z + 3**(-n)*z", arity=3).difference(1)
+        divided_difference(LevelDependentScheme.from_symbol("(1+z+z**2)/z + 3**(-n)*z", arity=3), 1)
 
 
 def test_boxes_pieces_depth():

@@ -111,7 +111,8 @@ def cmd_series(args) -> None:
     from ..jsonable import fmt_lower, fmt_upper
 
     from ..levels.level_dependent import leading_asymptotics
-    from ..levels.series import series_by_leading_term, weighted_series
+    from ..levels.leading_term import series_by_leading_term
+    from ..levels.series import weighted_series
     from .common import scheme_arity
 
     if (arity := scheme_arity(args, level=True)) != 2:          # arity m > 2: the level through m^n
@@ -129,7 +130,9 @@ def cmd_series(args) -> None:
             if isinstance(v, bool) or not isinstance(v, int) or v < (1 if name == "--pieces" else 0):
                 raise AnalysisError(f"{name} must be an integer >= {1 if name == '--pieces' else 0}, not {v!r}")
         if d:
-            s = s.difference(d)
+            from ..levels.divided import divided_difference
+
+            s = divided_difference(s, d)
         rows, lines = [], []
         for k in _ints(args.m, "--m"):
             r = series_by_leading_term(s, vals, k, pieces=pieces, depth=depth, N=args.N)
@@ -337,6 +340,7 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
     import sympy as sp
 
     from ..levels.ck import level_smoothness
+    from ..levels.level_dependent import H, N
 
     stationary_options_refused(args)
     if arity != 2:
@@ -345,7 +349,7 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
         r = level_smoothness(s, vals, k_max=k_max_arg(args))
         point = {q: vals[q.name] for q in s.params if not isinstance(vals[q.name], tuple)}
         lines = [f"scheme: {s.slug} (level-dependent, arity {arity}, h = {arity}^-n)",
-                 f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_in_n().subs(point)))}",
+                 f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(H, sp.Integer(arity) ** (-N)).subs(point)))}",
                  limit_line(r.witness["limit"])] + verdict_lines(r)
         _emit(args, {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()},
               "\n".join(lines))

@@ -417,3 +417,29 @@ def not_ck(s: LevelDependentScheme, arity: int = 2) -> Result:
                                        + ("" if arity == 2 else f"; dilation {arity}: the same B_Lambda (refinement "
                                           "identity in analysis.levels.expbspline)"))},
                   provenance={"method": "exact recognition + exponential B-spline theorem"})
+
+
+def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDependentScheme:
+    """The ternary exponential B-spline scheme of degree 2 with frequencies ``{0, i theta, -i theta}``.
+
+    Derivation. ``e^{lambda x} chi_[0,1)(x) = sum_{k<3} e^{lambda k/3} (e^{lambda .} chi_[0,1/3))(x - k/3)``: the
+    exponential box with frequency ``lambda`` at spacing ``tau`` has the ternary mask ``1 + e^{lambda tau} z +
+    e^{2 lambda tau} z^2``; the exponential B-spline is the convolution of the boxes, so its level-n symbol is
+    the product of the factors with ``tau = 3^-(n+1)``. For ``lambda = +-i theta`` the product of the two factors is
+    ``1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4``, ``c_j = cos(j theta/3^(n+1))``; with the factor
+    ``1 + z + z^2`` (``lambda = 0``) and the normalisation ``a^n(1) = 3``:
+
+        a^n(z) = (1+z+z^2)(1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4) / ((3 + 4 c_1 + 2 c_2) z^3).
+
+    Check (tests): ``a^n(eps e^{-+ i theta tau}) = 0`` for ``eps = e^{+-2 pi i/3}`` (the scheme generates
+    ``1, cos(theta x), sin(theta x)``), and the limit is the ternary quadratic B-spline ``(1+z+z^2)^3/(9 z^3)``.
+    """
+    t = theta if theta is not None else sp.Symbol("theta", positive=True)
+    c1, c2 = sp.cos(t * H / 3), sp.cos(2 * t * H / 3)
+    num = sp.expand((1 + _Z + _Z ** 2) * (1 + 2 * c1 * _Z + (1 + 2 * c2) * _Z ** 2 + 2 * c1 * _Z ** 3 + _Z ** 4))
+    den = 3 + 4 * c1 + 2 * c2
+    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range(7)]
+    return LevelDependentScheme(tuple(coeffs), -3, (t,), slug="ternary-exp-bspline-2",
+                                title="ternary exponential B-spline of degree 2 (trigonometric)",
+                                source="derived here (analysis.levels.expbspline.ternary_exponential_bspline_2)",
+                                arity=3)

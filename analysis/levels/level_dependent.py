@@ -228,8 +228,7 @@ class LevelDependentScheme:
     params : tuple of sympy.Symbol
         Free parameters (declare them ``positive=True`` when they are).
     arity : int
-        The dilation ``m >= 2``; every analysis reads it from the scheme (``h = m^-n``, ``m`` residue
-        classes, weights ``m^{kn}``).
+        The dilation ``m >= 2``, read by every analysis (``h = m^-n``, ``m`` residue classes, weights ``m^{kn}``).
     """
 
     mask: tuple
@@ -244,7 +243,6 @@ class LevelDependentScheme:
 
     def __post_init__(self) -> None:
         from ..algebra.factorization import check_arity
-
         object.__setattr__(self, "arity", check_arity(self.arity))
         mask = tuple(to_h(c, self.arity) for c in self.mask)
         if not mask:
@@ -279,8 +277,7 @@ class LevelDependentScheme:
     @classmethod
     def from_symbol(cls, expr, *, where=None, params: Sequence[sp.Symbol] | None = None,
                     **kw) -> "LevelDependentScheme":
-        """The scheme of a symbol ``a^n(z)`` given as a string or sympy expression in ``z`` and ``n``
-        (``arity=m`` in ``kw``: the level enters through ``m^n``).
+        """The scheme of a symbol ``a^n(z)`` given as a string or sympy expression in ``z`` and ``n``.
 
         ``where``: helper definitions ``NAME -> EXPR`` (a mapping, or ``"NAME=EXPR"`` strings) that
         may use ``n``, parameters and each other (:func:`resolve_where`). Every other free symbol
@@ -290,10 +287,6 @@ class LevelDependentScheme:
         ...                                      where={"c": "cos(theta/2**(n+1))"})
         >>> e.params, e.limit()
         ((theta,), LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ))
-        >>> t = LevelDependentScheme.from_symbol("(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)",
-        ...     where=["c=cos(t/3**(n+1))", "d=cos(2*t/3**(n+1))"], arity=3)      # ternary exp. B-spline
-        >>> t.params, t.limit()
-        ((t,), LaurentSymbol([1/9, 1/3, 2/3, 7/9, 2/3, 1/3, 1/9], start=-3, domain=QQ))
         """
         defs = resolve_where(where)
         e = _read(expr, defs, "symbol")
@@ -353,14 +346,6 @@ class LevelDependentScheme:
         """``a^n(z)`` as a sympy expression in ``z`` and ``h``."""
         z = sp.Symbol("z")
         return sum(c * z ** (self.start + k) for k, c in enumerate(self.mask))
-
-    def symbol_in_n(self) -> sp.Expr:
-        """``a^n(z)`` with ``h`` written as ``m^-n``."""
-        return self.symbol_expr().subs(H, sp.Integer(self.arity) ** (-N))
-
-    def residue_groups(self) -> list[list[int]]:
-        """The mask indices ``k`` by the residue class ``(start + k) mod m`` (the rows of ``S_{a^n}``)."""
-        return list(_residue_groups(self, self.arity).values())
 
     def _param(self, name: str) -> sp.Symbol:
         for p in self.params:
@@ -445,25 +430,10 @@ class LevelDependentScheme:
         """The k-th difference scheme ``(2/(1+z))^k a^n`` ("divided") or ``(2z/(1+z))^k a^n``.
 
         The remainder of each division, ``a^n(-1)``, must simplify to 0 exactly (else an
-        :class:`AnalysisError`).
-
-        Arity ``m > 2``: the divided difference scheme ``(m/(1+z+...+z^(m-1)))^k a^n``
-        (:func:`analysis.levels.divided.divide_by_q`; the lowest exponent is kept, the shift
-        ``z^(m-1)`` of ``m^{n+1} Delta f^{n+1} = S_{z^(m-1) b^n} (m^n Delta f^n)`` dropped).
-
-        >>> d = ternary_exponential_bspline_2().difference(1)
-        >>> d.limit().expr().factor()                   # the ternary linear B-spline (shifted by one index)
-        (z**2 + z + 1)**2/(3*z**3)
+        :class:`AnalysisError`). Arity ``m > 2``: :func:`analysis.levels.divided.divided_difference`.
         """
         if self.arity != 2:
-            from .divided import divide_by_q
-
-            if isinstance(k, bool) or not isinstance(k, int) or k < 0:
-                raise AnalysisError(f"difference must be a non-negative integer, not {k!r}")
-            return LevelDependentScheme(tuple(divide_by_q(self.mask, self.arity, k)), self.start, self.params,
-                                        slug=f"{self.slug}-diff{k}",
-                                        title=f"{k}-th divided difference of {self.title or self.slug}",
-                                        source=self.source, arity=self.arity)
+            raise AnalysisError(f"arity {self.arity}: use analysis.levels.divided.divided_difference(s, {k})")
         if spelling not in ("divided", "paper"):
             raise AnalysisError(f"unknown spelling {spelling!r}; use 'divided' or 'paper'")
         coeffs = list(self.mask)
@@ -499,32 +469,6 @@ class LevelDependentScheme:
     def stencil_sum(self) -> sp.Expr:
         """The sum of the even stencil, ``sum_j a^n_{2j}`` (exact expression in h)."""
         return sum(c for i, c in enumerate(self.mask) if (self.start + i) % 2 == 0)
-
-
-def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDependentScheme:
-    """The ternary exponential B-spline scheme of degree 2 with frequencies ``{0, i theta, -i theta}``.
-
-    Derivation. ``e^{lambda x} chi_[0,1)(x) = sum_{k<3} e^{lambda k/3} (e^{lambda .} chi_[0,1/3))(x - k/3)``: the
-    exponential box with frequency ``lambda`` at spacing ``tau`` has the ternary mask ``1 + e^{lambda tau} z +
-    e^{2 lambda tau} z^2``; the exponential B-spline is the convolution of the boxes, so its level-n symbol is
-    the product of the factors with ``tau = 3^-(n+1)``. For ``lambda = +-i theta`` the product of the two factors is
-    ``1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4``, ``c_j = cos(j theta/3^(n+1))``; with the factor
-    ``1 + z + z^2`` (``lambda = 0``) and the normalisation ``a^n(1) = 3``:
-
-        a^n(z) = (1+z+z^2)(1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4) / ((3 + 4 c_1 + 2 c_2) z^3).
-
-    Check (tests): ``a^n(eps e^{-+ i theta tau}) = 0`` for ``eps = e^{+-2 pi i/3}`` (the scheme generates
-    ``1, cos(theta x), sin(theta x)``), and the limit is the ternary quadratic B-spline ``(1+z+z^2)^3/(9 z^3)``.
-    """
-    t = theta if theta is not None else sp.Symbol("theta", positive=True)
-    c1, c2 = sp.cos(t * H / 3), sp.cos(2 * t * H / 3)
-    num = sp.expand((1 + _Z + _Z ** 2) * (1 + 2 * c1 * _Z + (1 + 2 * c2) * _Z ** 2 + 2 * c1 * _Z ** 3 + _Z ** 4))
-    den = 3 + 4 * c1 + 2 * c2
-    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range(7)]
-    return LevelDependentScheme(tuple(coeffs), -3, (t,), slug="ternary-exp-bspline-2",
-                                title="ternary exponential B-spline of degree 2 (trigonometric)",
-                                source="derived here (analysis.levels.level_dependent.ternary_exponential_bspline_2)",
-                                arity=3)
 
 
 # --------------------------------------------------------------------------------------------

@@ -185,7 +185,7 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
     Arity ``m > 2`` (the scheme's; module docstring): the m sub-symbols ``A_r(w)``, ``w = e^{-lambda h/m}``,
     are equal identically.
 
-    >>> from analysis.levels.level_dependent import ternary_exponential_bspline_2
+    >>> from analysis.levels.expbspline import ternary_exponential_bspline_2
     >>> t3 = ternary_exponential_bspline_2()
     >>> generation(t3, [0, sp.I * t3.params[0], -sp.I * t3.params[0]]).status          # 1, cos(theta x), sin(theta x)
     'certified'
@@ -249,7 +249,7 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
     Boxes in ``values`` as in :func:`generation`. Arity ``m > 2``: ``a^n(w) = m w^tau``, ``w = e^{-lambda h/m}``,
     ``tau = a'(1)/m`` (module docstring).
 
-    >>> from analysis.levels.level_dependent import ternary_exponential_bspline_2
+    >>> from analysis.levels.expbspline import ternary_exponential_bspline_2
     >>> r = reproduction(ternary_exponential_bspline_2(), [0])          # reproduces constants
     >>> r.status, r.witness["tau"]
     ('certified', 0)

@@ -40,7 +40,8 @@ from __future__ import annotations
 import sympy as sp
 
 from ...levels.reproduction import generation, reproduction
-from ...levels.series import series_by_leading_term, weighted_series
+from ...levels.leading_term import series_by_leading_term
+from ...levels.series import weighted_series
 from ...result import CERTIFIED, AnalysisError
 from ..model import Number, Verdict
 from ...algebra.reader import read_in_context
