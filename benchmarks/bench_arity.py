@@ -71,14 +71,14 @@ def sobolev() -> None:
 
 def levels() -> None:
     from analysis.levels.ck import level_smoothness
-    from analysis.levels.level_dependent import ternary_exponential_bspline_2
-    from analysis.levels.series import weighted_series
+    from analysis.levels.expbspline import ternary_exponential_bspline_2
+    from analysis.levels.leading_term import series_by_leading_term
 
     s = ternary_exponential_bspline_2()
     print("\nternary exponential B-spline of degree 2, theta = 1 (level-dependent)")
     for k in (0, 1, 2):
         t0 = time.perf_counter()
-        r = weighted_series(s, {"theta": 1}, k)
+        r = series_by_leading_term(s, {"theta": 1}, k)
         print(f"  sum 3^({k}n)||S_(a^n) - S_a||: {r.witness['verdict']:<10} {r.status:<10} "
               f"{time.perf_counter() - t0:7.3f} s")
     t0 = time.perf_counter()
