@@ -83,7 +83,7 @@ def difference_symbol(a: LaurentSymbol, m: int, *, spelling: str = "paper", arit
 
 def iterated_symbol(a: LaurentSymbol, L: int, *, arity: int = 2) -> LaurentSymbol:
     """``a(z) a(z^M) ... a(z^{M^{L-1}})``, the symbol of ``S_a^L`` (exact, sympy; ``M`` the arity)."""
-    if not isinstance(L, int) or L < 1:
+    if L < 1:
         raise AnalysisError("L must be a positive integer")
     out = a
     for j in range(1, L):
