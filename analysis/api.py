@@ -66,30 +66,19 @@ def _as_list(mask) -> list:
 
 
 def _engine(concept: str, arity: int):
-    """The engine function of ``concept`` for ``arity``: the one place that knows how the m-ary
-    analyses are named. Each returned function takes ``(a, *args, **kw)`` with ``a`` the mask."""
-    if arity == 2:
-        if concept in ("holder", "smoothness"):
-            from .regularity import holder
+    """The engine function of ``concept``; each returned function takes ``(a, *args, **kw)`` with
+    ``a`` the mask and passes the arity on (one engine serves every arity)."""
+    if concept in ("holder", "smoothness"):
+        from .regularity import holder
 
-            return holder.holder_exponent if concept == "holder" else holder.smoothness
-        if concept == "sobolev":
-            from .regularity.sobolev import sobolev_exponent
-
-            return sobolev_exponent
+        f = holder.holder_exponent if concept == "holder" else holder.smoothness
+    elif concept == "sobolev":
+        from .regularity.sobolev import sobolev_exponent as f
+    else:
         from .algebra import factorization
 
-        return {"sum_rules": factorization.sum_rules, "smoothing_factor": factorization.smoothing_factor}[concept]
-    from .algebra import mary as amary
-    from .regularity import mary as rmary
-
-    if concept == "sobolev":
-        from .regularity.sobolev_mary import sobolev_exponent_mary
-
-        return lambda a, **kw: sobolev_exponent_mary(a, arity, **kw)
-    f = {"holder": rmary.holder_exponent_mary, "smoothness": rmary.smoothness_mary,
-         "sum_rules": amary.sum_rules_mary, "smoothing_factor": amary.smoothing_factor_mary}[concept]
-    return lambda a, *args, **kw: f(a, arity, *args, **kw)
+        f = {"sum_rules": factorization.sum_rules, "smoothing_factor": factorization.smoothing_factor}[concept]
+    return lambda a, *args, **kw: f(a, *args, arity=arity, **kw)
 
 
 class Scheme:
@@ -114,7 +103,7 @@ class Scheme:
     def __init__(self, mask: Sequence | None = None, start: int = 0, *, symbol: Any = None,
                  rules: Sequence | None = None, arity: int = 2, params: Mapping[str, Any] | None = None,
                  floats: str | None = None, radius: Any = None, name: str | None = None):
-        from .algebra.mary import check_arity
+        from .algebra.factorization import check_arity
         from .algebra.symbol import LaurentSymbol
 
         given = [x for x, v in (("mask", mask), ("symbol", symbol), ("rules", rules)) if v is not None]

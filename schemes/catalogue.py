@@ -88,8 +88,9 @@ class SchemeEntry:
     aliases : tuple of str
         Other names :func:`get` accepts for this entry.
     arity : int
-        ``m`` in ``(S_a f)_i = sum_j a_{i-mj} f_j`` (2 for binary; m-ary entries live in
-        :mod:`schemes.mary`, issue 12).
+        ``m`` in ``(S_a f)_i = sum_j a_{i-mj} f_j`` (2 for binary). Entries of arity ``m > 2`` live beside
+        their binary relatives (:mod:`schemes.classic`, :mod:`schemes.interpolatory`); they are found by
+        :func:`get` and listed only with ``names(mary=True)`` / ``entries(mary=True)``.
 
     Examples
     --------
@@ -306,8 +307,7 @@ class LazyEntries(Mapping):
 _MODULE_ENTRIES: dict[str, LazyEntries] = {}
 _REGISTRY: dict[str, SchemeEntry] | None = None
 _NUMERIC: dict[str, NumericSchemeEntry] = {}
-#: m-ary entries (issue 12): found by get(), listed only with names(mary=True) / entries(mary=True).
-MARY_MODULE = "schemes.mary"
+#: entries of arity m > 2: found by get(), listed only with names(mary=True) / entries(mary=True).
 _MARY: dict[str, SchemeEntry] = {}
 _ALIASES: dict[str, str] = {}
 
@@ -316,7 +316,7 @@ def module_entries(modname: str) -> Mapping:
     """The entries the module ``modname`` defines (its ``ENTRIES``, then its ``NUMERIC_ENTRIES``), by
     slug and in order; each group is a tuple of entries or a :class:`LazyEntries` (built on first use).
 
-    >>> list(module_entries("schemes.classic"))[-2:]
+    >>> list(module_entries("schemes.classic"))[7:9]
     ['chaikin', 'four-point']
     """
     if modname not in _MODULE_ENTRIES:
@@ -341,14 +341,15 @@ def _registry() -> dict[str, SchemeEntry]:
         numeric: dict[str, NumericSchemeEntry] = {}
         aliases: dict[str, str] = {}
         extra: dict[str, str] = {}
+        _MARY.clear()
         for modname in ENTRY_MODULES:
             module = importlib.import_module(modname)
             for key, e in module_entries(modname).items():
                 if e.slug != key:
                     raise RuntimeError(f"entry {e.slug!r} is listed as {key!r} in {modname}")
-                if e.slug in reg or e.slug in numeric or e.slug in aliases:
+                if e.slug in reg or e.slug in numeric or e.slug in aliases or e.slug in _MARY:
                     raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {modname}")
-                (numeric if isinstance(e, NumericSchemeEntry) else reg)[e.slug] = e
+                (numeric if isinstance(e, NumericSchemeEntry) else _MARY if e.arity != 2 else reg)[e.slug] = e
                 for a in e.aliases:
                     if a in reg or a in aliases:
                         raise RuntimeError(f"alias {a!r} of {e.slug!r} is already taken")
@@ -370,11 +371,6 @@ def _registry() -> dict[str, SchemeEntry]:
         _ALIASES.update(aliases)
         _NUMERIC.clear()
         _NUMERIC.update(numeric)
-        _MARY.clear()
-        for key, e in module_entries(MARY_MODULE).items():
-            if e.slug in reg or e.slug in numeric or e.slug in aliases or e.slug in _MARY or e.slug != key:
-                raise RuntimeError(f"duplicate scheme slug {e.slug!r} in {MARY_MODULE}")
-            _MARY[e.slug] = e
         _REGISTRY = reg
     return _REGISTRY
 

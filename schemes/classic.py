@@ -1,5 +1,5 @@
-"""Classic binary schemes: B-splines of degree 1..7, Chaikin, the Dyn–Levin–Gregory 4-point
-scheme.
+"""Classic schemes: B-splines of degree 1..7 (binary) and 1..5 (ternary, quaternary), Chaikin, the
+Dyn–Levin–Gregory 4-point scheme.
 
 Examples
 --------
@@ -8,6 +8,9 @@ Examples
 LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-1, domain=QQ)
 >>> get("chaikin").symbol                   # the classical rules' indexing: one step to the left
 LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
+>>> e = get("ternary-bspline-2")                 # the m-ary B-spline: (1+z+...+z^(m-1))^(d+1) / m^d, centred
+>>> e.arity, e.symbol
+(3, LaurentSymbol([1/9, 1/3, 2/3, 7/9, 2/3, 1/3, 1/9], start=-3, domain=QQ))
 >>> print(get("four-point").stencils)
 f[2i]   = 1 f[i]
 f[2i+1] = -w f[i-1] + (w + 1/2) f[i] + (w + 1/2) f[i+1] - w f[i+2]
@@ -40,15 +43,21 @@ _ORDINAL = {1: "linear", 2: "quadratic", 3: "cubic", 4: "quartic", 5: "quintic",
             7: "septic"}
 
 
-def bspline_symbol(d: int) -> LaurentSymbol:
-    """The centred degree-``d`` B-spline symbol ``(1+z)^(d+1) / (2^d z^floor((d+1)/2))``.
+def bspline_symbol(d: int, arity: int = 2) -> LaurentSymbol:
+    """The centred degree-``d`` B-spline symbol of arity ``m``: ``q_m(z)^(d+1) / (m^d z^floor((d+1)(m-1)/2))``,
+    ``q_m = 1 + z + ... + z^(m-1)`` (the (d+1)-fold convolution of the box function, whose m-ary mask is
+    ``q_m``); ``(1+z)^(d+1) / (2^d z^floor((d+1)/2))`` for ``m = 2``.
 
     >>> bspline_symbol(1)
     LaurentSymbol([1/2, 1, 1/2], start=-1, domain=QQ)
+    >>> bspline_symbol(1, 3)
+    LaurentSymbol([1/3, 2/3, 1, 2/3, 1/3], start=-2, domain=QQ)
     """
     if d < 0:
         raise ValueError("the degree of a B-spline is non-negative")
-    return LaurentSymbol.from_expr((1 + Z)**(d + 1) / (2**d * Z**((d + 1) // 2)))
+    m = arity
+    q = sum(Z ** i for i in range(m))
+    return LaurentSymbol.from_expr(q ** (d + 1) / (m ** d * Z ** (((d + 1) * (m - 1)) // 2)))
 
 
 def _bspline_entry(d: int) -> SchemeEntry:
@@ -68,6 +77,19 @@ def _bspline_entry(d: int) -> SchemeEntry:
                   if d % 2 == 0 else "Odd degree: symmetric about 0 (a_i = a_-i).")),
         aliases=aliases,
     )
+
+
+_ARITY_NAME = {3: "ternary", 4: "quaternary"}
+
+
+def _bspline_entry_of_arity(d: int, m: int) -> SchemeEntry:
+    name = _ARITY_NAME[m]
+    return SchemeEntry(
+        slug=f"{name}-bspline-{d}", title=f"{name.capitalize()} {_ORDINAL[d]} B-spline (degree {d})",
+        symbol=bspline_symbol(d, m), params=(), arity=m,
+        source="de Boor, A Practical Guide to Splines (B-splines as convolutions of boxes); "
+               "Hassan & Dodgson 2003 / Lian 2008 (m-ary B-spline refinement)",
+        notes=f"a(z) = (1+...+z^{m - 1})^{d + 1} / ({m}^{d} z^{((d + 1) * (m - 1)) // 2}), computed, not typed.")
 
 
 _W = sp.Symbol("w")
@@ -106,4 +128,6 @@ ENTRIES = LazyEntries({
         defaults={"w": sp.Rational(1, 16)},
         stencils=_FOUR_POINT_RULES,
     ),
+    **{f"{_ARITY_NAME[m]}-bspline-{d}": functools.partial(_bspline_entry_of_arity, d, m)
+       for m in (3, 4) for d in range(1, 6)},
 })

@@ -17,15 +17,15 @@ _END = "# ---- end of generated data ----\n"
 
 def current() -> str:
     """The generated data as the entry modules define it now (builds every entry)."""
-    from . import catalogue, level_dependent, level_mary
+    from . import catalogue, level_dependent
     from .index import Row
 
     catalogue._registry()                               # every check of the registry runs
     rows = {"exact": [], "numeric": [], "mary": []}
-    for modname in (*catalogue.ENTRY_MODULES, catalogue.MARY_MODULE):
+    for modname in catalogue.ENTRY_MODULES:
         for e in catalogue.module_entries(modname).values():
-            group = ("mary" if modname == catalogue.MARY_MODULE else
-                     "numeric" if isinstance(e, catalogue.NumericSchemeEntry) else "exact")
+            group = ("numeric" if isinstance(e, catalogue.NumericSchemeEntry) else
+                     "mary" if getattr(e, "arity", 2) != 2 else "exact")
             rows[group].append(Row(group, e.slug, modname, e.title, tuple(p.name for p in e.params), e.source,
                                    getattr(e, "arity", 2)))
     out = ["SCHEMES: tuple[Row, ...] = ("]
@@ -33,8 +33,8 @@ def current() -> str:
     out.append(")")
     out.append(f"ALIASES: dict[str, str] = {dict(catalogue._ALIASES)!r}")
     out.append(f"LEVEL: tuple[str, ...] = {tuple(level_dependent.names())!r}")
-    out.append(f"LEVEL_MARY: dict[str, int] = "
-               f"{ {k: level_mary.MARY_ENTRIES[k].arity for k in level_mary.MARY_ENTRIES}!r}")
+    out.append(f"LEVEL_ARITY: dict[str, int] = "
+               f"{ {k: level_dependent.ARITY_ENTRIES[k].arity for k in level_dependent.ARITY_ENTRIES}!r}")
     return "\n".join(out) + "\n"
 
 

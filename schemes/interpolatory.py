@@ -8,6 +8,12 @@
   ``f[2i+1] = p(i + 3/4)`` with the same ``p``. For 2n = 4 this is the cubic-reproducing dual
   4-point scheme of Dyn–Floater–Hormann, rules ``[-7, 105, 35, -5]/128`` and its mirror.
 
+* **Arity m** (``ternary-dd-4``, ``quaternary-dd-4``; :func:`dubuc_deslauriers_symbol` with ``arity``):
+  ``f[mi] = f[i]`` and ``f[mi+r]`` the value at ``i + r/m`` of the polynomial interpolating
+  ``f[i-n/2+1..i+n/2]``; reproduces degree ``n - 1`` (Deslauriers–Dubuc 1989, any dilation).
+* **Ternary 4-point** (``ternary-four-point``, tension ``mu``; :func:`ternary_four_point_symbol`,
+  Hassan–Ivrissimitzis–Dodgson–Sabin 2002): equal to ``ternary-dd-4`` at ``mu = 1/27``.
+
 The dual 4-point family of Dyn, Floater and Hormann (2005) is the catalogue's
 ``dfh-chaikin-perturbation`` (seed 003, rule (1)): Chaikin's rules plus ``omega`` times the
 linear-annihilating perturbation ``-(7 Δ²f[i-1] + 5 Δ²f[i])``,
@@ -26,6 +32,8 @@ LaurentSymbol([-1/16, 0, 9/16, 1, 9/16, 0, -1/16], start=-3, domain=QQ)
 >>> print(get("dd-6").stencils)
 f[2i]   = 1 f[i]
 f[2i+1] = 3/256 f[i-2] - 25/256 f[i-1] + 75/128 f[i] + 75/128 f[i+1] - 25/256 f[i+2] + 3/256 f[i+3]
+>>> get("ternary-four-point").params
+(mu,)
 >>> get("dual-four-point").slug
 'dfh-chaikin-perturbation'
 >>> dual_lagrange_symbol(4) == get("dual-four-point").default_symbol()
@@ -51,12 +59,14 @@ schemes*, J. Approx. Theory 155 (2008) 28-42.
 
 from __future__ import annotations
 
+import functools
+
 import sympy as sp
 
 from analysis.result import AnalysisError
 from analysis.algebra.symbol import LaurentSymbol, Rules
 
-from .catalogue import SchemeEntry
+from .catalogue import LazyEntries, SchemeEntry
 
 #: Numbers of points of the catalogued Dubuc–Deslauriers schemes.
 DD_POINTS = (4, 6, 8)
@@ -97,12 +107,27 @@ def dubuc_deslauriers_rules(n_points: int) -> Rules:
     return Rules(even=(sp.Integer(1),), even_first=0, odd=w, odd_first=-(n_points // 2) + 1)
 
 
-def dubuc_deslauriers_symbol(n_points: int) -> LaurentSymbol:
-    """The symbol of the Dubuc–Deslauriers ``n_points``-point scheme (symmetric about 0).
+def dubuc_deslauriers_symbol(n_points: int, arity: int = 2) -> LaurentSymbol:
+    """The symbol of the Dubuc–Deslauriers ``n_points``-point scheme of arity ``m`` (symmetric about 0):
+    ``f_{mi} = f_i`` and ``f_{mi+r}`` the value at ``i + r/m`` of the polynomial interpolating
+    ``f_{i-n/2+1..i+n/2}`` (``n`` even); reproduces degree ``n - 1``. For ``m = 2`` it is built from the
+    printed rules (:func:`dubuc_deslauriers_rules`).
 
     >>> dubuc_deslauriers_symbol(2)          # 2 points: the linear B-spline
     LaurentSymbol([1/2, 1, 1/2], start=-1, domain=QQ)
+    >>> dubuc_deslauriers_symbol(4, 3).mask[:4]
+    (-4/81, -5/81, 0, 10/27)
     """
+    if arity != 2:
+        m, half = arity, n_points // 2
+        nodes = list(range(-half + 1, half + 1))
+        entries = {0: sp.Integer(1)}
+        for r in range(1, m):
+            t = sp.Rational(r, m)
+            for p in nodes:
+                entries[r - m * p] = sp.prod([(t - q) / sp.Integer(p - q) for q in nodes if q != p])
+        lo, hi = min(entries), max(entries)
+        return LaurentSymbol.from_mask([entries.get(i, 0) for i in range(lo, hi + 1)], start=lo)
     r = dubuc_deslauriers_rules(n_points)
     return LaurentSymbol.from_rules(r.even, r.odd, even_first=r.even_first, odd_first=r.odd_first)
 
@@ -148,8 +173,57 @@ def _dd_entry(n_points: int) -> SchemeEntry:
     )
 
 
-#: The Dubuc–Deslauriers entries dd-4, dd-6, dd-8.
-ENTRIES: tuple[SchemeEntry, ...] = tuple(_dd_entry(n) for n in DD_POINTS)
+MU = sp.Symbol("mu")
+
+
+def ternary_four_point_symbol() -> LaurentSymbol:
+    """Hassan–Ivrissimitzis–Dodgson–Sabin (2002): ``f_{3i} = f_i``,
+    ``f_{3i+1} = a0 f_{i-1} + a1 f_i + a2 f_{i+1} + a3 f_{i+2}``, ``f_{3i+2}`` the mirror, with
+    ``a0 = -1/18 - mu/6``, ``a1 = 13/18 + mu/2``, ``a2 = 7/18 - mu/2``, ``a3 = -1/18 + mu/6``.
+
+    The coefficients were typed from memory; they could not be checked against the paper (only its
+    first page and those of papers quoting it are in the stored corpora): see the catalogue entry's notes.
+
+    >>> ternary_four_point_symbol().subs({MU: sp.Rational(1, 27)}) == dubuc_deslauriers_symbol(4, 3)
+    True
+    """
+    r = sp.Rational
+    a0, a1, a2, a3 = -r(1, 18) - MU / 6, r(13, 18) + MU / 2, r(7, 18) - MU / 2, -r(1, 18) + MU / 6
+    return LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
+
+
+#: The Dubuc–Deslauriers entries dd-4, dd-6, dd-8, then those of arity 3 and 4, each built on first use.
+ENTRIES = LazyEntries({
+    **{f"dd-{n}": functools.partial(_dd_entry, n) for n in DD_POINTS},
+    "ternary-four-point": lambda: SchemeEntry(
+        slug="ternary-four-point", title="Ternary interpolatory 4-point scheme with tension mu",
+        symbol=ternary_four_point_symbol(), params=(MU,), arity=3,
+        defaults={"mu": sp.Rational(1, 27)},
+        source="Hassan, Ivrissimitzis, Dodgson, Sabin, Comput. Aided Geom. Design 19 (2002) 1-18 "
+               "(mask NOT checked against the paper, see notes)",
+        notes="a0..a3 as in ternary_four_point_symbol, typed from memory by the implementer. Transcription "
+              "check attempted 2026-11-24 with the search corpora (pages/code/docs): the stored copies of the "
+              "paper and of the papers quoting it (Beccari-Casciola-Romani, "
+              "https://123dok.org/document/zlgj223o-an-interpolating-point-c.html; Mustafa-Khan 2009, "
+              "https://studylib.net/doc/10817457/) hold only their first page, without the mask or the "
+              "parameter ranges, so the coefficients are UNVERIFIED. The only published claims retrieved are "
+              "the paper's title ('An interpolating 4-point C2 ternary stationary subdivision scheme') and "
+              "Beccari et al.'s summary ('Hassan et al. (2002) showed that we can achieve higher smoothness and "
+              "smaller support for the so-called interpolating 4-point stationary scheme, by going from binary "
+              "(Dyn et al., 1987) to ternary'); both are checked in the tests. Internal "
+              "checks: interpolatory, symmetric, sum rules for every mu, and at mu = 1/27 it equals the "
+              "ternary Lagrange (Dubuc-Deslauriers) scheme. Default mu = 1/27 (cubic reproduction, computed)."),
+    "ternary-dd-4": lambda: SchemeEntry(
+        slug="ternary-dd-4", title="Ternary Dubuc-Deslauriers 4-point (reproduces cubics)",
+        symbol=dubuc_deslauriers_symbol(4, 3), params=(), arity=3,
+        source="Deslauriers & Dubuc, Constr. Approx. 5 (1989) 49-68; Lian, Appl. Appl. Math. 3 (2008) 18-29",
+        notes="cubic Lagrange interpolation at i + 1/3, i + 2/3 from f_{i-1..i+2}; computed, not typed."),
+    "quaternary-dd-4": lambda: SchemeEntry(
+        slug="quaternary-dd-4", title="Quaternary Dubuc-Deslauriers 4-point (reproduces cubics)",
+        symbol=dubuc_deslauriers_symbol(4, 4), params=(), arity=4,
+        source="Deslauriers & Dubuc, Constr. Approx. 5 (1989) 49-68; Lian, Appl. Appl. Math. 3 (2008) 18-29",
+        notes="cubic Lagrange interpolation at i + r/4 from f_{i-1..i+2}; computed, not typed."),
+})
 
 #: Extra names for entries defined elsewhere (registered by schemes.catalogue).
 ALIASES = {"dual-four-point": "dfh-chaikin-perturbation"}

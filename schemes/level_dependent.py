@@ -13,6 +13,22 @@ The limits are the polynomial B-spline schemes ``(1+z)^(d+1) / 2^d``. The expone
 degree d (order d + 1, frequencies ``0`` (d - 1 times) and ``+-t`` resp. ``+-i t``) is C^(d-1) and
 not C^d (Unser–Blu 2005), like the polynomial one.
 
+Arity m = 3, 4 (:data:`ARITY_ENTRIES`: ternary and quaternary exponential B-spline schemes, degrees 1-3,
+trigonometric and hyperbolic; ``LevelDependentScheme(..., arity=m)``, ``h = m^-n``). Derivation (derived here; the `search` corpora hold no m-ary exponential B-spline paper of Conti–Romani or
+others to cite). ``e^{lambda x} chi_[0,1)(x) = sum_{k<m} e^{lambda k tau} (e^{lambda .} chi_[0,tau))(x - k tau)``
+with ``tau = m^-(n+1)``: the exponential box of frequency ``lambda`` has the m-ary mask
+``1 + v z + ... + v^{m-1} z^{m-1}``, ``v = e^{lambda tau}``; the exponential B-spline is the convolution of the
+boxes, so its level-n symbol is
+
+    a^n(z) = m z^s prod_i (1 + v_i z + ... + v_i^{m-1} z^{m-1}) / (1 + v_i + ... + v_i^{m-1}),
+
+normalised by ``a^n(1) = m``. Degree ``d`` (order ``d + 1``): the frequencies ``0`` (``d - 1`` times) and
+``+-i t`` (trigonometric) or ``+-t`` (hyperbolic). The product of the two factors of ``+-lambda`` is real:
+``sum_j c_j z^j``, ``c_j = sum_k cosh((2k - j) lambda tau)`` over ``max(0, j-m+1) <= k <= min(j, m-1)``
+(``cos`` for ``lambda = i t``). The shift is ``s = -floor((d+1)(m-1)/2)``. The limit (``h -> 0``) is the m-ary
+polynomial B-spline of degree d, ``m z^s ((1+...+z^{m-1})/m)^{d+1}``. The exponential B-spline of degree d is
+C^{d-1} and not C^d (Unser–Blu 2005), for every dilation.
+
 Examples
 --------
 >>> e = get("exp-chaikin-trig")
@@ -20,6 +36,9 @@ Examples
 LaurentSymbol([1/4, 3/4, 3/4, 1/4], start=-2, domain=QQ)
 >>> sorted(names())[:3]
 ['exp-chaikin-hyp', 'exp-chaikin-trig', 'exp-cubic-hyp']
+>>> s = get("ternary-exp-bspline-2-trig")
+>>> s.arity, s.limit().expr().factor()
+(3, (z**2 + z + 1)**3/(9*z**3))
 
 References
 ----------
@@ -29,6 +48,8 @@ M. Unser, T. Blu, *Cardinal exponential splines: part I — theory and filtering
 IEEE Trans. Signal Process. 53 (2005) 1425-1438.
 L. Romani, *From approximating subdivision schemes for exponential splines to high-performance
 interpolating algorithms*, J. Comput. Appl. Math. 224 (2009) 383-396.
+C. Conti, K. Hormann, *Polynomial reproduction for univariate subdivision schemes of any arity*, J. Approx.
+Theory 163 (2011) 413-437 (the m-ary conventions).
 """
 
 from __future__ import annotations
@@ -83,15 +104,60 @@ ENTRIES = LazyEntries({
     for shape, (f, t, s) in _SHAPES.items() for kind, (v, w) in _KINDS.items()})
 
 
+_NAMES = {3: "ternary", 4: "quaternary"}
+_ARITY_KINDS = {"trig": (sp.cos, "trigonometric", "+-i t"), "hyp": (sp.cosh, "hyperbolic", "+-t")}
+
+
+def pair_factor(m: int, kind: str) -> sp.Expr:
+    """``prod_{+-lambda} (1 + v z + ... + v^{m-1} z^{m-1})`` written with ``cos``/``cosh`` of ``t h/m``.
+
+    >>> pair_factor(3, "trig")
+    z**4 + 2*z**3*cos(h*t/3) + z**2*(2*cos(2*h*t/3) + 1) + 2*z*cos(h*t/3) + 1
+    """
+    f = _ARITY_KINDS[kind][0]
+    tau = T * H / m
+    out = 0
+    for j in range(2 * m - 1):
+        c = sum(f((2 * k - j) * tau) for k in range(max(0, j - m + 1), min(j, m - 1) + 1))
+        out += sp.expand(c) * _Z ** j
+    return out
+
+
+def exponential_bspline(m: int, d: int, kind: str) -> LevelDependentScheme:
+    """The exponential B-spline scheme of arity ``m`` in (3, 4) and degree ``d`` (frequencies ``0`` (d-1 times),
+    ``+-i t`` or ``+-t``; module docstring)."""
+    if m not in _NAMES or d not in (1, 2, 3) or kind not in _ARITY_KINDS:
+        raise AnalysisError(f"no m-ary exponential B-spline entry for m = {m}, degree {d}, kind {kind!r}")
+    box = sum(_Z ** i for i in range(m))
+    P = pair_factor(m, kind)
+    s = (d + 1) * (m - 1) // 2
+    num = sp.expand(box ** (d - 1) * P)
+    den = sp.Integer(m) ** (d - 2) * P.subs(_Z, 1)
+    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range((d + 1) * (m - 1) + 1)]
+    name = _NAMES[m]
+    return LevelDependentScheme(
+        tuple(coeffs), -s, (T,), slug=f"{name}-exp-bspline-{d}-{kind}",
+        title=f"{name} {_ARITY_KINDS[kind][1]} exponential B-spline of degree {d} (frequencies 0 x {d - 1}, "
+              f"{_ARITY_KINDS[kind][2]})",
+        source="derived here (module docstring of schemes.level_dependent)",
+        notes=f"v = exp(lambda {m}^-(n+1))", defaults={"t": 1}, arity=m)
+
+
+#: the level-dependent entries of arity m > 2 (found by :func:`get`; :func:`names` lists the binary ones)
+ARITY_ENTRIES = LazyEntries({f"{_NAMES[m]}-exp-bspline-{d}-{k}": (lambda m=m, d=d, k=k: exponential_bspline(m, d, k))
+                            for m in (3, 4) for d in (1, 2, 3) for k in ("trig", "hyp")})
+
+
 def _registry() -> Mapping[str, LevelDependentScheme]:
     from . import seed003
 
     return LazyEntries({**{k: (lambda k=k: ENTRIES[k]) for k in ENTRIES},
-                        **{k: (lambda k=k: seed003.LEVEL_ENTRIES[k]) for k in seed003.LEVEL_ENTRIES}})
+                        **{k: (lambda k=k: seed003.LEVEL_ENTRIES[k]) for k in seed003.LEVEL_ENTRIES},
+                        **{k: (lambda k=k: ARITY_ENTRIES[k]) for k in ARITY_ENTRIES}})
 
 
 def names() -> list[str]:
-    """Slugs of all level-dependent schemes (nothing is built)."""
+    """Slugs of the binary level-dependent schemes (nothing is built; the others: :data:`ARITY_ENTRIES`)."""
     from . import seed003
 
     return [*ENTRIES, *seed003.LEVEL_ENTRIES]

@@ -18,9 +18,9 @@ from analysis.cli.main import main
 from analysis.levels.ck import level_smoothness
 from analysis.levels.ck_box import level_smoothness_box
 from analysis.levels.expbspline_box import normalisers_nonzero_box, not_ck_box
-from analysis.levels.mary import level_scheme_mary
+from analysis.levels.level_dependent import LevelDependentScheme
 from analysis.result import AnalysisError
-from schemes.level_mary import get_mary
+from schemes.level_dependent import get
 
 SYM = "(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)"
 WHERE = ["c=cos(theta/3**(n+1))", "d=cos(2*theta/3**(n+1))"]
@@ -28,7 +28,7 @@ WHERE = ["c=cos(theta/3**(n+1))", "d=cos(2*theta/3**(n+1))"]
 
 @pytest.fixture(scope="module")
 def ternary():
-    return level_scheme_mary(SYM, 3, where=WHERE, slug="symbol")
+    return LevelDependentScheme.from_symbol(SYM, where=WHERE, slug="symbol", arity=3)
 
 
 def test_inline_ternary_box_agrees_with_point_mode(capsys, ternary):
@@ -37,7 +37,7 @@ def test_inline_ternary_box_agrees_with_point_mode(capsys, ternary):
     assert main(argv) == 0
     doc = json.loads(capsys.readouterr().out)
     r = doc["smoothness"]
-    point = level_smoothness(ternary.scheme, {"theta": sp.Rational(1, 2)}, arity=3)   # independent: point chain
+    point = level_smoothness(ternary, {"theta": sp.Rational(1, 2)}, arity=3)   # independent: point chain
     assert doc["arity"] == 3 and r["status"] == "certified" and r["provenance"]["arity"] == 3
     assert (r["value"], r["witness"]["exact"], r["witness"]["not_C^k"]) == (point.value, point.witness["exact"],
                                                                            point.witness["not_C^k"]) == (1, True, 2)
@@ -60,7 +60,7 @@ def test_normalisers_mary_box(m, box, zero_at):
 
 def test_not_ck_box_where_normaliser_vanishes_is_not_certified():
     # 1 + v + v^2 = 0 at t = 2 pi (level 0) inside [6, 7]: "not C^2" must not be certified there; on [1/2, 2] it is
-    s = get_mary("ternary-exp-bspline-2-trig").scheme
+    s = get("ternary-exp-bspline-2-trig")
     bad = not_ck_box(s, {"t": (sp.Integer(6), sp.Integer(7))}, arity=3)
     good = not_ck_box(s, {"t": (sp.Rational(1, 2), sp.Integer(2))}, arity=3)
     assert bad.status == "inconclusive" and bad.witness["failed"] == ["normalisers_nonzero"]
@@ -82,7 +82,7 @@ def test_cli_bad_input_one_line(capsys, argv, message):
 
 def test_arity_mismatch_in_python():
     with pytest.raises(AnalysisError, match="has arity 3"):
-        level_smoothness_box(get_mary("ternary-exp-bspline-1-trig"), {"t": (1, 2)}, arity=4)
+        level_smoothness_box(get("ternary-exp-bspline-1-trig"), {"t": (1, 2)}, arity=4)
 
 
 def test_parametric_ternary_limit_ternary_four_point():
@@ -93,7 +93,7 @@ def test_parametric_ternary_limit_ternary_four_point():
     # (the limit's exact m-ary norm sets decide the sub-boxes)
     mask = ["-1/18+m/6", "-1/18-m/6", "0", "7/18-m/2", "13/18+m/2", "1", "13/18+m/2", "7/18-m/2", "0",
             "-1/18-m/6", "-1/18+m/6"]
-    s = level_scheme_mary(None, 3, mask=mask, start=-5, where=["m=mu+3**(-n)/100"], slug="mask")
+    s = LevelDependentScheme.from_mask(mask, -5, where=["m=mu+3**(-n)/100"], slug="mask", arity=3)
     inside = level_smoothness_box(s, {"mu": (sp.Rational(1, 14), sp.Rational(1, 10))})
     across = level_smoothness_box(s, {"mu": (sp.Rational(1, 10), sp.Rational(1, 8))}, depth=0, L_max=2)
     assert inside.value == 2 and inside.status == "certified"

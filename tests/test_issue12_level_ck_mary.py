@@ -1,6 +1,6 @@
 """Issue 12 (+ issue 13 item 6): C^k verdicts of level-dependent m-ary schemes reach the truth.
 
-:func:`analysis.levels.mary.level_smoothness_mary` is :func:`analysis.levels.ck.level_smoothness` with
+:func:`analysis.levels.ck.level_smoothness` on a scheme of arity m (carried by the scheme) is the binary chain with
 ``arity = m``: Dyn–Levin direct, on the m-ary divided difference schemes ``(m/q_m)^j a^n``, on the generalized
 ones ``m^j a^n/p_n`` (exponential factors ``q_m(e^{lambda m^-(n+1)} z)``), and "not C^d" for m-ary exponential
 B-spline schemes.
@@ -22,10 +22,10 @@ import sympy as sp
 
 from analysis.levels.ck import check_real
 from analysis.levels.expbspline import recognise
-from analysis.levels.level_dependent import H
-from analysis.levels.mary import level_scheme_mary, level_smoothness_mary
+from analysis.levels.ck import level_smoothness
+from analysis.levels.level_dependent import H, LevelDependentScheme
 from analysis.result import CERTIFIED, AnalysisError
-from schemes.level_mary import T, get_mary
+from schemes.level_dependent import T, get
 from tests.test_issue12_levels_one_implementation import _run
 
 
@@ -36,12 +36,12 @@ def _degree_from_support(s) -> int:
     return (n - 1) // (m - 1) - 1
 
 
-# ternary degree 1-3 trig: tests/test_issue12_level_mary_catalogue.py; all 12: benchmarks/bench_level_mary.py
+# ternary degree 1-3 trig: tests/test_issue12_level_mary_catalogue.py; all 12: benchmarks/bench_level_arity.py
 @pytest.mark.parametrize("slug", ["quaternary-exp-bspline-2-hyp", "quaternary-exp-bspline-1-trig"])
 def test_true_smoothness_certified_both_ways(slug):
-    s = get_mary(slug)
+    s = get(slug)
     d = _degree_from_support(s)
-    r = level_smoothness_mary(s, {"t": 1})
+    r = level_smoothness(s, {"t": 1})
     assert r.status == CERTIFIED and r.value == d - 1
     assert r.witness["exact"] is True and r.witness["not_C^k"] == d
     ks = [v["k"] for v in r.witness["verdicts"]]
@@ -59,10 +59,9 @@ def test_true_smoothness_certified_both_ways(slug):
 def test_generalized_differences_ternary():
     """No factor 1+z+z^2 (frequencies 1, +-i theta): C^1 only through the generalized divided difference
     scheme 3 a^n/q(e^{3^-(n+1)} z); C^2 is refuted by the exponential B-spline theorem (order 3)."""
-    s = level_scheme_mary("3*(1+v*z+v**2*z**2)*(1+2*c1*z+(1+2*c2)*z**2+2*c1*z**3+z**4)"
-                          "/((1+v+v**2)*(3+4*c1+2*c2))/z**3", 3,
-                          where=["v=exp(1/3**(n+1))", "c1=cos(theta/3**(n+1))", "c2=cos(2*theta/3**(n+1))"])
-    r = level_smoothness_mary(s, {"theta": 1})
+    s = LevelDependentScheme.from_symbol("3*(1+v*z+v**2*z**2)*(1+2*c1*z+(1+2*c2)*z**2+2*c1*z**3+z**4)"
+                          "/((1+v+v**2)*(3+4*c1+2*c2))/z**3", where=["v=exp(1/3**(n+1))", "c1=cos(theta/3**(n+1))", "c2=cos(2*theta/3**(n+1))"], arity=3)
+    r = level_smoothness(s, {"theta": 1})
     assert r.value == 1 and r.witness["exact"] is True
     v1 = r.witness["verdicts"][1]
     assert "generalized divided difference" in v1["route"] and v1["j"] == 1 and v1["r"] == 0
@@ -94,7 +93,7 @@ def test_refinement_identity_dilation_m(m, kind):
         lhs = _order2_bspline(*lams, 1, x)
         rhs = sum(p[j] * _order2_bspline(*lams, mpmath.mpf(1) / m, x - mpmath.mpf(j) / m) for j in range(2 * m - 1))
         assert abs(lhs - rhs) < mpmath.mpf(10) ** -35
-    s = get_mary(f"{ {3: 'ternary', 4: 'quaternary'}[m]}-exp-bspline-1-{kind}")
+    s = get(f"{ {3: 'ternary', 4: 'quaternary'}[m]}-exp-bspline-1-{kind}")
     P1 = sum(p)
     for k, c in enumerate(s.mask):
         val = complex(sp.N(c.subs({H: 1, T: sp.Rational(7, 10)}), 30))
@@ -102,13 +101,13 @@ def test_refinement_identity_dilation_m(m, kind):
 
 
 def test_recognition_is_exact_and_arity_specific():
-    s = get_mary("ternary-exp-bspline-2-trig").scheme.subs({"t": 1})
+    s = get("ternary-exp-bspline-2-trig").subs({"t": 1})
     assert recognise(s, 3).value == (0, -sp.I, sp.I)
     assert recognise(s, 4).value is None and recognise(s).value is None      # read with another dilation
-    perturbed = level_scheme_mary("(1+z+z**2)**3/(9*z**3) + 3**(-2*n)*(1+z+z**2)**2*(1-z)**2/z**3", 3)
-    rec = recognise(perturbed.scheme, 3)
+    perturbed = LevelDependentScheme.from_symbol("(1+z+z**2)**3/(9*z**3) + 3**(-2*n)*(1+z+z**2)**2*(1-z)**2/z**3", arity=3)
+    rec = recognise(perturbed, 3)
     assert rec.value is None and "not recognised" in rec.witness["reason"]
-    r = level_smoothness_mary(perturbed, k_max=1)
+    r = level_smoothness(perturbed, k_max=1)
     assert r.witness["not_C^k"] is None and r.witness["exact"] is False
 
 
@@ -124,20 +123,20 @@ def test_cli_holder_text_and_json():
 
 def test_bad_input_one_line():
     with pytest.raises(AnalysisError, match="the C\\^k verdicts need exact values: give --param t=VALUE"):
-        level_smoothness_mary(get_mary("ternary-exp-bspline-1-hyp"), {"t": (1, 2)})
-    s = level_scheme_mary("(1+z+z**2)/z * (1 + 1/(1 - 3*3**(-n)))", 3)
+        level_smoothness(get("ternary-exp-bspline-1-hyp"), {"t": (1, 2)})
+    s = LevelDependentScheme.from_symbol("(1+z+z**2)/z * (1 + 1/(1 - 3*3**(-n)))", arity=3)
     with pytest.raises(AnalysisError, match="undefined at level n = 1"):
-        check_real(s.scheme, arity=3)
+        check_real(s, arity=3)
 
 
 @pytest.mark.parametrize("slug,j", [("ternary-exp-bspline-2-hyp", 1), ("quaternary-exp-bspline-2-trig", 1)])
 def test_divided_difference_normalisation_matches_stationary(slug, j):
     """lim (m/q_m)^j a^n = (m/q_m)^j a: the stationary m-ary difference symbol of the limit
-    (:func:`analysis.stationary.mary.difference_symbol_mary`, ``(m z^(m-1)/q_m)^j a`` up to the shift), exactly."""
+    (:func:`analysis.stationary.difference.difference_symbol`, ``(m z^(m-1)/q_m)^j a`` up to the shift), exactly."""
     from analysis.levels.divided import divided_difference
-    from analysis.stationary.mary import difference_symbol_mary
+    from analysis.stationary.difference import difference_symbol
 
-    s = get_mary(slug)
-    e = divided_difference(s.scheme, j, s.arity)
-    assert e.limit() == difference_symbol_mary(s.limit(), j, s.arity, spelling="divided")
-    assert e.limit().shift(j * (s.arity - 1)) == difference_symbol_mary(s.limit(), j, s.arity)
+    s = get(slug)
+    e = divided_difference(s, j, s.arity)
+    assert e.limit() == difference_symbol(s.limit(), j, spelling="divided", arity=s.arity)
+    assert e.limit().shift(j * (s.arity - 1)) == difference_symbol(s.limit(), j, arity=s.arity)

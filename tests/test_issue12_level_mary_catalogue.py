@@ -1,5 +1,5 @@
 """Issue 12 (catalogue): level-dependent m-ary exponential B-splines (ternary, quaternary; degrees 1-3;
-trigonometric and hyperbolic) in :mod:`schemes.level_mary`.
+trigonometric and hyperbolic) in :mod:`schemes.level_dependent`.
 
 Independent checks: the generating property is evaluated here in mpmath at 60 digits from the exact
 coefficients (``a^n(eps w) = 0`` for the nontrivial m-th roots of unity ``eps`` and ``w = e^{-lambda h/m}``,
@@ -18,10 +18,10 @@ import sympy as sp
 
 import schemes
 from analysis.levels.level_dependent import H
-from analysis.levels.mary import level_smoothness_mary
-from analysis.levels.reproduction_mary import generation_mary
+from analysis.levels.ck import level_smoothness
+from analysis.levels.reproduction import generation
 from analysis.result import CERTIFIED, AnalysisError
-from schemes.level_mary import MARY_ENTRIES, T, get_mary
+from schemes.level_dependent import ARITY_ENTRIES, T, get
 from tests.test_issue12_levels_one_implementation import _run
 
 Z = sp.Symbol("z")
@@ -31,9 +31,9 @@ def _degree(slug):
     return int(slug.split("-")[3])
 
 
-@pytest.mark.parametrize("slug", sorted(MARY_ENTRIES))
+@pytest.mark.parametrize("slug", sorted(ARITY_ENTRIES))
 def test_generates_its_exponentials_mpmath(slug):
-    s = MARY_ENTRIES[slug]
+    s = ARITY_ENTRIES[slug]
     m, d = s.arity, _degree(slug)
     mpmath.mp.dps = 60
     t = mpmath.mpf(7) / 10
@@ -57,18 +57,18 @@ def test_generates_its_exponentials_mpmath(slug):
 @pytest.mark.parametrize("slug", ["ternary-exp-bspline-1-trig", "ternary-exp-bspline-1-hyp",
                                   "quaternary-exp-bspline-1-trig"])
 def test_exact_generation(slug):
-    s = get_mary(slug)
+    s = get(slug)
     lam = ([0] if _degree(slug) > 1 else []) + ([T, -T] if slug.endswith("hyp") else [sp.I * T, -sp.I * T])
-    assert generation_mary(s, lam).status == CERTIFIED               # exact identity in h and t
+    assert generation(s, lam).status == CERTIFIED               # exact identity in h and t
     if slug == "ternary-exp-bspline-1-trig":   # degree 1 has no zero frequency: not even constants are generated
-        assert generation_mary(s, [0], {"t": 1}).status == "refuted"
+        assert generation(s, [0], {"t": 1}).status == "refuted"
 
 
 @pytest.mark.parametrize("d", [1, 2, 3])
 def test_ck_verdicts_ternary_trig(d):
     # since the m-ary C^k chain (tests/test_issue12_level_ck_mary.py): the true C^(d-1), certified both ways
     # (d = 3 stopped at C^1 before: the direct series with weight 3^(2n) diverges, a^n - a = O(h^2))
-    r = level_smoothness_mary(get_mary(f"ternary-exp-bspline-{d}-trig"), {"t": 1})
+    r = level_smoothness(get(f"ternary-exp-bspline-{d}-trig"), {"t": 1})
     assert r.status == CERTIFIED and r.value == d - 1
     assert r.witness["exact"] is True and r.witness["not_C^k"] == d
     if d == 3:
@@ -77,7 +77,7 @@ def test_ck_verdicts_ternary_trig(d):
 
 
 def s_order(d):
-    return get_mary(f"ternary-exp-bspline-{d}-trig").order()
+    return get(f"ternary-exp-bspline-{d}-trig").order()
 
 
 def test_cli_scheme_names_and_errors():
@@ -87,4 +87,4 @@ def test_cli_scheme_names_and_errors():
     rc, _, err = _run("series", "--scheme", "ternary-exp-bspline-1-trig", "--arity", "4", "--param", "t=1")
     assert rc == 2 and "has arity 3" in err
     with pytest.raises(AnalysisError, match="did you mean: ternary-exp-bspline-1-trig"):
-        get_mary("ternary-exp-bspline-1-tri")
+        get("ternary-exp-bspline-1-tri")

@@ -19,8 +19,9 @@ import sympy as sp
 
 import schemes
 from analysis.levels.level_dependent import H, LevelDependentScheme, distance
-from analysis.levels.mary import (distance_mary, level_scheme_mary, level_smoothness_mary, ternary_exponential_bspline_2,
-                                  weighted_series_mary)
+from analysis.levels.ck import level_smoothness
+from analysis.levels.expbspline import ternary_exponential_bspline_2
+from analysis.levels.leading_term import series_by_leading_term
 from analysis.levels.series import weighted_series
 from analysis.result import CERTIFIED, AnalysisError
 
@@ -52,7 +53,7 @@ def test_transcription_generates_exponentials_and_limit_is_the_bspline(exp3):
                     assert abs(val) < mpmath.mpf(10) ** -50
             assert abs(sum(coeffs) - 3) < mpmath.mpf(10) ** -50                # a^n(1) = 3
     # the inline symbol with --where spells the same scheme
-    inline = level_scheme_mary(SYM3, 3, where=WHERE3)
+    inline = LevelDependentScheme.from_symbol(SYM3, where=WHERE3, arity=3)
     for n in (0, 2):
         a = [sp.N(c.subs(H, sp.Rational(1, 3 ** n)).subs(inline.params[0], 1), 30) for c in inline.mask]
         b = [sp.N(c.subs(H, sp.Rational(1, 3 ** n)).subs(exp3.params[0], 1), 30) for c in exp3.mask]
@@ -62,43 +63,43 @@ def test_transcription_generates_exponentials_and_limit_is_the_bspline(exp3):
 def _mp_distance(s, n, theta):
     lim = [mpmath.mpf(sp.N(c, 60)) for c in s.limit().mask]
     cur = _mp_mask(s, n, theta)
-    groups = s.residue_groups()
+    groups = [[k for k in range(len(s.mask)) if (s.start + k) % s.arity == r] for r in range(s.arity)]
     return max(sum(abs(cur[k] - lim[k]) for k in ks) for ks in groups)
 
 
 def test_distance_and_series_against_mpmath(exp3):
     with mpmath.workdps(60):
         for n in (0, 5, 25):
-            d = distance_mary(exp3, n, {"theta": 1})
+            d = distance(exp3, n, {"theta": 1})
             ref = _mp_distance(exp3, n, 1)
             assert d.status == CERTIFIED and float(d.lower) <= float(ref) * (1 + 1e-12) and float(ref) <= float(d.upper) * (1 + 1e-12)
-        r = weighted_series_mary(exp3, {"theta": 1}, 1)
+        r = series_by_leading_term(exp3, {"theta": 1}, 1)
         ref = sum(mpmath.mpf(3) ** n * _mp_distance(exp3, n, 1) for n in range(60))   # terms ~ 3^-n: tail < 1e-28
         assert r.witness["verdict"] == "convergent" and float(r.lower) <= float(ref) <= float(r.upper)
         # the leading constant: 9^n ||S_(a^n) - S_a|| -> C
         C = r.witness["leading_constant"]
         assert abs(float(mpmath.mpf(9) ** 40 * _mp_distance(exp3, 40, 1)) - float(C)) < 1e-12
-    d = weighted_series_mary(exp3, {"theta": 1}, 2)
+    d = series_by_leading_term(exp3, {"theta": 1}, 2)
     assert (d.status, d.witness["verdict"]) == (CERTIFIED, "divergent")
 
 
 def test_series_over_a_box(exp3):
-    r = weighted_series_mary(exp3, {"theta": (sp.Rational(1, 2), 2)}, 1)
+    r = series_by_leading_term(exp3, {"theta": (sp.Rational(1, 2), 2)}, 1)
     assert r.status == CERTIFIED and r.witness["verdict"] == "convergent"
-    inside = weighted_series_mary(exp3, {"theta": 1}, 1)
+    inside = series_by_leading_term(exp3, {"theta": 1}, 1)
     assert r.lower <= inside.lower and inside.upper <= r.upper
 
 
 def test_arity_two_equals_binary_code():
     sym, where = "(1+z)**2*(1+2*v*z+z**2)/(4*(1+v)*z**2)", ["v=cos(t/2**(n+1))"]
-    mine = level_scheme_mary(sym, 2, where=where)
+    mine = LevelDependentScheme.from_symbol(sym, where=where, arity=2)
     binary = LevelDependentScheme.from_symbol(sym, where=where)
     assert mine.mask == binary.mask and mine.start == binary.start
     for n in (0, 7):
-        a, b = distance_mary(mine, n, {"t": 1}), distance(binary, n, {"t": 1})
+        a, b = distance(mine, n, {"t": 1}), distance(binary, n, {"t": 1})
         assert a.lower <= b.upper and b.lower <= a.upper
     for k in (0, 1, 2):
-        a, b = weighted_series_mary(mine, {"t": 1}, k), weighted_series(binary, {"t": 1}, k)
+        a, b = series_by_leading_term(mine, {"t": 1}, k), weighted_series(binary, {"t": 1}, k)
         assert a.witness["verdict"] == b.witness["verdict"]
         if a.witness["verdict"] == "convergent":
             assert a.lower <= b.upper and b.lower <= a.upper
@@ -107,7 +108,7 @@ def test_arity_two_equals_binary_code():
 def test_smoothness_c1_and_not_c2(exp3):
     # C^2 was undecided before the m-ary C^k chain; the limit is not C^2 and the scheme is a ternary exponential
     # B-spline scheme of order 3, so "not C^2" is now certified (tests/test_issue12_level_ck_mary.py)
-    r = level_smoothness_mary(exp3, {"theta": sp.pi / 2})
+    r = level_smoothness(exp3, {"theta": sp.pi / 2})
     assert r.value == 1 and r.status == CERTIFIED
     last = r.witness["verdicts"][-1]
     assert last["k"] == 2 and last["verdict"] == "not C^2" and last["status"] == CERTIFIED
@@ -133,7 +134,7 @@ def test_cli_series_and_holder():
 
 def test_bad_input():
     with pytest.raises(AnalysisError, match="only through 3\\^n"):
-        level_scheme_mary(SYM3, 3, where=["c=cos(theta/2**(n+1))", "d=1"])
+        LevelDependentScheme.from_symbol(SYM3, where=["c=cos(theta/2**(n+1))", "d=1"], arity=3)
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1])
     assert rc != 0 and err.startswith("subdiv: error: undefined name(s) theta")
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1],

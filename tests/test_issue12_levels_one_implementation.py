@@ -1,6 +1,6 @@
 """Issue 12 (level-dependent m-ary schemes) / issue 13 item 6: one implementation of the level-dependent code
-for every arity — the m-ary functions (:mod:`analysis.levels.mary`, :mod:`analysis.levels.reproduction_mary`,
-:mod:`analysis.cli.levels_mary`) run the binary code with ``arity = m``, so its checks serve every arity.
+for every arity — a level-dependent scheme carries its arity and the functions of :mod:`analysis.levels`
+(series, reproduction) and :mod:`analysis.cli.levels` run one code with ``arity = m``, so its checks serve every arity.
 
 Independent checks: the supports below are read off the exact masks by hand (stated in each test); the mpmath
 distance is a separate evaluation (sympy lambdify in mpmath at 60 digits) of the same exact coefficients.
@@ -16,9 +16,10 @@ import pytest
 import sympy as sp
 
 from analysis.levels import series
-from analysis.levels.level_dependent import distance
-from analysis.levels.mary import (distance_mary, level_scheme_mary, same_support_mary, ternary_exponential_bspline_2,
-                                  weighted_series_mary)
+from analysis.levels.expbspline import ternary_exponential_bspline_2
+from analysis.levels.level_dependent import LevelDependentScheme, distance
+from analysis.levels.leading_term import series_by_leading_term
+from analysis.levels.series import same_support
 from analysis.result import CERTIFIED
 
 SYM3 = "(1+z+z**2)*(1+2*c*z+(1+2*d)*z**2+2*c*z**3+z**4)/((3+4*c+2*d)*z**3)"
@@ -41,27 +42,27 @@ def test_disjoint_enclosures_are_a_certification_bug_for_every_arity(monkeypatch
     monkeypatch.setattr(series, "coefficient_differences",
                         lambda s, n, env, **kw: [d + flint.arb(10) for d in real(s, n, env, **kw)])
     with pytest.raises(RuntimeError, match="certification bug"):
-        weighted_series_mary(ternary_exponential_bspline_2(), {"theta": 1}, 1)
+        series_by_leading_term(ternary_exponential_bspline_2(), {"theta": 1}, 1)
 
 
 def test_same_support_treats_a_vanishing_limit_coefficient_exactly():
     # a^n = 1 + 0 z + (1 + 3^-n) z^2 + z^3: a^n_1 = a_1 = 0 at every level, the other coefficients are >= 1,
     # so a^n and a = 1 + z^2 + z^3 have the same support at every level (by inspection)
-    s = level_scheme_mary(None, 3, mask=["1", "0", "1 + 3**(-n)", "1"])
-    r = same_support_mary(s, {})
+    s = LevelDependentScheme.from_mask(["1", "0", "1 + 3**(-n)", "1"], 0, arity=3)
+    r = same_support(s, {})
     assert r.status == CERTIFIED and r.value is True
     assert r.witness["vanishing_limit_coefficients"] == ["a_1: a^n_k = a_k for every n (exact)"]
-    assert r.provenance == {"method": "arb enclosures (n < 30) + Taylor tail (n >= 30)", "arity": 3}
+    assert r.provenance["method"].startswith("arb enclosures")
     # a^n_1 = 3^-n != 0 while a_1 = 0: the supports differ at every level, so this must not be certified
-    bad = same_support_mary(level_scheme_mary(None, 3, mask=["1", "3**(-n)", "1", "1"]), {})
+    bad = same_support(LevelDependentScheme.from_mask(["1", "3**(-n)", "1", "1"], 0, arity=3), {})
     assert not bad.is_certified and bad.value is None
 
 
 @pytest.mark.parametrize("n", [12])
 def test_ternary_distance_in_mpmath_lies_in_the_certified_enclosure(n):
     s = ternary_exponential_bspline_2()
-    box = distance_mary(s, n, {"theta": 1})
-    mp = distance(s.scheme, n, {"theta": 1}, arithmetic="mp", prec=200, arity=3)
+    box = distance(s, n, {"theta": 1})
+    mp = distance(s, n, {"theta": 1}, arithmetic="mp", prec=200, arity=3)
     assert box.status == CERTIFIED and mp.status == "numerical"
     assert box.lower <= sp.Rational(str(mp.value)) * (1 + sp.Rational(1, 10 ** 40)) and \
         sp.Rational(str(mp.value)) <= box.upper * (1 + sp.Rational(1, 10 ** 40))

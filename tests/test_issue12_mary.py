@@ -19,16 +19,18 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 import schemes
 from analysis.algebra import factorization as F
-from analysis.algebra.mary import (check_arity, polynomial_generation_mary, polynomial_reproduction_mary,
-                                   smoothing_factor_mary, sum_rules_mary)
+from analysis.algebra.factorization import (check_arity, polynomial_generation, polynomial_reproduction,
+                                   smoothing_factor, sum_rules)
 from analysis.algebra.symbol import LaurentSymbol
 from analysis.regularity.holder import holder_exponent
-from analysis.regularity.mary import ck_range_mary, difference_mask_mary, holder_exponent_mary, smoothness_mary
+from analysis.regularity.ranges import ck_range
+from analysis.regularity.convergence import difference_mask
+from analysis.regularity.holder import holder_exponent, smoothness
 from analysis.result import AnalysisError, CERTIFIED
 from analysis.stationary import difference as D, transition as T
-from analysis.stationary.mary import (basic_limit_support_mary, difference_norm_mary, difference_symbol_mary,
-                                      local_eigenvalues_mary, local_subdivision_matrix_mary, refine_mary,
-                                      scheme_norm_mary, transition_matrices_mary)
+from analysis.stationary.difference import difference_norm, difference_symbol, scheme_norm
+from analysis.stationary.transition import (basic_limit_support, local_eigenvalues, local_subdivision_matrix,
+                                            transition_matrices)
 from analysis.stationary.refinement import refine
 
 R = sp.Rational
@@ -47,17 +49,17 @@ def test_mary_bspline_alpha_is_degree(m, d):
     # transcription: the symbol is q_m^(d+1)/m^d up to a shift
     q = sum(sp.Symbol("z") ** i for i in range(m))
     assert sp.expand(e.symbol.expr() * sp.Symbol("z") ** (-e.symbol.start) * m ** d - sp.expand(q ** (d + 1))) == 0
-    h = holder_exponent_mary(e.symbol, m)
+    h = holder_exponent(e.symbol, arity=m)
     assert (h.value, h.status) == (d, CERTIFIED)
-    assert smoothness_mary(e.symbol, m, d - 1).value is True
-    assert smoothness_mary(e.symbol, m, d).value is False
-    sup = basic_limit_support_mary(e.symbol, m).value
+    assert smoothness(e.symbol, d - 1, arity=m).value is True
+    assert smoothness(e.symbol, d, arity=m).value is False
+    sup = basic_limit_support(e.symbol, arity=m).value
     assert sup[1] - sup[0] == d + 1                       # B-spline of degree d: support length d + 1
-    ev = local_eigenvalues_mary(e.symbol, m)
+    ev = local_eigenvalues(e.symbol, arity=m)
     size = ev.witness["matrix"].shape[0]                  # minimal invariant window (<= d + 1 points)
     assert 1 <= size <= d + 1
     assert sorted(ev.value, reverse=True) == [R(1, m ** i) for i in range(size)]
-    assert polynomial_reproduction_mary(e.symbol, m).value == 1   # B-splines reproduce linears only
+    assert polynomial_reproduction(e.symbol, arity=m).value == 1   # B-splines reproduce linears only
 
 
 # --------------------------------------------------------------------------------------------
@@ -77,26 +79,29 @@ def _mask(b, N, start):
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_ints, st.integers(0, 4), st.integers(-4, 1))
-def test_arity_two_equals_binary(b, N, start):
+def test_arity_two_general_methods_equal_binary(b, N, start):
+    """At m = 2 the any-arity methods (residue sums, division by q_m, the definition of reproduction,
+    the dilated refinement loop) agree with the binary specialisations (values at z = +-1, synthetic
+    division, Conti-Hormann derivative conditions, the vectorised refinement)."""
+    from analysis.stationary.refinement import _refine_dilated
+
     a = _mask(b, N, start)
-    assert sum_rules_mary(a, 2).value == F.sum_rules(a).value
-    assert smoothing_factor_mary(a, 2).value == F.smoothing_factor(a).value
-    assert polynomial_generation_mary(a, 2).value == F.polynomial_generation(a).value
+    assert (all(x == 1 for x in a.residue_sums(2))) == sum_rules(a).value
+    q, r, divisible = F.divide_q(a, 2)
+    quo, rem = a.poly.div(sp.Poly([1, 1], a.poly.gen, domain=a.domain))
+    assert divisible == rem.is_zero and (not divisible or q.poly == quo)
     if N >= 1:   # without sum rules the binary routine reports degree 0 from a(1) = 2 alone (see report)
-        assert polynomial_reproduction_mary(a, 2).value == F.polynomial_reproduction(a).value
+        assert F._reproduction_degree(a, 2)[0] == polynomial_reproduction(a).value
     for L in (1, 2):
-        assert scheme_norm_mary(a, L, 2).value == D.scheme_norm(a, L).value
-    k = F.smoothing_factor(a).value
-    for j in range(1, k + 1):
-        for spelling in ("paper", "divided"):
-            assert difference_symbol_mary(a, j, 2, spelling=spelling) == D.difference_symbol(a, j, spelling=spelling)
-        assert difference_norm_mary(a, j, 2, 2).value == D.difference_norm(a, j, 2).value
-    assert transition_matrices_mary(a, 2) == T.transition_matrices(a)
-    assert basic_limit_support_mary(a, 2).value == T.basic_limit_support(a).value
-    if len(a) >= 3:
-        assert local_subdivision_matrix_mary(a, 2) == T.local_subdivision_matrix(a)
+        prod = D.iterated_symbol(a, L)
+        sums = [sum(abs(c) for i, c in prod.items() if i % 2 ** L == res) for res in range(2 ** L)]
+        assert scheme_norm(a, L).value == max(sums)
+    Ts = transition_matrices(a)
+    mask, n = a.mask, max(len(a) - 1, 1)
+    assert all(Ts[e] == sp.Matrix(n, n, lambda i, j: mask[2 * i - j + e] if 0 <= 2 * i - j + e < len(mask) else 0)
+               for e in (0, 1))
     pts = [[R(i * i), R(-i)] for i in range(6)]
-    assert (refine_mary(a, pts, 2, 2, exact=True) == refine(a, pts, steps=2, exact=True)).all()
+    assert (_refine_dilated(a, pts, 2, 2, exact=True) == refine(a, pts, steps=2, exact=True)).all()
 
 
 @pytest.mark.parametrize("mask,start", [
@@ -105,10 +110,15 @@ def test_arity_two_equals_binary(b, N, start):
     (["3/256", 0, "-25/256", 0, "75/128", 1, "75/128", 0, "-25/256", 0, "3/256"], -5),   # 6-point DD
     (["3/8", "5/8", "5/8", "3/8"], -2),
 ])
-def test_arity_two_holder_equals_binary(mask, start):
+def test_arity_two_smoothness_routes_agree(mask, start):
+    """The any-arity C^j route (:func:`analysis.regularity.holder._smoothness_dilated`) at m = 2 gives the
+    binary route's certified verdicts."""
+    from analysis.regularity.holder import _smoothness_dilated
+
     a = LaurentSymbol.from_mask(mask, start=start)
-    h2, hb = holder_exponent_mary(a, 2), holder_exponent(a)
-    assert (h2.value, h2.lower, h2.upper, h2.status) == (hb.value, hb.lower, hb.upper, hb.status)
+    for j in range(3):
+        g, b = _smoothness_dilated(a, 2, j, budget=20_000, max_length=12, max_L=4, max_word=3), smoothness(a, j)
+        assert (g.value, g.status) == (b.value, b.status)
 
 
 # --------------------------------------------------------------------------------------------
@@ -117,12 +127,12 @@ def test_arity_two_holder_equals_binary(mask, start):
 
 def test_sum_rule_failure_names_root():
     a = LaurentSymbol.from_mask([2, 0, 2])               # a(1) = 4, a(i) = a(-i) = 0, a(-1) = 4
-    r = sum_rules_mary(a, 4)
+    r = sum_rules(a, arity=4)
     assert r.value is False and r.witness["failures"] == ["a(-1) = 4 != 0"]
-    s = smoothness_mary(a, 4, 0)
+    s = smoothness(a, 0, arity=4)
     assert (s.value, s.status) == (False, CERTIFIED) and "a(-1) = 4 != 0" in s.witness["reason"]
     b = LaurentSymbol.from_mask([1, 2])                  # a(1) = 3, residue sums 1, 2, 0
-    assert [f.split(" =")[0] for f in sum_rules_mary(b, 3).witness["failures"]] == \
+    assert [f.split(" =")[0] for f in sum_rules(b, arity=3).witness["failures"]] == \
         ["a(exp(2*pi*i/3))", "a(exp(4*pi*i/3))"]
 
 
@@ -143,14 +153,14 @@ def test_jsr_between_spectral_radius_and_norms(slug, param):
     e = schemes.get(slug)
     a = e.symbol_at(**param)
     m = e.arity
-    k, c = difference_mask_mary(a, m)
-    h = holder_exponent_mary(a, m)
+    k, c = difference_mask(a, arity=m)
+    h = holder_exponent(a, arity=m)
     # rho(c) <= ||S_c^L||^(1/L) (residue sums, no transition matrices): alpha >= k - log_m(norm)/L
     L = 3
-    norm = scheme_norm_mary(c, L, m).value
+    norm = scheme_norm(c, L, arity=m).value
     assert h.lower >= k - sp.log(norm, m) / L - R(1, 10 ** 12)
     # rho(c) >= rho(T_eps): alpha <= k - log_m rho(T_eps)
-    for Te in transition_matrices_mary(c, m):
+    for Te in transition_matrices(c, arity=m):
         import numpy as np
 
         rho = max(abs(np.linalg.eigvals(np.array(Te.evalf(20).tolist(), dtype=float))))
@@ -166,8 +176,8 @@ def test_ternary_lagrange_weights_by_hand():
     # f_{3i+1} from cubic interpolation of f_{i-1..i+2} at i + 1/3: L_p(1/3), computed by hand
     a = schemes.get("ternary-dd-4").symbol
     assert [a.coeff(1 - 3 * p) for p in (-1, 0, 1, 2)] == [R(-5, 81), R(60, 81), R(30, 81), R(-4, 81)]
-    assert polynomial_reproduction_mary(a, 3).value == 3
-    assert polynomial_reproduction_mary(schemes.get("quaternary-dd-4").symbol, 4).value == 3
+    assert polynomial_reproduction(a, arity=3).value == 3
+    assert polynomial_reproduction(schemes.get("quaternary-dd-4").symbol, arity=4).value == 3
 
 
 def test_ternary_four_point_transcription():
@@ -175,9 +185,9 @@ def test_ternary_four_point_transcription():
     a = e.symbol
     assert [a.coeff(3 * j) for j in (-1, 0, 1)] == [0, 1, 0]                 # interpolatory
     assert F.symmetry(a).value is True
-    assert sum_rules_mary(a, 3).value is True                                # every mu
+    assert sum_rules(a, arity=3).value is True                                # every mu
     assert a.subs({MU: R(1, 27)}) == schemes.get("ternary-dd-4").symbol      # the Lagrange member
-    f = smoothing_factor_mary(a, 3)
+    f = smoothing_factor(a, arity=3)
     assert f.value == 3 and [(c["condition"], c["k"]) for c in f.witness["exceptional"]] == [({MU: R(1, 27)}, 4)]
 
 
@@ -186,24 +196,24 @@ def test_ternary_four_point_c2_range_exact():
     published value: the mask and the paper's parameter ranges could not be checked against the paper,
     see the entry's notes; the published claims that were retrieved are checked below)."""
     a = schemes.get("ternary-four-point").symbol
-    r = ck_range_mary(a, 3, 2, "mu", Ls=(1,))
+    r = ck_range(a, 2, "mu", Ls=(1,), arity=3)
     assert r.status == CERTIFIED and r.witness["exact"]
     assert r.value == sp.Interval.open(R(1, 15), R(1, 9))
     # boundaries, point by point with the JSR route (independent of the norm sets)
     for mu, expected in [(R(1, 15), False), (R(1, 15) + R(1, 1000), True), (R(1, 9) - R(1, 1000), True),
                          (R(1, 9), False)]:
-        s = smoothness_mary(a.subs({MU: mu}), 3, 2, max_L=0, max_word=0)
+        s = smoothness(a.subs({MU: mu}), 2, max_L=0, max_word=0, arity=3)
         assert (s.value, s.status) == (expected, CERTIFIED), mu
 
 
 def test_ternary_four_point_c1_boundaries():
     a = schemes.get("ternary-four-point").symbol
-    r = ck_range_mary(a, 3, 1, "mu", Ls=(1, 2))
+    r = ck_range(a, 1, "mu", Ls=(1, 2), arity=3)
     V = r.witness["not_Cj"]
     assert V == sp.Union(sp.Interval(-sp.oo, R(-1, 5)), sp.Interval(R(1, 3), sp.oo))
     assert r.value.sup == R(1, 3)                                         # upper boundary exact
     for mu in (R(-1, 5) + R(1, 100), R(1, 3) - R(1, 100)):
-        s = smoothness_mary(a.subs({MU: mu}), 3, 1, max_L=0, max_word=0)
+        s = smoothness(a.subs({MU: mu}), 1, max_L=0, max_word=0, arity=3)
         assert (s.value, s.status) == (True, CERTIFIED), mu
 
 
@@ -226,21 +236,21 @@ def test_ternary_four_point_published_claims():
     for r in (1, 2):
         assert sum(1 for j in range(-3, 4) if a.coeff(r - 3 * j) != 0) == 4
     # (T) C^2 for some mu: the certified C^2 range is non-empty (it is (1/15, 1/9), test above)
-    c2 = ck_range_mary(a, 3, 2, "mu", Ls=(1,))
+    c2 = ck_range(a, 2, "mu", Ls=(1,), arity=3)
     assert c2.status == CERTIFIED and not c2.value.is_empty
     mu0 = (c2.value.inf + c2.value.sup) / 2
-    s = smoothness_mary(a.subs({MU: mu0}), 3, 2, max_L=0, max_word=0)       # independent JSR route
+    s = smoothness(a.subs({MU: mu0}), 2, max_L=0, max_word=0, arity=3)       # independent JSR route
     assert (s.value, s.status) == (True, CERTIFIED)
     # (B) smaller support: ternary [-5/2, 5/2] (length 5) vs binary 4-point [-3, 3] (length 6), generic parameters
     b = schemes.get("four-point")
     w = b.params[0]
-    assert basic_limit_support_mary(a.subs({MU: mu0}), 3).value == (R(-5, 2), R(5, 2))
-    assert basic_limit_support_mary(b.symbol.subs({w: R(1, 16)}), 2).value == (-3, 3)
+    assert basic_limit_support(a.subs({MU: mu0}), arity=3).value == (R(-5, 2), R(5, 2))
+    assert basic_limit_support(b.symbol.subs({w: R(1, 16)}), arity=2).value == (-3, 3)
     # (B) higher smoothness: the binary 4-point scheme is C^2 for no w: for w != 1/16 it has two smoothing
     # factors and C^2 needs three (Dyn-Levin, Acta Numerica 2002, Sect. 4); at w = 1/16 certified not C^2
-    f = smoothing_factor_mary(b.symbol, 2)
+    f = smoothing_factor(b.symbol, arity=2)
     assert f.value == 2 and [(c["condition"], c["k"]) for c in f.witness["exceptional"]] == [({w: R(1, 16)}, 4)]
-    s = smoothness_mary(b.symbol.subs({w: R(1, 16)}), 2, 2)
+    s = smoothness(b.symbol.subs({w: R(1, 16)}), 2, arity=2)
     assert (s.value, s.status) == (False, CERTIFIED)
 
 

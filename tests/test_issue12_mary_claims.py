@@ -21,7 +21,7 @@ from analysis.claims.model import compare_verdicts, evaluate_paper
 from analysis.claims.paperfile import parse_paper
 from analysis.cli import main
 from analysis.cli.report import load_file
-from analysis.regularity.mary import smoothness_mary
+from analysis.regularity.holder import smoothness
 from analysis.result import AnalysisError
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -108,7 +108,7 @@ def test_c2_range_boundaries_pointwise():
     def c2(mu):
         from analysis.algebra.symbol import LaurentSymbol
 
-        return smoothness_mary(LaurentSymbol.from_mask(_mask(mu), start=-5), 3, 2).value
+        return smoothness(LaurentSymbol.from_mask(_mask(mu), start=-5), 2, arity=3).value
     e = sp.Rational(1, 1000)
     assert [c2(sp.Rational(1, 15) - e), c2(sp.Rational(1, 15) + e), c2(sp.Rational(1, 9) - e),
             c2(sp.Rational(1, 9) + e)] == [False, True, True, False]
@@ -181,7 +181,7 @@ def test_mary_ck_range_and_norm_test_refuted_with_counterexample():
     assert 0 < q <= sp.Rational(1, 15)
     from analysis.algebra.symbol import LaurentSymbol
 
-    assert smoothness_mary(LaurentSymbol.from_mask(_mask(q), start=-5), 3, 2).value is False
+    assert smoothness(LaurentSymbol.from_mask(_mask(q), start=-5), 2, arity=3).value is False
     w = evaluate_paper(_paper("norm test", 'j = 2\nL = 1\ninterval = "(1/15, 1/9)"'))[0].verdict
     assert w.status == "certified" and "1/3 S_(a_3)" in w.evidence[0].title
 
@@ -229,8 +229,8 @@ def test_atlas_mary(tmp_path, capsys):
 
 def test_mary_kinds_list_matches_the_classes():
     from analysis.claims.kinds import KIND_CLASSES
-    from analysis.claims.kinds.base import MARY_KINDS
+    from analysis.claims.kinds.base import ANY_ARITY_KINDS as MARY_KINDS
     from analysis.claims.template import template
 
-    assert sorted(n for n, c in KIND_CLASSES.items() if c.mary) == sorted(MARY_KINDS)
+    assert sorted(n for n, c in KIND_CLASSES.items() if c.any_arity) == sorted(MARY_KINDS)
     assert all(k in " ".join(template().split()) for k in MARY_KINDS)

@@ -28,10 +28,12 @@ import sympy as sp
 from analysis.claims.model import compare_verdicts, evaluate_paper, verdicts_json
 from analysis.claims.paperfile import parse_paper
 from analysis.cli.report import load_file
-from analysis.levels.level_dependent import H
-from analysis.levels.mary import (LevelDependentMary, difference_scheme_mary, level_scheme_mary,
-                                  ternary_exponential_bspline_2, weighted_series_boxes_mary, weighted_series_mary)
-from analysis.levels.reproduction_mary import generation_mary, reproduction_mary
+from analysis.levels.expbspline import ternary_exponential_bspline_2
+from analysis.levels.divided import divided_difference
+from analysis.levels.level_dependent import H, LevelDependentScheme
+from analysis.levels.leading_term import series_by_leading_term
+from analysis.levels.series import weighted_series
+from analysis.levels.reproduction import generation, reproduction
 from analysis.result import AnalysisError
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -93,11 +95,11 @@ def test_exp_mask_helper_matches_the_engine():
 # ------------------------------------------------------------------ item 1: the engine
 
 def test_perturbed_hat_series_exact_two_thirds():
-    s = level_scheme_mary(None, 3, mask=HAT, start=-3)
-    r = weighted_series_mary(s, {}, 0)
+    s = LevelDependentScheme.from_mask(HAT, -3, arity=3)
+    r = series_by_leading_term(s, {}, 0)
     assert r.status == "certified" and r.witness["verdict"] == "convergent"
     assert r.lower <= sp.Rational(2, 3) <= r.upper and r.upper - r.lower < sp.Rational(1, 10 ** 12)
-    d = weighted_series_mary(s, {}, 1)                     # terms 3^n 4/9 3^-n = 4/9: divergent
+    d = series_by_leading_term(s, {}, 1)                     # terms 3^n 4/9 3^-n = 4/9: divergent
     assert d.witness["verdict"] == "divergent" and 0 < d.witness["term_lower_bound"] <= sp.Rational(4, 9)
 
 
@@ -108,7 +110,7 @@ def test_exp_bspline_series_against_mpmath():
     for n in range(80):                                   # tail < 80 * 9^-80: negligible
         diff = [a - b for a, b in zip(_exp_mask(1, n), lim)]
         total += 3 ** n * max(sum(abs(diff[k]) for k in range(r, 7, 3)) for r in range(3))
-    r = weighted_series_mary(ternary_exponential_bspline_2(), {"theta": 1}, 1)
+    r = series_by_leading_term(ternary_exponential_bspline_2(), {"theta": 1}, 1)
     assert float(r.lower) - 1e-25 <= total <= float(r.upper) + 1e-25
     assert abs(total - mp.mpf("0.0510253301890459")) < 1e-15
 
@@ -120,7 +122,7 @@ def test_generation_against_direct_refinement(lam, generated):
     dev = max(_direct_generation(mp.mpc(complex(sp.sympify(lam))), 1, n)[0] for n in (0, 1, 2))
     assert (dev < mp.mpf(10) ** -40) == generated
     theta = ternary_exponential_bspline_2().params[0]
-    r = generation_mary(ternary_exponential_bspline_2(), [sp.sympify(lam) * theta], {"theta": 1})
+    r = generation(ternary_exponential_bspline_2(), [sp.sympify(lam) * theta], {"theta": 1})
     assert r.status == ("certified" if generated else "refuted")
 
 
@@ -132,7 +134,7 @@ def test_reproduction_against_direct_refinement():
         direct = abs(ratio - 1) < mp.mpf(10) ** -40
         assert direct == want
         theta = ternary_exponential_bspline_2().params[0]
-        r = reproduction_mary(ternary_exponential_bspline_2(), [sp.sympify(lam) * theta], {"theta": 1})
+        r = reproduction(ternary_exponential_bspline_2(), [sp.sympify(lam) * theta], {"theta": 1})
         assert r.value is want and r.status == ("certified" if want else "refuted")
 
 
@@ -143,7 +145,12 @@ def test_generation_m2_equals_binary():
     s = get("exp-chaikin-trig")
     t = s.params[0]
     lams = [sp.I * t, -sp.I * t]                 # (the refutation side is covered for m = 3 above)
-    assert generation_mary(LevelDependentMary(s, 2), lams).status == generation(s, lams).status == "certified"
+    from analysis.levels.bounds import _exact_zero
+    from analysis.levels.reproduction import sub_symbols
+
+    # the any-arity condition (equal sub-symbols A_0 = A_1 at w = exp(-lambda h/2)) agrees with the binary one
+    assert all(_exact_zero(A[1] - A[0]) for A in (sub_symbols(s, sp.exp(-lam * H / 2)) for lam in lams))
+    assert generation(s, lams).status == "certified"
 
 
 # ------------------------------------------------------------------ item 2: difference schemes, boxes
@@ -154,8 +161,8 @@ def _frac_mask(n):
 
 
 def test_difference_scheme_by_direct_refinement():
-    s = level_scheme_mary(None, 3, mask=HAT, start=-3)
-    d = difference_scheme_mary(s, 1)
+    s = LevelDependentScheme.from_mask(HAT, -3, arity=3)
+    d = divided_difference(s, 1)
     f = {j: Fraction((7 * j * j + 3 * j) % 11 - 5) for j in range(-8, 9)}
     for n in (0, 1, 2):
         g = _refine(_frac_mask(n), -3, f, 3)
@@ -171,19 +178,19 @@ def test_difference_scheme_by_direct_refinement():
 
 def test_difference_scheme_not_divisible_is_one_line():
     with pytest.raises(AnalysisError, match="does not divide"):
-        difference_scheme_mary(level_scheme_mary("(1+z+z**2)/z + 3**(-n)*z", 3), 1)
+        divided_difference(LevelDependentScheme.from_symbol("(1+z+z**2)/z + 3**(-n)*z", arity=3), 1)
 
 
 def test_boxes_pieces_depth():
     s = ternary_exponential_bspline_2()
     box = {"theta": (sp.Rational(1, 2), 2)}
-    one = weighted_series_boxes_mary(s, box, 1)
-    four = weighted_series_boxes_mary(s, box, 1, pieces=4)
+    one = series_by_leading_term(s, box, 1)
+    four = series_by_leading_term(s, box, 1, pieces=4)
     assert one.witness["verdict"] == four.witness["verdict"] == "convergent" and four.witness["sub_boxes"] == 4
     assert one.lower <= four.lower <= four.upper <= one.upper                # finer boxes: tighter
     # theta = 1/2 and theta = 2 themselves lie in the box enclosure
     for t in (sp.Rational(1, 2), 2):
-        p = weighted_series_mary(s, {"theta": t}, 1)
+        p = series_by_leading_term(s, {"theta": t}, 1)
         assert four.lower <= p.lower and p.upper <= four.upper
 
 
@@ -281,14 +288,14 @@ def test_refine_open_ternary_dd_reproduces_cubics():
     Constr. Approx. 5 (1989)): interior points are x^3 at the new parameters, with both end rules on the
     part that does not see the ghosts."""
     from analysis.algebra.symbol import LaurentSymbol
-    from analysis.stationary.mary import refine_mary
+    from analysis.stationary.refinement import refine
     from schemes import get
 
     a = get("ternary-dd-4").symbol
     cubes = [[sp.Integer(x) ** 3] for x in range(6)]
-    inner = [v[0] for v in refine_mary(a, cubes, 3, closed=False, exact=True)]
+    inner = [v[0] for v in refine(a, cubes, closed=False, exact=True, arity=3)]
     assert inner == [sp.Rational(k, 3) ** 3 for k in range(3, 13)]            # k/3 for k = 3..12
-    ext = [v[0] for v in refine_mary(a, cubes, 3, closed=False, exact=True, end_rule="extrapolate")]
+    ext = [v[0] for v in refine(a, cubes, closed=False, exact=True, end_rule="extrapolate", arity=3)]
     assert len(ext) == 3 * 5 + 1 and ext[0] == 0 and ext[-1] == 125             # end points kept
     assert ext[3:13] == inner
     assert isinstance(a, LaurentSymbol)
@@ -302,8 +309,7 @@ def test_refine_m2_equals_binary(closed, rule):
     import numpy as np
 
     from analysis.algebra.symbol import LaurentSymbol
-    from analysis.stationary.mary import refine_mary
-    from analysis.stationary.refinement import refine
+    from analysis.stationary.refinement import _refine_dilated, refine
 
     rng = random.Random(12)
     for _ in range(5):
@@ -312,13 +318,13 @@ def test_refine_m2_equals_binary(closed, rule):
         a = LaurentSymbol.from_mask([sp.Rational(x.numerator, x.denominator) for x in mask], start=start)
         pts = [[Fraction(rng.randint(-9, 9)), Fraction(rng.randint(-9, 9))] for _ in range(9)]
         b = refine(a, np.array(pts, dtype=object), steps=2, closed=closed, end_rule=rule, exact=True)
-        m2 = refine_mary(a, [[sp.Rational(x.numerator, x.denominator) for x in p] for p in pts], 2, 2,
-                         closed=closed, exact=True, end_rule=rule)
+        m2 = _refine_dilated(a, [[sp.Rational(x.numerator, x.denominator) for x in p] for p in pts], 2, 2,
+                             closed=closed, exact=True, end_rule=rule)     # the any-arity loop at m = 2
         assert [[sp.Rational(str(x)) for x in r] for r in b] == [list(r) for r in m2]
 
 
 def test_refine_closed_ternary_against_direct_periodic():
-    from analysis.stationary.mary import refine_mary
+    from analysis.stationary.refinement import refine
     from schemes import get
 
     a = get("ternary-four-point").symbol.subs({"mu": sp.Rational(1, 10)})
@@ -327,7 +333,7 @@ def test_refine_closed_ternary_against_direct_periodic():
     periodic = {j: pts[j % n] for j in range(-3 * n, 4 * n)}
     mask = [Fraction(str(c)) for c in a.mask]
     direct = _refine(mask, a.start, periodic, m)
-    got = [v[0] for v in refine_mary(a, [[sp.Rational(str(x))] for x in pts], m, 1, exact=True)]
+    got = [v[0] for v in refine(a, [[sp.Rational(str(x))] for x in pts], 1, exact=True, arity=m)]
     assert got == [sp.Rational(str(direct[i])) for i in range(m * n)]
 
 
@@ -354,10 +360,10 @@ def test_box_functions_stability(m, L):
     """chi_[0,L] is m-refinable with a(z) = 1 + z^L + ... + z^((m-1)L) (phi^(m xi)/phi^(xi)); its shifts are stable
     iff L = 1: phi^(2 pi j/L + 2 pi k) = 0 for all k when 0 < j < L (closed form (1 - e^(-iL xi))/(iL xi))."""
     from analysis.algebra.symbol import LaurentSymbol
-    from analysis.regularity.stability_mary import stable_shifts_mary
+    from analysis.regularity.stability import stable_shifts
 
     z = sp.Symbol("z")
-    r = stable_shifts_mary(LaurentSymbol.from_expr(sum(z ** (L * i) for i in range(m))), m)
+    r = stable_shifts(LaurentSymbol.from_expr(sum(z ** (L * i) for i in range(m))), arity=m)
     assert r.status == "certified" and r.value is (L == 1)
     if L > 1:
         assert r.witness["blocking_cycles"] and r.witness["reduced_mask"].expr() == sum(z ** i for i in range(m))
@@ -371,7 +377,7 @@ def test_unstable_ternary_spline_by_the_infinite_product():
     """(box on [0, 2]/2) * (ternary hat): phi^(pi + 2 pi k) = prod_i A((pi + 2 pi k)/3^i) = 0 for every k
     (one factor is an exact zero: the product is evaluated in mpmath, not through the engine)."""
     from analysis.algebra.symbol import LaurentSymbol
-    from analysis.regularity.stability_mary import stable_shifts_mary
+    from analysis.regularity.stability import stable_shifts
 
     z = sp.Symbol("z")
     expr = (1 + z ** 2 + z ** 4) * (1 + z + z ** 2) ** 2 / 9
@@ -387,14 +393,14 @@ def test_unstable_ternary_spline_by_the_infinite_product():
 
     assert max(abs(phihat(mp.pi + 2 * mp.pi * k)) for k in range(-3, 4)) < mp.mpf(10) ** -20
     assert abs(phihat(mp.pi / 2)) > mp.mpf(10) ** -3          # not identically small
-    r = stable_shifts_mary(LaurentSymbol.from_expr(expr), 3)
+    r = stable_shifts(LaurentSymbol.from_expr(expr), arity=3)
     assert r.value is False and r.witness["blocking_cycles"] == [2]
 
 
 def test_blocking_orders_m2_match_the_binary_criterion():
     from analysis.algebra.symbol import LaurentSymbol
     from analysis.regularity.stability import stable_shifts
-    from analysis.regularity.stability_mary import _blocking_orders
+    from analysis.regularity.stability import _blocking_orders
 
     z = sp.Symbol("z")
     for e in [1 + z ** 3, (1 + z) * (1 + z ** 5) / 2, (1 + z) ** 3 / 4, (1 + z ** 3) * (1 + z ** 5) / 2,
@@ -410,15 +416,15 @@ def test_stable_with_zeros_on_the_circle_by_completeness():
     by the complete criterion. Independent route: the autocorrelation symbol w(e^(i xi)) = sum_k |phi^(xi+2 pi k)|^2
     (eigenvector of the transfer operator) is 3/5 + (2/5) cos xi >= 1/5 > 0."""
     from analysis.algebra.symbol import LaurentSymbol
-    from analysis.regularity.sobolev_mary import autocorrelation_symbol
-    from analysis.regularity.stability_mary import stable_shifts_mary
+    from analysis.regularity.sobolev import autocorrelation_symbol
+    from analysis.regularity.stability import stable_shifts
 
     a = LaurentSymbol.from_expr("(1+z+z**2)*(1+z**2)/2")
-    r = stable_shifts_mary(a, 3)
+    r = stable_shifts(a, arity=3)
     assert r.value is True and r.status == "certified" and "no blocking cycle" in r.witness["reason"]
     w, dim = autocorrelation_symbol(a, 3)
     assert dim == 1
     vals = [sum(float(c) * mp.cos((w.start + k) * x) for k, c in enumerate(w.mask)) for x in mp.linspace(0, 2 * mp.pi, 400)]
     assert min(vals) > 0.19
     # and an unstable neighbour: (1+z+z^2)(1+z^2)(1+z^3+z^6)/6 has symmetric zeros (1+z^3+z^6 = H(z^3))
-    assert stable_shifts_mary(LaurentSymbol.from_expr("(1+z+z**2)*(1+z**2)*(1+z**3+z**6)/6"), 3).value is False
+    assert stable_shifts(LaurentSymbol.from_expr("(1+z+z**2)*(1+z**2)*(1+z**3+z**6)/6"), arity=3).value is False

@@ -26,10 +26,9 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 import schemes
 from analysis.algebra.symbol import LaurentSymbol
-from analysis.regularity.mary import holder_exponent_mary
-from analysis.regularity.sobolev import sobolev_exponent
-from analysis.regularity.sobolev_mary import autocorrelation_symbol, sobolev_exponent_mary
-from analysis.regularity.stability_mary import stable_shifts_mary
+from analysis.regularity.holder import holder_exponent
+from analysis.regularity.sobolev import _autocorrelation_route, autocorrelation_symbol, sobolev_exponent
+from analysis.regularity.stability import stable_shifts
 from analysis.result import CERTIFIED, INCONCLUSIVE, AnalysisError
 
 R = sp.Rational
@@ -45,7 +44,7 @@ def _q(m):
 @pytest.mark.parametrize("d", [1, 2, 3, 4, 5])
 def test_mary_bspline_sobolev_is_d_plus_one_half(m, d):
     e = schemes.get({3: "ternary", 4: "quaternary"}[m] + f"-bspline-{d}")
-    r = sobolev_exponent_mary(e.symbol, m)
+    r = sobolev_exponent(e.symbol, arity=m)
     assert (r.value, r.status) == (R(2 * d + 1, 2), CERTIFIED)
     assert r.witness["minimal_polynomial_root"] == R(1, m ** (2 * d + 1))
 
@@ -60,7 +59,7 @@ _ints = st.lists(st.integers(-4, 6), min_size=1, max_size=4).filter(lambda v: su
 def test_arity_two_equals_binary_sobolev(b, N, start):
     expr = sp.expand(((1 + Z) / 2) ** N * sum(c * Z ** i for i, c in enumerate(b)))
     a = LaurentSymbol.from_expr(2 * expr / expr.subs(Z, 1)).shift(start)
-    mine, binary = sobolev_exponent_mary(a, 2), sobolev_exponent(a)
+    mine, binary = _autocorrelation_route(a, 2), sobolev_exponent(a)
     assert mine.status == binary.status
     if binary.status == CERTIFIED:
         assert mine.value == binary.value
@@ -71,9 +70,9 @@ def test_arity_two_equals_binary_sobolev(b, N, start):
 
 def test_arity_two_unstable_box_and_four_point():
     box = LaurentSymbol.from_mask([1, 0, 0, 1])                 # box on [0, 3]: unstable, s_2 = 1/2
-    assert sobolev_exponent_mary(box, 2).value == sobolev_exponent(box).value == R(1, 2)
+    assert _autocorrelation_route(box, 2).value == sobolev_exponent(box).value == R(1, 2)
     four = LaurentSymbol.from_mask(["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"], start=-3)
-    mine, binary = sobolev_exponent_mary(four, 2), sobolev_exponent(four)
+    mine, binary = _autocorrelation_route(four, 2), sobolev_exponent(four)
     assert mine.lower <= binary.upper and binary.lower <= mine.upper
 
 
@@ -82,14 +81,14 @@ def test_arity_two_unstable_box_and_four_point():
 def test_unstable_ternary_masks():
     # phi_a = (phi_b + phi_b(.-1) + phi_b(.-2))/3 with phi_b the ternary quadratic B-spline: unstable, s_2 = 5/2
     a = LaurentSymbol.from_expr((1 + Z ** 3 + Z ** 6) * _q(3) ** 2 / 9)
-    st_ = stable_shifts_mary(a, 3)
+    st_ = stable_shifts(a, arity=3)
     assert st_.value is False and st_.witness["q"] == LaurentSymbol.from_mask([1, 1, 1])
-    assert sobolev_exponent_mary(a, 3).value == R(5, 2)
+    assert sobolev_exponent(a, arity=3).value == R(5, 2)
     # phi = (hat + hat(.-1))/2 (a zero at exp(i pi/3), not a cube root of unity): s_2 = 3/2
     a = LaurentSymbol.from_expr(_q(3) ** 2 * (1 - Z + Z ** 2) / 3)
-    st_ = stable_shifts_mary(a, 3)                                 # since round 2: blocking cycle {pi} (Phi_6 | a)
+    st_ = stable_shifts(a, arity=3)                                 # since round 2: blocking cycle {pi} (Phi_6 | a)
     assert st_.value is False and st_.witness["q"] == LaurentSymbol.from_mask([1, 1])
-    assert sobolev_exponent_mary(a, 3).value == R(3, 2)           # the autocorrelation route needs no stability
+    assert sobolev_exponent(a, arity=3).value == R(3, 2)           # the autocorrelation route needs no stability
 
 
 def test_autocorrelation_of_the_ternary_hat():
@@ -101,7 +100,7 @@ def test_autocorrelation_of_the_ternary_hat():
 @pytest.mark.parametrize("mu", ["-1/10", "0", "1/27", "1/15", "1/10", "1/5"])
 def test_ternary_four_point_between_holder_and_holder_plus_half(mu):
     a = schemes.get("ternary-four-point").symbol.subs({MU: R(mu)})
-    s2, h = sobolev_exponent_mary(a, 3), holder_exponent_mary(a, 3)
+    s2, h = sobolev_exponent(a, arity=3), holder_exponent(a, arity=3)
     assert s2.status == h.status == CERTIFIED
     assert h.lower <= s2.upper and s2.lower <= h.upper + R(1, 2)
     assert s2.upper - s2.lower < R(1, 10 ** 9)
@@ -117,7 +116,7 @@ def _random_stable_ternary(count, seed=20261124):
         if expr.subs(Z, 1) == 0:
             continue
         a = LaurentSymbol.from_expr(3 * expr / expr.subs(Z, 1))
-        if stable_shifts_mary(a, 3).value is True:
+        if stable_shifts(a, arity=3).value is True:
             out.append((a, N + sp.degree(sp.gcd(sp.Poly(sum(c * Z ** i for i, c in enumerate(b)), Z),
                                                   sp.Poly(_q(3), Z)), Z)))
     return out
@@ -134,7 +133,7 @@ def test_stable_formula_agrees_on_random_ternary_masks():
         idx = range(-n, n + 1)
         T = np.array([[Q[3 * i - j + n] if abs(3 * i - j) <= n else 0.0 for j in idx] for i in idx])
         expected = N - 0.5 * np.log(max(abs(np.linalg.eigvals(T)))) / np.log(3)
-        r = sobolev_exponent_mary(a, 3)
+        r = sobolev_exponent(a, arity=3)
         if expected < 0.01:                     # phi not in L2: lambda >= 1, an inconclusive is the answer
             assert r.status == INCONCLUSIVE
             continue
@@ -146,12 +145,12 @@ def test_stable_formula_agrees_on_random_ternary_masks():
 
 def test_bad_input():
     with pytest.raises(AnalysisError, match="a\\(1\\) = 3"):
-        sobolev_exponent_mary(LaurentSymbol.from_mask([1, 1]), 3)
+        sobolev_exponent(LaurentSymbol.from_mask([1, 1]), arity=3)
     with pytest.raises(AnalysisError, match="arity"):
-        sobolev_exponent_mary(LaurentSymbol.from_mask([1, 1]), 1)
+        sobolev_exponent(LaurentSymbol.from_mask([1, 1]), arity=1)
     with pytest.raises(AnalysisError):
-        sobolev_exponent_mary(schemes.get("ternary-four-point").symbol, 3)       # a parameter left
-    r = sobolev_exponent_mary(LaurentSymbol.from_mask([3]), 3)                 # phi = delta, not in L2
+        sobolev_exponent(schemes.get("ternary-four-point").symbol, arity=3)       # a parameter left
+    r = sobolev_exponent(LaurentSymbol.from_mask([3]), arity=3)                 # phi = delta, not in L2
     assert r.status == INCONCLUSIVE and "L2" in r.witness["reason"]
 
 

@@ -15,10 +15,10 @@ import sympy as sp
 
 import schemes
 from analysis.algebra.symbol import LaurentSymbol
-from analysis.regularity.mary import ck_range_mary, smoothness_mary
+from analysis.regularity.ranges import ck_range
+from analysis.regularity.holder import smoothness
 from analysis.regularity.strips import close_strip
 from analysis.stationary.difference import difference_symbol
-from analysis.stationary.mary import difference_symbol_mary, transition_matrices_mary
 from analysis.stationary.transition import transition_matrices
 
 R = sp.Rational
@@ -50,7 +50,7 @@ def _rho(M, x: float) -> float:
 
 @pytest.fixture(scope="module")
 def c1_range():
-    return ck_range_mary(_t4(), 3, 1, "mu", Ls=(1, 2), within=(R(-1, 4), R(1, 2)))
+    return ck_range(_t4(), 1, "mu", Ls=(1, 2), within=(R(-1, 4), R(1, 2)), arity=3)
 
 
 def test_ternary_c1_set_is_exactly_the_open_interval(c1_range):
@@ -63,7 +63,7 @@ def test_ternary_c1_set_is_exactly_the_open_interval(c1_range):
     assert any(x["from"] == "-1/5" and x["kind"] == "strip-left-end" for x in poly)
     assert all(x["max image norm <="] < 1 for x in poly)
     # a point inside the strip by the other route (certified JSR bounds at that point)
-    s = smoothness_mary(_t4().subs({MU: R(-1999, 10000)}), 3, 1, max_L=0, max_word=0)
+    s = smoothness(_t4().subs({MU: R(-1999, 10000)}), 1, max_L=0, max_word=0, arity=3)
     assert (s.value, s.status) == (True, "certified")
 
 
@@ -104,7 +104,7 @@ def test_c0_set_is_minus_one_to_one_on_the_command_line(capsys):
 
 
 def test_beyond_the_end_there_is_no_certificate():
-    am = difference_symbol_mary(_t4(), 2, 3)
+    am = difference_symbol(_t4(), 2, arity=3)
     across = close_strip(am, MU, R(-21, 100), R(-11455, 65536), arity=3, max_depth=8)   # contains -1/5
     assert not across["closed"] and "no certificate" in across["reason"]
     below = close_strip(am, MU, R(-21, 100), R(-1, 5), hi_open=True, arity=3, max_depth=8)  # JSR > 1 there
@@ -115,9 +115,9 @@ def _quaternary():
     """A quaternary interpolatory 4-point family with tension (built here, not a catalogue entry): the
     quaternary Dubuc–Deslauriers rules (cubic Lagrange) plus ``mu`` times the third difference
     ``(-1, 3, -3, 1)`` on the rule ``f_{4i+1}`` and its mirror on ``f_{4i+3}``."""
-    from schemes.mary import lagrange_mary_symbol
+    from schemes.interpolatory import dubuc_deslauriers_symbol
 
-    L4 = lagrange_mary_symbol(4, 4)
+    L4 = dubuc_deslauriers_symbol(4, 4)
     coef = {i: L4.coeff(i) for i in range(L4.start, L4.end + 1)}
     for r, sign in ((1, 1), (3, -1)):
         for p, w in zip((-1, 0, 1, 2), (-1, 3, -3, 1)):
@@ -142,9 +142,9 @@ def test_quaternary_strips_close_at_both_c1_ends():
     """m = 4: the C^1 strips next to both ends close. The left end -5/128: T_1 of (1/4) a_2 has the
     eigenvalue 1 (s.m.p. T_1); the right end 11/128: T_1 has the eigenvalue -1 (s.m.p. T_1^2, the
     half cycle T_1 maps the eigenvector to minus itself). The strip starts are where the exact norm tests
-    (L <= 8) stop (``ck_range_mary(a, 4, 1, within=(-1, 1))``, 64 s, not re-run here)."""
+    (L <= 8) stop (``ck_range(a, 1, within=(-1, 1), arity=4)``, 64 s, not re-run here)."""
     a = _quaternary()
-    am = difference_symbol_mary(a, 2, 4)
+    am = difference_symbol(a, 2, arity=4)
     left = close_strip(am, MU, R(-5, 128), R(-18307, 524288), lo_open=True, arity=4)
     right = close_strip(am, MU, R(43069, 524288), R(11, 128), hi_open=True, arity=4)
     assert left["closed"] and right["closed"], (left["reason"], right["reason"])
@@ -166,11 +166,11 @@ def test_binary_through_the_mary_path_is_the_binary_result():
     a = LaurentSymbol.from_mask([-w, 0, w + R(1, 2), 1, w + R(1, 2), 0, -w], start=-3)
     w_star = sp.CRootOf(32 * w**3 + 4 * w - 1, 0)
     c = difference_symbol(a, 2)
-    assert difference_symbol_mary(a, 2, 2) == c
+    assert difference_symbol(a, 2, arity=2) == c
     assert all(sp.expand(x - y) == sp.zeros(*x.shape)
-               for x, y in zip(transition_matrices(c), transition_matrices_mary(c, 2)))
+               for x, y in zip(transition_matrices(c), transition_matrices(c, arity=2)))
     old = close_strip(c, w, R(6049, 32768), w_star, hi_open=True)
-    new = close_strip(difference_symbol_mary(a, 2, 2), w, R(6049, 32768), w_star, hi_open=True, arity=2)
+    new = close_strip(difference_symbol(a, 2, arity=2), w, R(6049, 32768), w_star, hi_open=True, arity=2)
     assert old["closed"] and new["closed"]
     assert (new["word"], new["mu"], new["pieces"]) == (old["word"], old["mu"], old["pieces"])
     assert new["pieces"][0]["from"] == "6049/32768" and new["pieces"][-1]["to"] == sp.sstr(w_star)
@@ -181,7 +181,7 @@ def test_bad_arity_is_one_line(bad):
     from analysis.result import AnalysisError
 
     with pytest.raises(AnalysisError):
-        close_strip(difference_symbol_mary(_t4(), 2, 3), MU, R(-1, 5), R(-11455, 65536), arity=bad)
+        close_strip(difference_symbol(_t4(), 2, arity=3), MU, R(-1, 5), R(-11455, 65536), arity=bad)
 
 
 @pytest.mark.parametrize("value, message", [("abc", "--strip-budget must be a number of work units"),

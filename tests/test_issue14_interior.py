@@ -1,7 +1,7 @@
 """Issue 14: the certified interior of one-parameter C^j sets (exact parametric norm tests).
 
 Reference values are computed independently (exact numeric norms at rational points with
-``difference_norm`` / ``difference_norm_mary``, certified Hölder verdicts with ``smoothness``) or
+``difference_norm`` / ``difference_norm``, certified Hölder verdicts with ``smoothness``) or
 published: the 4-point scheme with tension w is C^1 for 0 < w < (sqrt(5) - 1)/8 (Dyn, Gregory,
 Levin 1987, a sufficient condition) and its exact C^1 range is (0, w*), w* ~ 0.19273 (Hechler,
 Mößner, Reif, *C1-continuity of the generalized four-point scheme*, Linear Algebra Appl. 430 (2009)).
@@ -20,7 +20,6 @@ from analysis.algebra.symbol import LaurentSymbol
 from analysis.regularity.holder import smoothness
 from analysis.regularity.interior import ck_interior
 from analysis.stationary.difference import difference_norm, difference_symbol
-from analysis.stationary.mary import difference_norm_mary, difference_symbol_mary
 from analysis.stationary.normbox import ParametricNorm
 
 W = sp.Symbol("w")
@@ -48,8 +47,8 @@ def test_ternary_point_box_is_the_exact_norm():
     a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
     t = a.params[0]
     q = sp.Rational(-1, 30)
-    N = ParametricNorm(difference_symbol_mary(a, 2, 3), t, 2, arity=3)
-    ref = difference_norm_mary(a.subs({t: q}), 2, 3, 2).value
+    N = ParametricNorm(difference_symbol(a, 2, arity=3), t, 2, arity=3)
+    ref = difference_norm(a.subs({t: q}), 2, 2, arity=3).value
     b = N.box_bound(q, q)
     assert sp.Rational(b.numerator, b.denominator) == ref
 
@@ -128,17 +127,18 @@ def test_ternary_c1_range_grows_beyond_the_norm_sets():
     (down to < -0.17), the undecided part stays inside (-1/5, -4/45) (not C^1 from the eigenvalue
     side at -1/5), and a point they certify is C^1 by the independent JSR verdict."""
     import schemes
-    from analysis.regularity.mary import ck_range_mary, smoothness_mary
+    from analysis.regularity.ranges import ck_range
+    from analysis.regularity.holder import smoothness
 
     a = schemes.get("ternary-four-point").symbol
-    r = ck_range_mary(a, 3, 1, "mu", Ls=(1, 2))
+    r = ck_range(a, 1, "mu", Ls=(1, 2), arity=3)
     assert r.witness["interior_tests"]
     assert r.value.inf < sp.Rational(-17, 100)
     U = r.witness["undecided"]
     assert U.is_subset(sp.Interval(sp.Rational(-1, 5), sp.Rational(-4, 45)))
     q = sp.Rational(-17, 100)
     assert r.value.contains(q) is sp.true
-    assert smoothness_mary(a.subs({sp.Symbol("mu"): q}), 3, 1).value is True
+    assert smoothness(a.subs({sp.Symbol("mu"): q}), 1, arity=3).value is True
 
 
 def _run(*argv):
@@ -194,8 +194,8 @@ def test_family_excludes_other_inputs(tmp_path):
 # ------------------------------------------------------------------ --maximize beyond one binary parameter
 def test_maximize_ternary_family():
     """Ternary interpolatory 4-point family on [-1/16, 0]: certified gap <= 1e-3, and every sampled
-    member's certified alpha (holder_exponent_mary, an independent route) lies below the box bound."""
-    from analysis.regularity.mary import holder_exponent_mary
+    member's certified alpha (holder_exponent, an independent route) lies below the box bound."""
+    from analysis.regularity.holder import holder_exponent
     from analysis.regularity.maximize_box import maximize_holder_box
 
     a = derive_mask(arity=3, support=11, interpolatory=True, symmetric="primal", reproduction=2).value
@@ -204,9 +204,9 @@ def test_maximize_ternary_family():
                             budget=60000)
     assert r.status == "certified" and r.witness["gap"] <= sp.Rational(1, 1000)
     for q in (sp.Rational(-1, 16), sp.Rational(-1, 20), r.value["t1"] + sp.Rational(1, 500), sp.Rational(-1, 100)):
-        h = holder_exponent_mary(a.subs({t: q}), 3)
+        h = holder_exponent(a.subs({t: q}), arity=3)
         assert h.lower <= r.upper
-    h = holder_exponent_mary(a.subs({t: r.value["t1"]}), 3)
+    h = holder_exponent(a.subs({t: r.value["t1"]}), arity=3)
     assert h.upper >= r.lower
 
 

@@ -251,7 +251,7 @@ COMMANDS = [
     (["range", "--scheme", "four-point", "--C", "1", "--within=-1/8,1/4", "--figure"],
      "analysis.regularity.ranges", "ck_parameter_set"),
     (["range", "--scheme", "ternary-four-point", "--C", "1", "--within=0,1/8", "--figure"],
-     "analysis.regularity.mary", "ck_range_mary"),
+     "analysis.regularity.ranges", "ck_range"),
     (["nonuniform", "reproduce", "--figure"], "analysis.nonuniform", "reproduce"),
     (["nonuniform", "chamfer", "--figure"], "analysis.nonuniform", "chamfer_example"),
     (["reproduce", "--scheme", "exp-chaikin-trig", "--lambdas", "I*t,-I*t", "--param", "t=1", "--plot"],

@@ -106,7 +106,7 @@ def test_small_holder_imports_only_what_it_uses(argv, scipy_ok):
     assert "sympy" in mods and "analysis.regularity.holder" in mods         # it did compute
     unused = ("scipy.optimize", "matplotlib", "tqdm", "dask", "clarabel", *UPPER,
               "analysis.regularity.atlas", "analysis.regularity.ranges", "analysis.regularity.sobolev",
-              "analysis.nonuniform", "schemes.seed003", "schemes.seed004", "schemes.mary")
+              "analysis.nonuniform", "schemes.seed003", "schemes.seed004")
     assert not loaded(mods, unused), loaded(mods, unused)
     if not scipy_ok:
         assert not loaded(mods, ("scipy",)), loaded(mods, ("scipy",))

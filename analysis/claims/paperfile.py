@@ -32,11 +32,10 @@ expression in ``z``) or ``level_mask`` + ``start`` (a level-dependent scheme, co
 ``n`` or ``h = 2^-n``) or ``level_symbol`` (an expression in ``z`` and ``n``); the two level-dependent
 forms take helper definitions ``where = { c = "cos(theta/2**(n+1))" }``. ``arity = M`` (issue 12;
 default 2, or the catalogue entry's arity) makes the scheme m-ary, ``(S_a f)_i = sum_j a_{i-Mj} f_j``:
-the kinds of :data:`analysis.claims.kinds.base.MARY_KINDS` then use the m-ary analyses, the others
-refuse the claim when the file is loaded. A level-dependent m-ary scheme (``level_mask`` or
-``level_symbol`` with ``arity = M``) uses ``h = M^-n`` (the level enters only through ``M^n``); the
-kinds weighted series, asymptotic equivalence and exponential reproduction evaluate it with
-:mod:`analysis.levels.mary` and :mod:`analysis.levels.reproduction_mary`.
+the kinds of :data:`analysis.claims.kinds.base.ANY_ARITY_KINDS` then analyse it with that arity, the
+others refuse the claim when the file is loaded. A level-dependent m-ary scheme (``level_mask`` or
+``level_symbol`` with ``arity = M``) uses ``h = M^-n`` (the level enters only through ``M^n``) and carries
+its arity into every analysis.
 
 A paper file is data, never code. Its ``python`` claims (``evaluator = "package.module:function"``)
 are not imported or run unless the caller says so (``python="allowed"``: ``subdiv report/check
@@ -270,8 +269,7 @@ def _level_scheme(t: Mapping, how: str, m: int, name: str):
     """A level-dependent scheme from ``level_symbol`` (an expression in ``z`` and ``n``) or ``level_mask``
     with the helper definitions ``where = { c = "cos(theta/3**(n+1))" }``: binary
     (:class:`~analysis.levels.level_dependent.LevelDependentScheme`, ``h = 2^-n``) or m-ary
-    (:class:`~analysis.levels.mary.LevelDependentMary`, ``h = m^-n``; issue 12, second round)."""
-    from ..levels.mary import level_scheme_mary
+    (``arity = m``, ``h = m^-n``)."""
 
     where = t.get("where", {})
     if not isinstance(where, Mapping) or not all(isinstance(v, (str, int, float)) for v in where.values()):
@@ -281,19 +279,13 @@ def _level_scheme(t: Mapping, how: str, m: int, name: str):
     if how == "level_symbol":
         if not isinstance(t["level_symbol"], str):
             raise AnalysisError("level_symbol must be a string: an expression in z and the level n")
-        if m == 2:
-            level = LevelDependentScheme.from_symbol(t["level_symbol"], where=where, slug=name)
-        else:
-            level = level_scheme_mary(t["level_symbol"], m, where=where, slug=name)
+        level = LevelDependentScheme.from_symbol(t["level_symbol"], where=where, slug=name, arity=m)
         what = f"level-dependent symbol a^n(z) = {t['level_symbol']}"
     else:
         if not isinstance(t["level_mask"], list):
             raise AnalysisError("level_mask must be a list of coefficients")
         items = [str(c) for c in t["level_mask"]]
-        if m == 2:
-            level = LevelDependentScheme.from_mask(items, start, where=where, slug=name)
-        else:
-            level = level_scheme_mary(None, m, mask=items, start=start, where=where, slug=name)
+        level = LevelDependentScheme.from_mask(items, start, where=where, slug=name, arity=m)
         what = f"level-dependent mask {items} from index {start}"
     if where:
         what += " where " + ", ".join(f"{k} = {v}" for k, v in where.items())

@@ -118,11 +118,11 @@ def read_number(text: str, what: str, *, real: bool = True, infinity: bool = Fal
 
 def _catalogue_arity(name: str, level: bool = False) -> int:
     """The arity of a catalogue entry; the level-dependent catalogue (``schemes.level_dependent``,
-    issue 13) is binary, the level-dependent m-ary entries (``schemes.level_mary``) carry their arity.
+    issue 13) is binary, the level-dependent m-ary entries (``schemes.level_dependent.ARITY_ENTRIES``) carry their arity.
     An unknown name keeps the stationary catalogue's error, or the level-dependent catalogue's
     (``level=True``: a command that takes level-dependent schemes)."""
     import schemes
-    from schemes.index import ALIASES, BY_SLUG, LEVEL, LEVEL_MARY   # names and arities: nothing is built
+    from schemes.index import ALIASES, BY_SLUG, LEVEL, LEVEL_ARITY   # names and arities: nothing is built
 
     key = str(name).strip().lower()
     if key in BY_SLUG or key in ALIASES:
@@ -132,8 +132,8 @@ def _catalogue_arity(name: str, level: bool = False) -> int:
     except AnalysisError as stationary_error:
         from schemes import level_dependent
 
-        if key in LEVEL_MARY:
-            return LEVEL_MARY[key]
+        if key in LEVEL_ARITY:
+            return LEVEL_ARITY[key]
         if key in LEVEL:
             return 2
         try:
@@ -148,7 +148,7 @@ def _catalogue_arity(name: str, level: bool = False) -> int:
 def scheme_arity(args, level: bool = False) -> int:
     """The arity of the scheme input: ``--arity M`` (an integer >= 2), else the catalogue entry's
     arity, else 2. A ``--arity`` that contradicts the entry's is an error (issue 12)."""
-    from ..algebra.mary import check_arity
+    from ..algebra.factorization import check_arity
 
     text = getattr(args, "arity", None)
     given = None
@@ -186,7 +186,7 @@ def scheme_from_args(args, *, arity_ok: bool = False) -> tuple[LaurentSymbol, st
     """The symbol (with --param values substituted) and a label for it.
 
     Commands without m-ary support refuse an m-ary input (``--arity M`` or an m-ary catalogue entry)
-    with a one-line error; the m-ary commands (:mod:`analysis.cli.mary`) pass ``arity_ok=True``.
+    with a one-line error; the commands' arity branches pass ``arity_ok=True``.
     Input naming the level ``n`` is a one-line error here (a stationary scheme is needed);
     ``--where`` definitions without ``n`` are substituted (:mod:`analysis.cli.level_input`)."""
     if not arity_ok and (m := scheme_arity(args)) != 2:

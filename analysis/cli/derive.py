@@ -180,9 +180,9 @@ def _ck_part(args, r, arity: int, lines: list, data: dict) -> None:
     if not (lo.is_finite and hi.is_finite):
         raise AnalysisError("--within needs finite bounds for --C")
     if arity != 2:
-        from ..regularity.mary import ck_range_mary
+        from ..regularity.ranges import ck_range
 
-        c = ck_range_mary(r.value, arity, j, within=(lo, hi))
+        c = ck_range(r.value, j, within=(lo, hi), arity=arity)
         lines.append(f"C^{j} set on [{lo}, {hi}]: {c.value} ({c.status}); undecided: {c.witness['undecided']}")
         data["C"] = {"j": j, "status": c.status, "set": str(c.value), "undecided": str(c.witness["undecided"])}
         return

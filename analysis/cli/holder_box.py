@@ -5,7 +5,7 @@ The box version of ``subdiv holder`` on a level-dependent scheme (:mod:`analysis
 parameter boxes by an adaptive cover (``--pieces`` per parameter, ``--depth`` bisections), and
 "not C^d" for exponential B-spline schemes recognised identically in the parameters. ``--open NAME``
 reads the box of the limit's parameter as an open interval for the limit's hypothesis (as
-``subdiv series --C K --open NAME``). ``--arity M`` (or an m-ary entry of :mod:`schemes.level_mary`): the
+``subdiv series --C K --open NAME``). ``--arity M`` (or an m-ary entry of :mod:`schemes.level_dependent`): the
 same cover with dilation M (``h = M^-n``; ``--open`` binary only).
 
 Examples
@@ -120,8 +120,8 @@ def _verdict_lines(r) -> list[str]:
 
 
 def holder_box(args) -> None:
-    """``subdiv holder --box ...`` on a level-dependent scheme (binary; ``--arity M`` or an m-ary catalogue
-    entry of :mod:`schemes.level_mary`: dilation M, ``h = M^-n``)."""
+    """``subdiv holder --box ...`` on a level-dependent scheme (binary; ``--arity M`` or an m-ary entry of
+    :mod:`schemes.level_dependent`: dilation M, ``h = M^-n``)."""
     import sympy as sp
 
     from ..levels.ck_box import level_smoothness_box
@@ -132,12 +132,12 @@ def holder_box(args) -> None:
     pieces, depth = _options(args)
     k_max = k_max_arg(args)
     if m != 2:
-        from .levels_mary import level_scheme_mary_from_args
+        from .levels import level_scheme_with_arity
 
         if args.open is not None:
             raise AnalysisError("--open is available for binary schemes only (the open-interval limit test is "
                                 "binary); drop --open or --arity")
-        s = level_scheme_mary_from_args(args, m).scheme
+        s = level_scheme_with_arity(args, m)
     else:
         s, growing = _scheme(args)
         if s is None:

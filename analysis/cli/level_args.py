@@ -1,8 +1,7 @@
 """Arguments of the level-dependent commands (``series``, ``holder``, ``reproduce``; every arity, every level map).
 
 One reading of ``--box NAME=LOW,HIGH`` (repeatable), of ``--param`` together with ``--box``, and of ``--C K``
-for :mod:`analysis.cli.levels` (binary), :mod:`analysis.cli.levels_mary` (``--arity M``) and
-:mod:`analysis.cli.levels_rational` (the level through n itself).
+for :mod:`analysis.cli.levels` (every arity: ``--arity M``) and :mod:`analysis.cli.levels_rational` (the level through n itself).
 
 Examples
 --------

@@ -41,9 +41,9 @@ def uses_level(args) -> bool:
         return True
     name = getattr(args, "scheme", None)
     if name:
-        from schemes.index import LEVEL, LEVEL_MARY     # the names only: no entry is built
+        from schemes.index import LEVEL, LEVEL_ARITY     # the names only: no entry is built
 
-        return str(name).strip().lower() in LEVEL or str(name).strip().lower() in LEVEL_MARY
+        return str(name).strip().lower() in LEVEL or str(name).strip().lower() in LEVEL_ARITY
     return False
 
 

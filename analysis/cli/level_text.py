@@ -1,7 +1,7 @@
 """The text of the level-dependent commands: one line per weighted series, the C^k verdict lines.
 
-One implementation for :mod:`analysis.cli.levels` (binary, ``h = 2^-n``), :mod:`analysis.cli.levels_mary`
-(``--arity M``, ``h = M^-n``) and :mod:`analysis.cli.levels_rational` (the level through n itself); each
+One implementation for :mod:`analysis.cli.levels` (``h = 2^-n``; ``--arity M``: ``h = M^-n``) and
+:mod:`analysis.cli.levels_rational` (the level through n itself); each
 passes the label of the weight (``m = 1``, ``weight 3^(1n)``) and the detail its engine provides.
 
 Examples

@@ -66,17 +66,91 @@ def _ints(text, what):
         raise AnalysisError(f"{what} must be integers like 0,1,2, not {text!r}") from None
 
 
+def level_scheme_with_arity(args, m: int):
+    """The level-dependent scheme of arity ``m > 2`` of the inline arguments or of the catalogue (``--scheme``):
+    the level enters through ``m^n``."""
+    from ..levels.level_dependent import LevelDependentScheme
+    from .level_input import _int, _items
+
+    sym, mask = getattr(args, "symbol", None), getattr(args, "mask", None)
+    if getattr(args, "scheme", None):                   # the level-dependent catalogue (schemes.level_dependent)
+        from schemes.level_dependent import get
+
+        if sym is not None or mask is not None or getattr(args, "where", None):
+            raise AnalysisError("give --scheme NAME or --symbol/--mask, not both")
+        s = get(args.scheme)
+        if s.arity != m:
+            raise AnalysisError(f"scheme {args.scheme!r} has arity {s.arity}; drop --arity or give --arity {s.arity}")
+        return s
+    if (sym is None) == (mask is None):
+        raise AnalysisError("give exactly one of --symbol EXPR, --mask LIST (using the level n)")
+    where = getattr(args, "where", None) or []
+    if sym is not None:
+        s = LevelDependentScheme.from_symbol(sym, where=where, slug="symbol", arity=m)
+    else:
+        s = LevelDependentScheme.from_mask(_items(mask, "mask"), _int(getattr(args, "start", "0"), "--start"),
+                                           where=where, slug="mask", arity=m)
+    from ..levels.level_dependent import H
+
+    if all(H not in c.free_symbols for c in s.mask):
+        raise AnalysisError("the scheme does not depend on the level n: use a stationary command (e.g. subdiv holder)")
+    return s
+
+
+def _values_of(args, s) -> dict:
+    """``--param`` and ``--box`` (:func:`analysis.cli.level_args.param_box_values`); every parameter needs one."""
+    vals = param_box_values(args, "theta=1/2,2")
+    missing = [p for p in s.param_names if p not in vals]
+    if missing:
+        raise AnalysisError(f"undefined name(s) {', '.join(missing)}: define them with --where NAME=EXPR "
+                            "or give --param NAME=VALUE")
+    return vals
+
+
 def cmd_series(args) -> None:
     from ..jsonable import fmt_lower, fmt_upper
 
     from ..levels.level_dependent import leading_asymptotics
+    from ..levels.leading_term import series_by_leading_term
     from ..levels.series import weighted_series
     from .common import scheme_arity
 
-    if (arity := scheme_arity(args, level=True)) != 2:          # level-dependent m-ary scheme (issue 12)
-        from .levels_mary import cmd_series as series_mary
+    if (arity := scheme_arity(args, level=True)) != 2:          # arity m > 2: the level through m^n
+        import sympy as sp
 
-        return series_mary(args, arity)
+        m = arity
+        if getattr(args, "C", None) is not None or getattr(args, "open", None):
+            raise AnalysisError("--C/--open (C^k on a parameter region) are not available for m-ary schemes; "
+                                "use subdiv holder --arity M at parameter values")
+        s = level_scheme_with_arity(args, m)
+        vals = _values_of(args, s)
+        d = getattr(args, "difference", 0) or 0
+        pieces, depth = getattr(args, "pieces", 1) or 1, getattr(args, "depth", 0) or 0
+        for name, v in (("--difference", d), ("--pieces", pieces), ("--depth", depth)):
+            if isinstance(v, bool) or not isinstance(v, int) or v < (1 if name == "--pieces" else 0):
+                raise AnalysisError(f"{name} must be an integer >= {1 if name == '--pieces' else 0}, not {v!r}")
+        if d:
+            from ..levels.divided import divided_difference
+
+            s = divided_difference(s, d)
+        rows, lines = [], []
+        for k in _ints(args.m, "--m"):
+            r = series_by_leading_term(s, vals, k, pieces=pieces, depth=depth, N=args.N)
+            if not lines:
+                lines.append(f"scheme {s.slug} (arity {m}, h = {m}^-n"
+                             + (f", divided difference scheme of order {d}" if d else "") + "): ||S_(a^n) - S_a|| ~ "
+                             + (f"{r.witness['leading_asymptotics']} (exact)" if "leading_asymptotics" in r.witness else
+                                "?"))
+                if r.witness.get("sub_boxes", 1) > 1 or pieces > 1:
+                    lines.append(f"  ({r.witness['sub_boxes']} sub-boxes: --pieces {pieces}, --depth {depth})")
+            rows.append({"m": k, **r.to_json()})
+            lines.append(series_line(f"weight {m}^({k}n)", r, lambda v, r=r: (
+                f"tail <= {fmt_upper(r.witness['tail']['bound'], 3, 'g')}, ratio {r.witness['tail']['ratio']}"
+                if v == "convergent" else
+                f": terms >= {fmt_lower(r.witness['term_lower_bound'], 6, 'g')}; leading constant "
+                f"{sp.sstr(r.witness['leading_constant'])}" if v == "divergent" else f" — {r.witness.get('reason')}")))
+        _emit(args, {"scheme": s.slug, "arity": m, "difference": d, "series": rows}, "\n".join(lines))
+        return
     if args.difference < 0:
         raise AnalysisError(f"--difference must be >= 0, not {args.difference}")
     try:
@@ -258,13 +332,28 @@ def cmd_reproduce(args) -> None:
     _emit(args, out, "\n".join(lines))
 
 
-def holder_level_dependent(args, s) -> None:
-    """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status)."""
+def holder_level_dependent(args, s, arity: int = 2) -> None:
+    """``subdiv holder`` on a level-dependent scheme: convergence and C^k for each k (theorem, status).
+
+    Arity ``m > 2`` (``s`` None: read from the arguments with :func:`level_scheme_with_arity`): parameters by
+    ``--param``; the lines name the arity and ``h = m^-n``."""
     import sympy as sp
 
     from ..levels.ck import level_smoothness
+    from ..levels.level_dependent import H, N
 
     stationary_options_refused(args)
+    if arity != 2:
+        s = level_scheme_with_arity(args, arity)
+        vals = _values_of(args, s)
+        r = level_smoothness(s, vals, k_max=k_max_arg(args))
+        point = {q: vals[q.name] for q in s.params if not isinstance(vals[q.name], tuple)}
+        lines = [f"scheme: {s.slug} (level-dependent, arity {arity}, h = {arity}^-n)",
+                 f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(H, sp.Integer(arity) ** (-N)).subs(point)))}",
+                 limit_line(r.witness["limit"])] + verdict_lines(r)
+        _emit(args, {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()},
+              "\n".join(lines))
+        return
     k_max = k_max_arg(args)
     r = level_smoothness(s, k_max=k_max)
     lim = r.witness["limit"]

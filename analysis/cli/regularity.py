@@ -13,7 +13,6 @@ from __future__ import annotations
 
 from fractions import Fraction
 
-from . import mary as _mary
 from .common import (WORK_HELP, _add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
                      check_writable, require_values, scheme_arity, scheme_from_args, work_arg)
 from ..result import AnalysisError
@@ -255,6 +254,80 @@ def _stability_part(args, a, budget):
     return lines, st.to_json()
 
 
+def _input_with_arity(args, m: int):
+    a, label = scheme_from_args(args, arity_ok=True)
+    return a, label, f"scheme: {label}   (arity {m}, domain {a.domain})"
+
+
+def _fmt_set(S) -> str:
+    """A sympy set of reals as ``(a, b] U [c, oo)``."""
+    import sympy as sp
+
+    if S == sp.EmptySet:
+        return "empty"
+    parts = S.args if isinstance(S, sp.Union) else (S,)
+    out = []
+    for I in parts:
+        if isinstance(I, sp.Interval):
+            out.append(("(" if I.left_open else "[") + f"{sp.sstr(I.start)}, {sp.sstr(I.end)}"
+                       + (")" if I.right_open else "]"))
+        else:
+            out.append(sp.sstr(I))
+    return " U ".join(out)
+
+
+def _sobolev_lines(a, m: int, lines: list, data: dict) -> None:
+    """``holder --sobolev`` for a scheme of arity ``m > 2``: ``s_2 = -(1/2) log_m lambda``."""
+    import sympy as sp
+
+    from ..jsonable import fmt_bound
+    from ..regularity.sobolev import sobolev_exponent
+
+    s2 = sobolev_exponent(a, arity=m)
+    if s2.value is not None:
+        head = f"L2-Sobolev exponent s_2 = {sp.sstr(s2.value)} exactly   [{s2.status}]"
+    elif s2.lower is not None:
+        head = (f"L2-Sobolev exponent s_2 in [{fmt_bound(s2.lower, 'lower', 12)}, {fmt_bound(s2.upper, 'upper', 12)}]"
+                f"   [{s2.status}]")
+    else:
+        head = f"L2-Sobolev exponent s_2: [{s2.status}]"
+    lines.append(head)
+    w = s2.witness
+    if "lambda_lower" in w:
+        lines.append(f"  s_2 = -(1/2) log_{m} lambda, lambda = largest root of {sp.sstr(w['minimal_polynomial'])} "
+                     f"(exact {m}-ary transfer-operator sequence, r = {w['r']})")
+    if "weight" in w:
+        lines.append(f"  weight h = (2-z-1/z)^r w: {w['weight']}")
+    if "reason" in w:
+        lines.append(f"  {w['reason']}")
+    data["sobolev"] = {"value": s2.value, "lower": s2.lower, "upper": s2.upper, "status": s2.status,
+                       "weight": w.get("weight"), "reason": w.get("reason")}
+
+
+def _figure(args, a, m: int, p: str, j: int, within, r, label: str, lines: list, data: dict) -> None:
+    """``range --figure`` for an m-ary family: certified alpha enclosures at ``max(grid, 8) + 1`` points,
+    the level alpha = j and the finite ends of the C^j set (issue 12)."""
+    import sympy as sp
+
+    from ..regularity.ranges import alpha_curve
+    from ..report.plots import plot_alpha_curve
+
+    grid = _int_arg(args.grid, "--grid")
+    if grid < 2 or grid > 400:
+        raise AnalysisError("--grid must be between 2 and 400")
+    budget = work_arg(args.budget, "--budget")
+    curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget=budget, arity=m)
+    parts = r.value.args if isinstance(r.value, sp.Union) else (() if r.value == sp.EmptySet else (r.value,))
+    ends = [{"exact_float": float(x)} for I in parts if isinstance(I, sp.Interval)
+            for x in (I.start, I.end) if x.is_finite and x not in within]
+    try:
+        plot_alpha_curve(curve, args.figure, j=j, boundaries=ends, label=f"{label} (arity {m})")
+    except OSError as exc:
+        raise AnalysisError(f"cannot write the figure {args.figure!r}: {exc.strerror or exc}") from None
+    lines.append(f"figure written to {args.figure} (alpha at {len(curve.value)} points, {curve.status})")
+    data["figure"] = args.figure
+
+
 def cmd_holder(args) -> None:
     from .holder_box import holder_box, refuse_box_options
 
@@ -265,8 +338,52 @@ def cmd_holder(args) -> None:
     if getattr(args, "box", None):                   # C^k on a parameter box, level-dependent (issue 13)
         return holder_box(args)
     refuse_box_options(args)
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_holder(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        import sympy as sp
+
+        from ..jsonable import fmt_bound
+        from ..regularity.convergence import NotConvergent
+        from ..regularity.holder import holder_exponent, smoothness
+
+        from .level_input import uses_level
+
+        if uses_level(args):                        # a level-dependent scheme of arity m
+            from .levels import holder_level_dependent
+
+            return holder_level_dependent(args, None, arity=m)
+        if getattr(args, "approx", False):
+            raise AnalysisError("--approx is not available for m-ary schemes yet: give the mask exactly (fractions or radicals)")
+        a, label, head = _input_with_arity(args, m)
+
+        require_values(a, label, "holder")
+        budget = work_arg(args.budget, "--budget")
+        lines, data = [head], {"scheme": label, "arity": m}
+        try:
+            h = holder_exponent(a, budget=budget, arity=m)
+        except NotConvergent as exc:
+            r = exc.result()
+            lines.append(f"{r.witness['reason']}   [{r.status}]")
+            data["alpha"] = r.to_json()
+            _emit(args, data, "\n".join(lines))
+            return
+        if h.value is not None:
+            lines.append(f"Hoelder exponent alpha = {sp.sstr(h.value)}   [{h.status}]")
+        else:
+            lines.append(f"Hoelder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
+                         f"   [{h.status}]")
+        lines.append(f"  alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1}), c = {h.witness['c'].pretty()}")
+        data["alpha"] = {"value": h.value, "lower": h.lower, "upper": h.upper, "status": h.status, "k": h.witness["k"]}
+        if args.C is not None:
+            j = _int_arg(args.C, "--C")
+            s = smoothness(a, j, budget=budget, arity=m)
+            verdict = {True: f"C^{j}", False: f"not C^{j}", None: "undecided"}[s.value]
+            lines.append(f"{verdict}: {s.witness['reason']}   [{s.status}]")
+            data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness["reason"]}
+        if getattr(args, "sobolev", False):
+            _sobolev_lines(a, m, lines, data)
+        _emit(args, data, "\n".join(lines))
+        return
     budget = work_arg(args.budget, "--budget")
     from .level_input import is_stationary, level_scheme_from_args
 
@@ -344,8 +461,62 @@ def cmd_range(args) -> None:
 
         check_table(args.table)
     apply_family(args)                                # --family FILE.json (issue 14)
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_range(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        from ..regularity.ranges import ck_range
+
+        if args.figure:
+            check_figure(args.figure, "the figure")
+        a, label, head = _input_with_arity(args, m)
+        j = _int_arg(args.C, "--C")
+        within = _parse_within(args.within)
+        if args.figure and not all(w.is_finite for w in within):
+            raise AnalysisError("--figure needs finite bounds in --within, e.g. --within=-1,1")
+        strip_budget = work_arg(getattr(args, "strip_budget", 30_000), "--strip-budget", minimum=0)
+        Ls = [1, 2]
+        r = ck_range(a, j, args.param_name, Ls=Ls, within=within, strip_budget=strip_budget, arity=m)
+        p = r.witness["parameter"]
+        tests = r.witness.get("interior_tests") or []
+        extra = " and parametric norm tests, L <= 8" if tests else ""
+        polytopes = [x for t in tests for x in t.get("polytope", [])]
+        if polytopes:
+            def strip(x):
+                lo_open, hi_open = x["kind"] in ("strip-left-end", "strip-both"), x["kind"] in ("strip-right-end", "strip-both")
+                return f"{'(' if lo_open else '['}{x['from']}, {x['to']}{')' if hi_open else ']'}"
+            extra += ", the strip" + ("s " if len(polytopes) > 1 else " ") + ", ".join(map(strip, polytopes)) \
+                + " by a parametric invariant polytope (product " + ", ".join(f"T_{x['product']}" for x in polytopes) + ")"
+        lines = [head, f"C^{j} (m-ary Dyn-Levin norm sets, L in {Ls}{extra}): {p} in {_fmt_set(r.value)}",
+                 f"not C^{j} (a transition matrix eigenvalue of modulus >= {m}^{r.witness['k'] - j}): "
+                 f"{_fmt_set(r.witness['not_Cj'])}",
+                 (f"the C^{j} range is exactly {_fmt_set(r.value)}, certified on both sides" if r.witness["exact"] else
+                  f"undecided: {_fmt_set(r.witness['undecided'])} (decide points with `subdiv holder --C {j}`)")
+                 + f"   [{r.status}]"]
+        data = {"scheme": label, "arity": m, "j": j, "parameter": p, "Cj": _fmt_set(r.value),
+                "not_Cj": _fmt_set(r.witness["not_Cj"]), "undecided": _fmt_set(r.witness["undecided"]),
+                "status": r.status}
+        if polytopes:
+            data["strips_closed"] = polytopes
+        if args.table:
+            from .tables import write_table
+
+            rows = [[f"C^{j}", _fmt_set(r.value)], [f"not C^{j}", _fmt_set(r.witness["not_Cj"])],
+                    ["undecided", _fmt_set(r.witness["undecided"])]]
+            write_table(args.table, ["", f"{p} in"], rows, f"subdiv range: {label} (arity {m}), where is it C^{j}? "
+                                                         f"[{r.status}]")
+            lines.append(f"table written to {args.table}")
+            data["table"] = args.table
+        for why in (w for t in tests for w in t.get("strips not closed by the invariant polytope", [])):
+            lines.append(f"  strip not closed by the parametric invariant polytope: {why}")
+            data.setdefault("strips_not_closed", []).append(why)
+        if getattr(args, "maximize", None):          # issue 14: the smoothest member on --within
+            from .common import parse_coefficient
+            from .maximize import maximize_part
+
+            maximize_part(a, {p: within}, m, parse_coefficient(args.gap), 60_000, lines, data)
+        if args.figure:
+            _figure(args, a, m, p, j, within, r, label, lines, data)
+        _emit(args, data, "\n".join(lines))
+        return
     from ..regularity.ranges import alpha_curve, ck_parameter_set
 
     a, label = scheme_from_args(args)

@@ -21,16 +21,35 @@ import json
 from ..result import AnalysisError
 
 
-from . import mary as _mary
 from .common import (check_refined_size, norm_order, read_number, read_points, scheme_arity, _emit, _int_arg, _parse_Ls,
                      _parse_within, _print, check_writable, json_document, scheme_from_args)
+
+
+def _input_with_arity(args, m: int):
+    a, label = scheme_from_args(args, arity_ok=True)
+    return a, label, f"scheme: {label}   (arity {m}, domain {a.domain})"
 
 
 def cmd_symbol(args) -> None:
     import sympy as sp
 
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_symbol(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        from ..algebra.factorization import sum_rules, symmetry
+
+        a, label, head = _input_with_arity(args, m)
+        sr, sym = sum_rules(a, arity=m), symmetry(a, arity=m)
+        lines = [head, f"support:  [{a.start}, {a.end}]", f"mask:     {', '.join(sp.sstr(c) for c in a.mask)}",
+                 f"a(z) =    {a.pretty()}",
+                 f"residue sums A_r = sum_j a_(r+{m}j): {', '.join(sp.sstr(x) for x in sr.witness['residue_sums'])}",
+                 ("sum rules hold: a(1) = %d, a(eps) = 0 for eps^%d = 1, eps != 1" % (m, m)) if sr.value else
+                 "sum rules FAIL: " + "; ".join(sr.witness["failures"])
+                 + (f" (they hold for {sr.witness['solutions']})" if sr.witness.get("solutions") else ""),
+                 f"symmetric: {'yes' if sym.value else 'no'} (mask centre {sym.witness['centre']}, "
+                 f"limit function centre {sym.witness['limit_centre']})"]
+        _emit(args, {"scheme": label, "arity": m, "start": a.start, "end": a.end, "mask": list(a.mask),
+                     "sum_rules": sr.to_json(), "symmetry": sym.to_json()}, "\n".join(lines))
+        return
     from ..algebra.factorization import sum_rules, symmetry
 
     a, label = scheme_from_args(args)
@@ -76,8 +95,28 @@ def _describe_exceptional(cases, indent="  ") -> list[str]:
 def cmd_factor(args) -> None:
     import sympy as sp
 
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_factor(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        from ..algebra.factorization import polynomial_generation, polynomial_reproduction, smoothing_factor
+
+        a, label, head = _input_with_arity(args, m)
+        f = smoothing_factor(a, arity=m)
+        lines = [head, f"a(z) = ((1+...+z^{m - 1})/{m})^{f.value} b(z),  b(z) = {f.witness['b'].pretty()}   [{f.status}]"]
+        for e in f.witness["exceptional"]:
+            lines.append(f"  at {sp.sstr(e['condition'])}: k = {e['k']}")
+        data = {"scheme": label, "arity": m, "k": f.value, "b": f.witness["b"],
+                "exceptional": [{"condition": e["condition"], "k": e["k"]} for e in f.witness["exceptional"]]}
+        if a.is_numeric or a.params:
+            g = polynomial_generation(a, arity=m)
+            r = polynomial_reproduction(a, arity=m)
+            lines.append(f"generates polynomials of degree {g.value}; reproduces degree {r.value} "
+                         f"(tau = a'(1)/{m} = {sp.sstr(r.witness['tau'])}, {r.provenance['parametrisation']})")
+            for h in r.witness["higher"]:
+                lines.append(f"  reproduces degree {h['degree']} at {sp.sstr(h['condition'])}")
+            data.update({"generation_degree": g.value, "reproduction_degree": r.value, "tau": r.witness["tau"],
+                         "higher": r.witness["higher"]})
+        _emit(args, data, "\n".join(lines))
+        return
     from ..algebra.factorization import polynomial_reproduction, smoothing_factor, sum_rules
 
     a, label = scheme_from_args(args)
@@ -112,8 +151,43 @@ def cmd_norm(args) -> None:
     import sympy as sp
     from ..jsonable import exact_and_float
 
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_norm(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        from ..stationary.difference import difference_norm, scheme_norm
+
+        a, label, head = _input_with_arity(args, m)
+        Ls = _parse_Ls(args.L)
+        k = norm_order(args)
+        if any(m ** L > 10 ** 6 for L in Ls):
+            raise AnalysisError(f"--L too large for arity {m} (at most {m}^L = 10^6 residues)")
+        lines, rows = [head], []
+        if args.solve is not None or not a.is_numeric:
+            from ..stationary.normset import norm_solution_set
+
+            if args.solve is None:
+                raise AnalysisError("free parameter(s): give values with --param, or --solve NAME")
+            within = _parse_within(args.within)
+            lines.append(f"set of {args.solve} where ||(1/{m} S_a{k})^L||_inf < 1, a{k} = ({m} z^{m - 1}/(1+...+z^{m - 1}))^{k} a")
+            for L in Ls:
+                r = norm_solution_set(a, k, L, args.solve, spelling=args.spelling, within=within, arity=m)
+                lines.append(f"  L = {L}: {r.value}   [{r.status}]")
+                rows.append({"L": L, "m": k, "set": r.value, "status": r.status})
+            lines.append(f"  on these sets the scheme is C^{k - 1} (m-ary Dyn-Levin); outside them this test proves nothing")
+            _emit(args, {"scheme": label, "arity": m, "parameter": args.solve, "results": rows}, "\n".join(lines))
+            return
+        for L in Ls:
+            if k == 0:
+                r = scheme_norm(a, L, arity=m)
+                lines.append(f"  L = {L}: ||S_a^L||_inf = {sp.sstr(r.value)}   [{r.status}]")
+                rows.append({"L": L, "norm": exact_and_float(r.value), "status": r.status})
+            else:
+                r = difference_norm(a, k, L, spelling=args.spelling, arity=m)
+                c = r.witness["contractive"]
+                lines.append(f"  L = {L}: ||(1/{m} S_a{k})^{L}||_inf = {sp.sstr(r.value)} ~ {float(r.value):.12g}  "
+                             f"{'< 1: C^' + str(k - 1) + ' (Dyn-Levin)' if c else '>= 1: proves nothing'}   [{r.status}]")
+                rows.append({"L": L, "m": k, "norm": exact_and_float(r.value), "contractive": c, "status": r.status})
+        _emit(args, {"scheme": label, "arity": m, "results": rows}, "\n".join(lines))
+        return
     from ..stationary.difference import difference_norm, scheme_norm
 
     a, label = scheme_from_args(args)
@@ -168,8 +242,43 @@ def cmd_refine(args) -> None:
     import sympy as sp
     from ..algebra.reader import as_expr
 
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_refine(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        import numpy as np
+
+        from ..stationary.refinement import refine
+
+        if args.output:
+            check_writable(args.output, "--output")
+        a, label, _ = _input_with_arity(args, m)
+
+        data = read_points(args)
+        steps = _int_arg(args.steps, "--steps")
+        if steps < 0 or steps > 12:
+            raise AnalysisError("--steps must be between 0 and 12 with --arity")
+
+        check_refined_size(len(data), m, steps)
+        if args.exact:
+            if any(not as_expr(v).is_Rational for row in data for v in np.atleast_1d(row)):
+                raise AnalysisError("--exact refinement needs rational data")
+            pts = [[sp.Rational(v) for v in np.atleast_1d(row)] for row in data]
+        else:
+            pts = [[float(v) for v in np.atleast_1d(row)] for row in data]
+        out = refine(a, pts, steps, closed=not args.open, exact=args.exact,
+                          end_rule=args.end_rule if args.open else "interior", arity=m)
+        if args.output:
+            try:
+                np.savetxt(args.output, np.asarray(out, dtype=float), delimiter=",")
+            except OSError as exc:
+                raise AnalysisError(f"cannot write {args.output}: {exc.strerror or exc}") from None
+        rows = [[str(v) if args.exact else float(v) for v in np.atleast_1d(row)] for row in out]
+        head = (f"scheme: {label} (arity {m}); {len(data)} -> {len(out)} points after {steps} step(s)"
+                + (f" (open polygon, end rule {args.end_rule})" if args.open else " (closed polygon)"))
+        text = "\n".join([head] + ([f"written to {args.output}"] if args.output else
+                                   [", ".join(str(v) for v in r) for r in rows]))
+        _emit(args, {"scheme": label, "arity": m, "steps": steps, "closed": not args.open,
+                     "end_rule": args.end_rule if args.open else None, "count": len(out), "points": rows}, text)
+        return
     import numpy as np
 
     from ..stationary import refinement
@@ -217,8 +326,34 @@ def _not_rational(v):
 def cmd_matrices(args) -> None:
     import sympy as sp
 
-    if (arity := scheme_arity(args)) != 2:          # m-ary input (issue 12)
-        return _mary.cmd_matrices(args, arity)
+    if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
+        m = arity
+        from ..regularity.convergence import difference_mask
+        from ..stationary.transition import basic_limit_support, local_eigenvalues, transition_matrices
+
+        a, label, head = _input_with_arity(args, m)
+        ev = local_eigenvalues(a, arity=m)
+        sup = basic_limit_support(a, arity=m)
+        w = ev.witness["window"]
+        lines = [head, f"local subdivision matrix on f[{w[0]}..{w[1]}]:",
+                 *("  " + sp.sstr(list(row)) for row in ev.witness["matrix"].tolist()),
+                 f"characteristic polynomial: {sp.sstr(ev.witness['charpoly'])}",
+                 "eigenvalues: " + ", ".join(sp.sstr(k) + (f" (x{v})" if v > 1 else "") for k, v in ev.value.items())
+                 + f"   [{ev.status}]",
+                 f"support of the basic limit function: [{sp.sstr(sup.value[0])}, {sp.sstr(sup.value[1])}] "
+                 f"(mask support / {m - 1})"]
+        data = {"scheme": label, "arity": m, "local_window": w, "local_matrix": ev.witness["matrix"].tolist(),
+                "eigenvalues": [{"value": k, "multiplicity": v} for k, v in ev.value.items()],
+                "charpoly": ev.witness["charpoly"], "support": sup.to_json()}
+        if args.transition:
+            k, c = difference_mask(a, arity=m)
+            T = transition_matrices(c, arity=m)
+            lines.append(f"transition matrices of c = {m}^{k} a/q_{m}^{k + 1} = {c.pretty()} "
+                         f"(alpha = {k} - log_{m} JSR):")
+            lines += [f"  T{e} = {sp.sstr(M.tolist())}" for e, M in enumerate(T)]
+            data["transition"] = {"k": k, "c": c, **{f"T{e}": M.tolist() for e, M in enumerate(T)}}
+        _emit(args, data, "\n".join(lines))
+        return
     from ..algebra.factorization import smoothing_factor
     from ..stationary.transition import basic_limit_support, local_eigenvalues, transition_matrices
 

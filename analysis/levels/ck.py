@@ -32,9 +32,9 @@ smoothness (``S_a`` certified not C^k) one theorem decides "not C^k":
    [certified]", and with C^{d-1} certified by the routes above the smoothness is *exactly*
    C^{d-1}.
 
-**Arity m** (``level_smoothness(..., arity=m)``, ``h = m^-n``; :func:`analysis.levels.mary.level_smoothness_mary`):
+**Arity m** (carried by the scheme, ``LevelDependentScheme(..., arity=m)``, ``h = m^-n``):
 routes 1, 2, 2′ and 4 with dilation m — Dyn–Levin with weight ``m^{kn}`` and the limit's C^k by the m-ary
-analysis (:func:`analysis.regularity.mary.smoothness_mary`); the divided difference schemes
+analysis (:func:`analysis.regularity.holder.smoothness`); the divided difference schemes
 ``(m/(1+z+...+z^(m-1)))^j a^n`` (:mod:`.divided`), which for ``m >= 3`` also need the convergence of
 ``{S_(a^n)}`` (they are the case ``Lambda = (0, ..., 0)`` of the generalized theorem, proved for dilation m in
 :mod:`.gendiff`); the exponential factors ``q(e^{lambda m^-(n+1)} z)``; m-ary exponential B-spline schemes
@@ -55,8 +55,8 @@ Examples
 (2, 'certified', ['Dyn-Levin direct', 'Dyn-Levin on the 1st divided difference scheme', 'Dyn-Levin on the 2nd divided difference scheme'])
 >>> r.witness["verdicts"][3]["verdict"], r.witness["verdicts"][3]["status"], r.witness["exact"]
 ('not C^3', 'certified', True)
->>> from schemes.level_mary import get_mary
->>> r = level_smoothness(get_mary("ternary-exp-bspline-1-hyp").scheme, {"t": 1}, arity=3)
+>>> from schemes.level_dependent import get
+>>> r = level_smoothness(get("ternary-exp-bspline-1-hyp"), {"t": 1})
 >>> r.value, r.witness["exact"], [v["verdict"] for v in r.witness["verdicts"]]
 (0, True, ['C^0', 'not C^1'])
 
@@ -304,11 +304,13 @@ def limit_smoothness(a, top: int, stationary_smoothness) -> tuple[int, int | Non
 
 
 def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, *,
-                     k_max: int | None = None, N: int = 40, arity: int = 2) -> Result:
+                     k_max: int | None = None, N: int | None = None, arity: int | None = None) -> Result:
     """Convergence and the C^k verdict for each k up to the limit's smoothness (see the module).
 
     ``arity`` m: ``s`` is read with ``h = m^-n`` (routes 1, 2, 2' and 4 with dilation m; route 3 is binary
-    only and says so); :func:`analysis.levels.mary.level_smoothness_mary` is this function with ``arity = m``.
+    only and says so); ``arity`` defaults to the scheme's. The C^k verdicts need exact values (no boxes:
+    :func:`analysis.levels.ck_box.level_smoothness_box`). ``N``: levels enclosed explicitly before the
+    analytic tails (default 40; 30 for ``m > 2``, as the m-ary results have always been computed).
 
     ``value``: the largest k with C^k certified for every ``k' <= k`` (``-1``: not even
     convergence certified). ``witness["verdicts"]``: one dict per k with ``verdict``, ``status``,
@@ -317,6 +319,11 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
     ``witness["not_C^k"]``: the k certified *not* C^k (exponential B-spline schemes) or ``None``,
     and ``witness["exact"]``: True when that k is ``value + 1`` (the smoothness is exactly C^value).
     """
+    arity = s.arity if arity is None else arity
+    N = (40 if arity == 2 else 30) if N is None else N
+    boxed = [k for k, v in dict(values or {}).items() if isinstance(v, tuple)]
+    if boxed:
+        raise AnalysisError(f"the C^k verdicts need exact values: give --param {boxed[0]}=VALUE, not a box")
     from ..regularity import smoothness as binary_smoothness
 
     def stationary_smoothness(a, k):

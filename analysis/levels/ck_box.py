@@ -130,13 +130,9 @@ def _with_box_signs(s: LevelDependentScheme, env: Mapping) -> LevelDependentSche
 
 def _smoothing_order(a, arity: int) -> int:
     """The largest k with ``(1+z)^k`` (arity m: ``q_m^k``) dividing the limit generically (exact)."""
-    if arity == 2:
-        from ..algebra.factorization import smoothing_factor
+    from ..algebra.factorization import smoothing_factor
 
-        return smoothing_factor(a, exceptional=False).value
-    from ..algebra.mary import smoothing_factor_mary
-
-    return smoothing_factor_mary(a, arity, exceptional=False).value
+    return smoothing_factor(a, exceptional=False, arity=arity).value
 
 
 def _restrict(box: Mapping, t: LevelDependentScheme) -> dict:
@@ -450,10 +446,10 @@ def _limit_top(ctx: _Context, a, k_max: int | None) -> tuple[int, int | None, di
     if not a.params:
         from ..regularity import smoothness as regularity_smoothness
 
-        def mary_smoothness(a, k):
+        def dilated_smoothness(a, k):
             return stationary_smoothness(a, k, L_max=ctx.L_max, arity=ctx.arity)
 
-        k_lim, not_k, a_smooth = limit_smoothness(a, cap, regularity_smoothness if ctx.arity == 2 else mary_smoothness)
+        k_lim, not_k, a_smooth = limit_smoothness(a, cap, regularity_smoothness if ctx.arity == 2 else dilated_smoothness)
         return k_lim, not_k, a_smooth, k_lim
     top = min(cap, _smoothing_order(a, ctx.arity) - 1)
     return -1, None, {}, top
@@ -461,7 +457,7 @@ def _limit_top(ctx: _Context, a, k_max: int | None) -> tuple[int, int | None, di
 
 def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, pieces: int = 1, depth: int = 2,
                          k_max: int | None = None, open_param: str | None = None, N: int = 40,
-                         L_max: int = 4, arity: int = 2) -> Result:
+                         L_max: int = 4, arity: int | None = None) -> Result:
     """C^k of ``{S_{a^n}}`` at every point of a parameter box, for each k (see the module).
 
     ``values``: every parameter an exact value or a closed box ``(lo, hi)`` (one or two boxes).
@@ -472,20 +468,18 @@ def level_smoothness_box(s: LevelDependentScheme, values: Mapping[str, Any], *, 
     sub-boxes (exact ends, per route the failed hypothesis); ``witness["not_C^k"]``, ``"exact"``
     as in :func:`analysis.levels.ck.level_smoothness`.
 
-    ``arity`` m: ``s`` is read with ``h = m^-n`` (a :class:`~analysis.levels.mary.LevelDependentMary` is
-    unwrapped and carries its arity): the routes with dilation m, as
+    ``arity`` m (default: the scheme's): ``s`` is read with ``h = m^-n``: the routes with dilation m, as
     ``level_smoothness(..., arity=m)`` (divided differences ``(m/q_m)^j a^n`` need the convergence of
     ``{S_(a^n)}`` on the sub-box, the normalisers are ``q_m(exp(lambda m^-(n+1)))``); ``open_param`` is binary only.
 
-    >>> from schemes.level_mary import get_mary
-    >>> r = level_smoothness_box(get_mary("ternary-exp-bspline-1-hyp"), {"t": (sp.Rational(1, 2), 2)})
+    >>> from schemes.level_dependent import get
+    >>> r = level_smoothness_box(get("ternary-exp-bspline-1-hyp"), {"t": (sp.Rational(1, 2), 2)})
     >>> r.value, r.witness["exact"], [(v["verdict"], v["status"]) for v in r.witness["verdicts"]]
     (0, True, [('C^0', 'certified'), ('not C^1', 'certified')])
     """
-    if hasattr(s, "arity") and hasattr(s, "scheme"):           # a LevelDependentMary
-        if arity not in (2, s.arity):
-            raise AnalysisError(f"scheme {s.slug!r} has arity {s.arity}, not {arity}")
-        s, arity = s.scheme, s.arity
+    if s.arity != 2 and arity not in (None, 2, s.arity):
+        raise AnalysisError(f"scheme {s.slug!r} has arity {s.arity}, not {arity}")
+    arity = s.arity if arity is None or s.arity != 2 else arity
     if isinstance(arity, bool) or not isinstance(arity, int) or arity < 2:
         raise AnalysisError(f"arity must be an integer >= 2, not {arity!r}")
     if open_param is not None and arity != 2:

@@ -3,11 +3,11 @@
 One implementation for every arity ``m``: the binary case is
 :meth:`analysis.levels.level_dependent.LevelDependentScheme.difference` (``(2/(1+z))^j a^n``, unchanged);
 ``m >= 3`` divides by ``q_m`` with the synthetic division of :func:`divide_by_q` (used by
-:func:`analysis.levels.mary.difference_scheme_mary` and by the C^k routes of :mod:`.ck`).
+:meth:`analysis.levels.level_dependent.LevelDependentScheme.difference` and by the C^k routes of :mod:`.ck`).
 
 Why ``m/q_m``. With ``f^{n+1}(z) = a^n(z) f^n(z^m)`` and ``(1-z) a^n(z) = (1-z^m) a^n(z)/q_m(z)``,
 ``m^{n+1} (1-z) f^{n+1}(z) = (m a^n/q_m)(z) * m^n (1-z^m) f^n(z^m)``: the scaled differences ``m^n Delta f^n`` are
-refined by ``e^n = m a^n/q_m``. The stationary m-ary difference schemes of :mod:`analysis.stationary.mary`,
+refined by ``e^n = m a^n/q_m``. The stationary difference schemes of :mod:`analysis.stationary.difference`,
 ``a_k = (m z^{m-1}/q_m)^k a``, are the same up to the shift ``z^{(m-1)k}``, which norms and smoothness do not see
 (here the lowest exponent is kept, as the binary "divided" spelling does).
 
@@ -85,10 +85,21 @@ def divide_by_q(coeffs, m: int, j: int) -> list:
     return coeffs
 
 
-def divided_difference(s: LevelDependentScheme, j: int, arity: int = 2) -> LevelDependentScheme:
-    """``(m/q_m)^j a^n`` as a :class:`LevelDependentScheme` (``arity = 2``: ``s.difference(j)``, unchanged)."""
+def divided_difference(s: LevelDependentScheme, j: int, arity: int | None = None) -> LevelDependentScheme:
+    """``(m/q_m)^j a^n`` as a :class:`LevelDependentScheme` (``m`` the scheme's arity unless given; ``m = 2``:
+    ``s.difference(j)``). The lowest exponent is kept: the shift ``z^(m-1)`` of
+    ``m^{n+1} Delta f^{n+1} = S_{z^(m-1) b^n} (m^n Delta f^n)`` is dropped (norms and smoothness do not see it).
+
+    >>> from .expbspline import ternary_exponential_bspline_2
+    >>> divided_difference(ternary_exponential_bspline_2(), 1).limit().expr().factor()   # ternary linear B-spline
+    (z**2 + z + 1)**2/(3*z**3)
+    """
+    arity = s.arity if arity is None else arity
+    if isinstance(j, bool) or not isinstance(j, int) or j < 0:
+        raise AnalysisError(f"difference must be a non-negative integer, not {j!r}")
     if arity == 2:
         return s.difference(j)
     coeffs = divide_by_q(s.mask, arity, j)
     return LevelDependentScheme(tuple(coeffs), s.start, s.params, slug=f"{s.slug}-diff{j}",
-                                title=f"{j}-th divided difference of {s.title or s.slug}", source=s.source)
+                                title=f"{j}-th divided difference of {s.title or s.slug}", source=s.source,
+                                arity=arity)

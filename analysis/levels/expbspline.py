@@ -48,7 +48,7 @@ The m-ary exponential B-spline scheme of order d+1 has the symbols
 
     a^n(z) = m z^s prod_{i=1}^{d+1} q(v_i z) / q(v_i),   q(x) = 1 + x + ... + x^(m-1),  v_i = e^{lambda_i m^-(n+1)}
 
-(:mod:`schemes.level_mary`). It generates the *same* ``B_Lambda``: splitting ``[0, h)`` into m pieces,
+(:mod:`schemes.level_dependent`). It generates the *same* ``B_Lambda``: splitting ``[0, h)`` into m pieces,
 ``beta_{lambda,h}(x) = sum_{k<m} e^{lambda k h/m} beta_{lambda,h/m}(x - k h/m)`` (on the k-th piece
 ``e^{lambda x} = e^{lambda k h/m} e^{lambda (x - k h/m)}``), so convolving the d+1 boxes,
 ``B_{Lambda,h} = sum_j p_j B_{Lambda,h/m}(. - j h/m)`` with ``p(z) = prod_i q(e^{lambda_i h/m} z)``: the
@@ -94,11 +94,11 @@ True
 >>> c = not_ck(get("exp-chaikin-hyp").subs({"t": 2}))
 >>> c.status, c.value, c.witness["k"]
 ('certified', False, 2)
->>> from schemes.level_mary import get_mary
->>> r = recognise(get_mary("quaternary-exp-bspline-3-hyp").scheme.subs({"t": 1}), 4)
+>>> from schemes.level_dependent import get
+>>> r = recognise(get("quaternary-exp-bspline-3-hyp").subs({"t": 1}), 4)
 >>> r.value, r.witness["order"]
 ((-1, 0, 0, 1), 4)
->>> recognise(get_mary("quaternary-exp-bspline-3-hyp").scheme.subs({"t": 1}), 3).value is None   # wrong arity
+>>> recognise(get("quaternary-exp-bspline-3-hyp").subs({"t": 1}), 3).value is None   # wrong arity
 True
 
 References
@@ -238,7 +238,7 @@ def q_factor(w, m: int) -> sp.Expr:
     return sum(((w * _Z) ** i for i in range(m)), sp.Integer(0))
 
 
-def factors_mary(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.Expr]:
+def q_factors(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.Expr]:
     """``(lambda_i, w_i)`` with ``prod_i q_m(w_i z)`` dividing ``num`` (a polynomial in z over Q[h, X]), and the
     cofactor. Candidates ``w`` come from the irreducible factors (``beta/alpha`` of ``Phi_p(w z)``, ``p`` the
     smallest prime factor of m); each is confirmed, with its multiplicity, by exact division.
@@ -246,7 +246,7 @@ def factors_mary(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], s
     >>> X = sp.symbols("X0:1")
     >>> num = sp.expand((1 + _Z + _Z**2 + _Z**3) ** 2 * (1 + X[0] * _Z) * (1 + X[0] ** 2 * _Z ** 2) * (X[0] + _Z)
     ...                 * (X[0] ** 2 + _Z ** 2))                  # q_4(z)^2 q_4(X z) X^3 q_4(z/X)
-    >>> pairs, rest = factors_mary(num, X, [sp.I], 4)
+    >>> pairs, rest = q_factors(num, X, [sp.I], 4)
     >>> sorted((lam for lam, _ in pairs), key=sp.default_sort_key), rest
     ([0, 0, -4*I, 4*I], 1)
     """
@@ -273,7 +273,7 @@ def _frequencies(poly_expr, X, gens, arity: int = 2) -> list[tuple[sp.Expr, sp.E
     """``(lambda_i, w_i)`` for the factors ``1 + w_i z`` (``q_m(w_i z)`` for arity m; ``w_i`` a monomial in the ``X_j``)."""
     num, _ = sp.fraction(sp.cancel(sp.together(poly_expr)))
     if arity != 2:
-        pairs, rest = factors_mary(num, X, gens, arity)
+        pairs, rest = q_factors(num, X, gens, arity)
         if not pairs or sp.degree(rest, _Z) != 0:
             raise _NotOfForm(f"the symbol's numerator does not split into factors 1 + w z + ... + (w z)^{arity - 1}")
         return pairs
@@ -417,3 +417,29 @@ def not_ck(s: LevelDependentScheme, arity: int = 2) -> Result:
                                        + ("" if arity == 2 else f"; dilation {arity}: the same B_Lambda (refinement "
                                           "identity in analysis.levels.expbspline)"))},
                   provenance={"method": "exact recognition + exponential B-spline theorem"})
+
+
+def ternary_exponential_bspline_2(theta: sp.Symbol | None = None) -> LevelDependentScheme:
+    """The ternary exponential B-spline scheme of degree 2 with frequencies ``{0, i theta, -i theta}``.
+
+    Derivation. ``e^{lambda x} chi_[0,1)(x) = sum_{k<3} e^{lambda k/3} (e^{lambda .} chi_[0,1/3))(x - k/3)``: the
+    exponential box with frequency ``lambda`` at spacing ``tau`` has the ternary mask ``1 + e^{lambda tau} z +
+    e^{2 lambda tau} z^2``; the exponential B-spline is the convolution of the boxes, so its level-n symbol is
+    the product of the factors with ``tau = 3^-(n+1)``. For ``lambda = +-i theta`` the product of the two factors is
+    ``1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4``, ``c_j = cos(j theta/3^(n+1))``; with the factor
+    ``1 + z + z^2`` (``lambda = 0``) and the normalisation ``a^n(1) = 3``:
+
+        a^n(z) = (1+z+z^2)(1 + 2 c_1 z + (1 + 2 c_2) z^2 + 2 c_1 z^3 + z^4) / ((3 + 4 c_1 + 2 c_2) z^3).
+
+    Check (tests): ``a^n(eps e^{-+ i theta tau}) = 0`` for ``eps = e^{+-2 pi i/3}`` (the scheme generates
+    ``1, cos(theta x), sin(theta x)``), and the limit is the ternary quadratic B-spline ``(1+z+z^2)^3/(9 z^3)``.
+    """
+    t = theta if theta is not None else sp.Symbol("theta", positive=True)
+    c1, c2 = sp.cos(t * H / 3), sp.cos(2 * t * H / 3)
+    num = sp.expand((1 + _Z + _Z ** 2) * (1 + 2 * c1 * _Z + (1 + 2 * c2) * _Z ** 2 + 2 * c1 * _Z ** 3 + _Z ** 4))
+    den = 3 + 4 * c1 + 2 * c2
+    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range(7)]
+    return LevelDependentScheme(tuple(coeffs), -3, (t,), slug="ternary-exp-bspline-2",
+                                title="ternary exponential B-spline of degree 2 (trigonometric)",
+                                source="derived here (analysis.levels.expbspline.ternary_exponential_bspline_2)",
+                                arity=3)

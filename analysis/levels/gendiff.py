@@ -103,11 +103,10 @@ Examples
 
 Ternary (``q(v z) q(v̄ z)`` for ``+-i theta`` and ``+-2i theta``, no factor ``1+z+z^2``):
 
->>> from analysis.levels.mary import level_scheme_mary
->>> t = level_scheme_mary(
+>>> t = LevelDependentScheme.from_symbol(
 ...     "3*(1+2*c1*z+(1+2*c2)*z**2+2*c1*z**3+z**4)*(1+2*c2*z+(1+2*c4)*z**2+2*c2*z**3+z**4)"
-...     "/((3+4*c1+2*c2)*(3+4*c2+2*c4))/z**4", 3, where=["c1=cos(theta/3**(n+1))", "c2=cos(2*theta/3**(n+1))",
-...     "c4=cos(4*theta/3**(n+1))"]).scheme.subs({"theta": 1})
+...     "/((3+4*c1+2*c2)*(3+4*c2+2*c4))/z**4", arity=3, where=["c1=cos(theta/3**(n+1))", "c2=cos(2*theta/3**(n+1))",
+...     "c4=cos(4*theta/3**(n+1))"]).subs({"theta": 1})
 >>> exponential_factors(t, 3).value
 (-2*I, -I, I, 2*I)
 >>> generalized_difference(t, (-sp.I, sp.I), 3)[1].witness["p_n"]
@@ -144,7 +143,7 @@ from itertools import product
 
 import sympy as sp
 
-from .expbspline import _NotOfForm, factors_mary, to_exponential_generators
+from .expbspline import _NotOfForm, q_factors, to_exponential_generators
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme
 from .series import smoothness, stationary_smoothness
@@ -202,7 +201,7 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
         coeffs, X, gens = _to_polynomial_ring(s.mask)
         num, _ = sp.fraction(sp.together(sum(c * _Z ** k for k, c in enumerate(coeffs))))
         if arity != 2:
-            found = factors_mary(num, X, gens, arity)[0]
+            found = q_factors(num, X, gens, arity)[0]
         else:
             _, factors = sp.factor_list(num, _Z, H, *X) if X else sp.factor_list(num, _Z, H)
     except Exception as e:  # noqa: BLE001 - a failed rewriting/factorization proves nothing: H1 not established
@@ -250,7 +249,7 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
     return res
 
 
-def _real_factors_mary(subset, m: int) -> list[tuple[list[sp.Expr], str]]:
+def _real_q_factors(subset, m: int) -> list[tuple[list[sp.Expr], str]]:
     """:func:`_real_factors` for arity ``m >= 3``: ``q_m(v z)``, ``v = e^{lambda h/m}``; a pair ``a +- ib`` gives
     ``sum_j e^{a j h/m} (sum_k cos((2k-j) b h/m)) z^j``, ``+-mu`` real ``sum_j (sum_k cosh((2k-j) mu h/m)) z^j``
     (``max(0, j-m+1) <= k <= min(j, m-1)``)."""
@@ -285,7 +284,7 @@ def _real_factors_mary(subset, m: int) -> list[tuple[list[sp.Expr], str]]:
 def _real_factors(subset, arity: int = 2) -> list[tuple[list[sp.Expr], str]]:
     """``p_n`` for a conjugation-closed multiset, as real factors ``(coefficients in z, label)``."""
     if arity != 2:
-        return _real_factors_mary(subset, arity)
+        return _real_q_factors(subset, arity)
     rest = list(subset)
     out = []
     while rest:

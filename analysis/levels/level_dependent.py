@@ -88,26 +88,30 @@ ARITHMETICS = ("arb", "mp", "float")
 # expressions in h
 # --------------------------------------------------------------------------------------------
 
-def to_h(expr) -> sp.Expr:
-    """Rewrite an expression in the level ``n`` as one in ``h = 2^-n``.
+def to_h(expr, arity: int = 2) -> sp.Expr:
+    """Rewrite an expression in the level ``n`` as one in ``h = m^-n`` (``m`` the arity).
 
     >>> to_h(sp.sin(3 * sp.Symbol("alpha") / 2 ** (N + 2)))
     sin(3*alpha*h/4)
     >>> to_h("4**(-n) + 1/8**n")                 # bases that are powers of 2
     h**3 + h**2
+    >>> to_h(sp.cos(sp.Symbol("theta") / 3 ** (N + 1)), 3)
+    cos(h*theta/3)
     """
+    m = arity
     if isinstance(expr, str):
         e = parse_coefficient(expr, locals_={"n": N, "h": H})
     else:
         e = as_expr(expr)
     e = e.subs(sp.Symbol("n"), N).subs(sp.Symbol("h", positive=True), H)
-    e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
-    e = e.subs(2 ** N, 1 / H)
+    if m == 2:
+        e = e.replace(_power_of_two_base, lambda p: sp.Pow(2, (int(p.base).bit_length() - 1) * p.exp))  # 4**-n = 2**-2n
+    e = e.subs(sp.Integer(m) ** N, 1 / H)
     if N in e.free_symbols:
-        e = sp.powsimp(sp.expand_power_exp(e)).subs(2 ** N, 1 / H)
+        e = sp.powsimp(sp.expand_power_exp(e)).subs(sp.Integer(m) ** N, 1 / H)
     if N in e.free_symbols:
-        raise AnalysisError(f"cannot write {expr} as a function of h = 2^-n "
-                            "(the level must enter only through 2^n)")
+        raise AnalysisError(f"cannot write {expr} as a function of h = {m}^-n "
+                            f"(the level must enter only through {m}^n)")
     return e
 
 
@@ -211,7 +215,8 @@ def resolve_where(where) -> dict:
 
 @dataclass(frozen=True)
 class LevelDependentScheme:
-    """A binary level-dependent scheme ``{S_{a^n}}``, mask coefficients exact in ``h = 2^-n``.
+    """A level-dependent scheme ``{S_{a^n}}`` of arity ``m`` (``(S_{a^n} f)_i = sum_j a^n_{i-mj} f_j``), mask
+    coefficients exact in ``h = m^-n`` (``2^-n`` for binary schemes, the default).
 
     Attributes
     ----------
@@ -222,6 +227,8 @@ class LevelDependentScheme:
         The lowest exponent.
     params : tuple of sympy.Symbol
         Free parameters (declare them ``positive=True`` when they are).
+    arity : int
+        The dilation ``m >= 2``, read by every analysis (``h = m^-n``, ``m`` residue classes, weights ``m^{kn}``).
     """
 
     mask: tuple
@@ -232,9 +239,12 @@ class LevelDependentScheme:
     source: str = ""
     notes: str = ""
     defaults: Mapping[str, Any] = field(default_factory=dict, hash=False, compare=False)
+    arity: int = 2
 
     def __post_init__(self) -> None:
-        mask = tuple(to_h(c) for c in self.mask)
+        from ..algebra.factorization import check_arity
+        object.__setattr__(self, "arity", check_arity(self.arity))
+        mask = tuple(to_h(c, self.arity) for c in self.mask)
         if not mask:
             raise AnalysisError("the mask is empty")
         object.__setattr__(self, "mask", mask)
@@ -305,7 +315,7 @@ class LevelDependentScheme:
 
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
-        coeffs = [to_h(as_expr(c).subs(defs)) for c in coeffs]
+        coeffs = [to_h(as_expr(c).subs(defs), kw.get("arity", 2)) for c in coeffs]
         # h (2 + 1/h) -> 2h + 1; (cos(h) + 4/h^3)/(16/h^3) -> (h^3 cos(h) + 4)/16: no negative power of h is left
         coeffs = [sp.cancel(c) if c.is_rational_function(H) or _negative_h_power(c) else c for c in coeffs]
         while len(coeffs) > 1 and coeffs[-1] == 0:
@@ -329,8 +339,8 @@ class LevelDependentScheme:
         return tuple(p.name for p in self.params)
 
     def mask_in_n(self) -> tuple:
-        """The coefficients as functions of the level ``n`` (``h = 2^-n``)."""
-        return tuple(c.subs(H, 2 ** (-N)) for c in self.mask)
+        """The coefficients as functions of the level ``n`` (``h = m^-n``)."""
+        return tuple(c.subs(H, sp.Integer(self.arity) ** (-N)) for c in self.mask)
 
     def symbol_expr(self) -> sp.Expr:
         """``a^n(z)`` as a sympy expression in ``z`` and ``h``."""
@@ -350,12 +360,12 @@ class LevelDependentScheme:
                for k, v in dict(values).items()}
         return LevelDependentScheme(tuple(c.subs(rep) for c in self.mask), self.start,
                                     tuple(p for p in self.params if p not in rep), slug=self.slug,
-                                    title=self.title, source=self.source, notes=self.notes)
+                                    title=self.title, source=self.source, notes=self.notes, arity=self.arity)
 
     def mask_at(self, n: int, values: Mapping[str, Any] | None = None) -> list[sp.Expr]:
         """The exact coefficients of ``a^n`` at level ``n`` (sympy expressions)."""
         s = self.subs(values) if values else self
-        return [c.subs(H, sp.Rational(1, 2 ** int(n))) for c in s.mask]
+        return [c.subs(H, sp.Rational(1, self.arity ** int(n))) for c in s.mask]
 
     # ---------------------------------------------------------------- limit and expansion
     @cached_property
@@ -420,8 +430,10 @@ class LevelDependentScheme:
         """The k-th difference scheme ``(2/(1+z))^k a^n`` ("divided") or ``(2z/(1+z))^k a^n``.
 
         The remainder of each division, ``a^n(-1)``, must simplify to 0 exactly (else an
-        :class:`AnalysisError`).
+        :class:`AnalysisError`). Arity ``m > 2``: :func:`analysis.levels.divided.divided_difference`.
         """
+        if self.arity != 2:
+            raise AnalysisError(f"arity {self.arity}: use analysis.levels.divided.divided_difference(s, {k})")
         if spelling not in ("divided", "paper"):
             raise AnalysisError(f"unknown spelling {spelling!r}; use 'divided' or 'paper'")
         coeffs = list(self.mask)
@@ -471,13 +483,14 @@ def _residue_groups(s: LevelDependentScheme, arity: int = 2) -> dict[int, list[i
     return groups
 
 
-def leading_asymptotics(s: LevelDependentScheme, arity: int = 2) -> Result:
+def leading_asymptotics(s: LevelDependentScheme, arity: int | None = None) -> Result:
     """``||S_{a^n} - S_a||_inf = C 2^{-q n} + O(2^{-(q+1) n})``: the exact ``C`` and ``q``.
 
     ``C = max_r sum_{k = r mod 2} |g_{k,q}|`` with ``g_{k,q}`` the exact ``h^q`` Taylor
     coefficient of ``a^n_k - a_k``. Certified (exact series); where ``C`` vanishes for special
     parameter values the order there is higher (``witness["per_residue"]`` shows the pieces).
     """
+    arity = s.arity if arity is None else arity
     q = s.order()
     rows = s.taylor(q + 1)
     per_res = {}
@@ -505,8 +518,9 @@ def level_precision(q: int, n: int, arity: int = 2, target_bits: int = 64) -> in
     return int(target_bits + q * n + 32) if arity == 2 else int(target_bits + q * n * math.log2(arity) + 32)
 
 
-def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64, *, arity: int = 2) -> int:
+def default_precision(s: LevelDependentScheme, n: int, target_bits: int = 64, *, arity: int | None = None) -> int:
     """Working precision for level n: ``target + q n log2(m) + 32`` bits (q = the leading order, m the arity)."""
+    arity = s.arity if arity is None else arity
     try:
         q = s.order()
     except AnalysisError:
@@ -532,8 +546,9 @@ def _env_values(s: LevelDependentScheme, values: Mapping[str, Any] | None) -> di
 
 
 def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, prec: int | None = None,
-                            arity: int = 2):
+                            arity: int | None = None):
     """Arb enclosures of ``a^n_k - a_k`` for every k (``h = m^-n``, m = ``arity``; params exact or boxes)."""
+    arity = s.arity if arity is None else arity
     env = _env_values(s, values)
     prec = prec or default_precision(s, n, arity=arity)
     with workprec(prec):
@@ -548,7 +563,7 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
 
 
 def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None = None, *,
-             arithmetic: str = "arb", prec: int | None = None, arity: int = 2) -> Result:
+             arithmetic: str = "arb", prec: int | None = None, arity: int | None = None) -> Result:
     """``||S_{a^n} - S_a||_inf`` at level ``n`` (``arity`` m: ``h = m^-n``, m residue classes).
 
     ``arithmetic="arb"``: a certified enclosure ``[lower, upper]`` (exact rationals) from ball
@@ -556,6 +571,7 @@ def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None =
     exact numbers or ``(lo, hi)`` boxes. ``"mp"``: mpmath at ``prec`` bits, numerical.
     ``"float"``: float64, numerical, and wrong at large n (cancellation).
     """
+    arity = s.arity if arity is None else arity
     if arithmetic not in ARITHMETICS:
         raise AnalysisError(f"unknown arithmetic {arithmetic!r}; use one of {', '.join(ARITHMETICS)}")
     if not isinstance(n, int) or n < 0:

@@ -29,6 +29,27 @@ References
 ----------
 C. Conti, L. Romani, *Algebraic conditions on non-stationary subdivision symbols for exponential
 polynomial reproduction*, J. Comput. Appl. Math. 236 (2011) 543-556.
+
+Arity m (``LevelDependentScheme(..., arity=m)``, ``h = m^-n``; :func:`generation`, :func:`reproduction`)
+--------------------------------------------------------------------------------------------------------
+The scheme *generates* ``e^{lambda x}`` at every level when ``S_{a^n}`` maps the samples ``e^{lambda j h}`` to
+multiples of ``e^{lambda i h/m}``, and *reproduces* it (parametrisation ``t^n_i = (i + tau/(m-1)) m^-n``,
+``tau = a'(1)/m`` of the limit symbol, Conti–Hormann 2011) when the multiple is exactly the sample at level
+``n+1``. Write ``i = m k + r`` and ``w = e^{-lambda h/m}``. Then ``(S_{a^n} e^{lambda . h})_i = e^{lambda k h}
+sum_l a^n_{r+ml} e^{-lambda l h}``, which is ``c e^{lambda i h/m}`` for all ``i`` iff the m sub-symbols
+``A_r(w) = sum_l a^n_{r+ml} w^{r+ml}`` are equal (to ``c``), i.e. iff ``a^n(eps^j w) = 0`` for the m-th roots of
+unity ``eps^j != 1`` (for ``m = 2``: ``a^n(-e^{-lambda h/2}) = 0``, the binary condition of
+:func:`analysis.levels.reproduction.generation`). With the data ``e^{lambda (j+sigma) h}`` the same computation
+gives reproduction iff moreover ``A_r(w) = w^{sigma (m-1)}`` for every r, i.e. ``a^n(w) = m w^tau`` with
+``tau = sigma (m-1)``; letting ``lambda -> 0`` gives ``tau = a'(1)/m`` (the polynomial-reproduction shift).
+The conditions ``A_r(w) - A_0(w) = 0`` (and ``A_0(w) - w^tau = 0``) are proven as exact identities in ``h``
+and the parameters (sympy simplification; no roots of unity are needed in this form) or refuted by a
+certified nonzero ball value (Arb, ``h = m^-n`` at levels ``n = 0..3``, parameters at the given values
+or at points of the given box). The exact/box reading of the values and the search for a certified nonzero
+value are shared by every arity.
+
+The binary statements (``a^n(-e^{-lambda h/2}) = 0``) are kept for ``m = 2`` because the binary reports and
+goldens record them; for ``m > 2`` the m sub-symbols are compared (the same condition, written for any m).
 """
 
 from __future__ import annotations
@@ -98,7 +119,7 @@ def _prepare(s: LevelDependentScheme, values) -> tuple[LevelDependentScheme, dic
 def _certify_nonzero_in(expr: sp.Expr, s: LevelDependentScheme, boxes: dict, depth: int = 2, *,
                         arity: int = 2) -> dict | None:
     """A level ``n`` (``h = m^-n``, m = ``arity``) and a point of the box (``boxes``; none: the default point)
-    where ``expr != 0`` is proven (also for :mod:`analysis.levels.reproduction_mary`)."""
+    where ``expr != 0`` is proven."""
     if not boxes:
         return _certify_nonzero(expr, s, None, arity=arity)
     for pt in _box_points(boxes, depth):
@@ -128,6 +149,21 @@ def _certify_nonzero(expr: sp.Expr, s: LevelDependentScheme, values, *, arity: i
     return None
 
 
+def sub_symbols(s: LevelDependentScheme, w: sp.Expr) -> list[sp.Expr]:
+    """``A_r(w) = sum_l a^n_{r+ml} w^{r+ml}`` for ``r = 0..m-1`` (expressions in ``h`` and the parameters).
+
+    >>> s = LevelDependentScheme.from_symbol("(1+z+z**2)**2/(3*z**2)", arity=3)
+    >>> [sp.factor(x) for x in sub_symbols(s, sp.Integer(1))]
+    [1, 1, 1]
+    """
+    m = s.arity
+    out = [sp.Integer(0)] * m
+    for k, c in enumerate(s.mask):
+        e = s.start + k
+        out[e % m] += c * w ** e
+    return out
+
+
 def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, Any] | None = None, *,
                depth: int = 2) -> Result:
     """Certify that every level ``S_{a^n}`` generates ``e^{lambda x}`` for each lambda.
@@ -145,8 +181,44 @@ def generation(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str, 
     >>> r = generation(TRIGONOMETRIC, [sp.I * a, -sp.I * a], {"alpha": (0, 1), "omega": (0, sp.Rational(1, 50))})
     >>> r.status, r.witness["counterexample"]["point"]
     ('refuted', {'alpha': 1/2, 'omega': 1/100})
+
+    Arity ``m > 2`` (the scheme's; module docstring): the m sub-symbols ``A_r(w)``, ``w = e^{-lambda h/m}``,
+    are equal identically.
+
+    >>> from analysis.levels.expbspline import ternary_exponential_bspline_2
+    >>> t3 = ternary_exponential_bspline_2()
+    >>> generation(t3, [0, sp.I * t3.params[0], -sp.I * t3.params[0]]).status          # 1, cos(theta x), sin(theta x)
+    'certified'
+    >>> r = generation(t3, [t3.params[0]], {"theta": 1})                                # not e^(theta x)
+    >>> r.status, r.witness["counterexample"]["n"]
+    ('refuted', 0)
     """
     s, rep, boxes = _prepare(s, values)
+    if s.arity != 2:
+        m = s.arity
+        out = {}
+        for lam in lambdas:
+            lam = as_expr(lam).subs(rep)
+            A = sub_symbols(s, sp.exp(-lam * H / m))
+            for r in range(1, m):
+                e = A[r] - A[0]
+                if _exact_zero(e):
+                    continue
+                stmt = f"A_{r}(w) != A_0(w) at w = exp(-({lam}) h/{m}), i.e. a^n(eps^j w) != 0 for some j"
+                w = _certify_nonzero_in(e, s, boxes, depth, arity=m)
+                if w:
+                    return Result(value=False, status=REFUTED, witness={"lambda": lam, "statement": stmt,
+                                                                        "residue": r, "counterexample": w},
+                                  provenance={"method": "acb ball evaluation", "arity": m})
+                return Result(value=None, status=INCONCLUSIVE, witness={"lambda": lam, "statement": stmt, "residue": r},
+                              provenance={"method": "no exact zero proof, no certified nonzero value", "arity": m})
+            out[sp.sstr(lam)] = f"A_0 = ... = A_{m - 1} at w = exp(-lambda h/{m}) identically"
+        wit: dict[str, Any] = {"generated": [sp.sstr(as_expr(x)) for x in lambdas], "conditions": out, "arity": m}
+        if boxes:
+            wit["box"] = {k: tuple(v) for k, v in boxes.items()}
+        return Result(value=True, status=CERTIFIED, witness=wit,
+                      provenance={"method": f"exact: a^n(eps^j exp(-lambda h/{m})) == 0, j = 1..{m - 1}, for all h = "
+                                            f"{m}^-n and all parameters (sympy)", "arity": m})
     out = {}
     for lam in lambdas:
         lam = as_expr(lam).subs(rep)
@@ -174,12 +246,40 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
     """Certify reproduction: generation and ``a^n(e^{-lambda h/2}) = 2 e^{-lambda tau h/2}``.
 
     ``tau = a'(1)/2`` of the limit symbol (the parametrisation of polynomial reproduction).
-    Boxes in ``values`` as in :func:`generation`.
+    Boxes in ``values`` as in :func:`generation`. Arity ``m > 2``: ``a^n(w) = m w^tau``, ``w = e^{-lambda h/m}``,
+    ``tau = a'(1)/m`` (module docstring).
+
+    >>> from analysis.levels.expbspline import ternary_exponential_bspline_2
+    >>> r = reproduction(ternary_exponential_bspline_2(), [0])          # reproduces constants
+    >>> r.status, r.witness["tau"]
+    ('certified', 0)
     """
     g = generation(s, lambdas, values, depth=depth)
     if g.status != CERTIFIED:
         return g
     s, rep, boxes = _prepare(s, values)
+    if s.arity != 2:
+        m = s.arity
+        a = s.limit()
+        tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / m)
+        for lam in lambdas:
+            lam = as_expr(lam).subs(rep)
+            w = sp.exp(-lam * H / m)
+            e = sub_symbols(s, w)[0] - w ** tau
+            if not _exact_zero(e):
+                cx = _certify_nonzero_in(e, s, boxes, depth, arity=m)
+                return Result(value=False if cx else None, status=REFUTED if cx else INCONCLUSIVE,
+                              witness={"generation": True, "lambda": lam, "tau": tau,
+                                       "statement": f"a^n(exp(-({lam}) h/{m})) != {m} exp(-({lam}) tau h/{m})",
+                                       "counterexample": cx},
+                              provenance={"method": "exact identity test + acb ball evaluation", "arity": m})
+        wit: dict[str, Any] = {"tau": tau, "lambdas": list(lambdas), "arity": m,
+                               "parametrisation": f"t_i^n = (i + tau/{m - 1}) {m}^-n"}
+        if boxes:
+            wit["box"] = {k: tuple(v) for k, v in boxes.items()}
+        return Result(value=True, status=CERTIFIED, witness=wit,
+                      provenance={"method": "exact generalized m-ary sum rules at every level and parameter (sympy)",
+                                  "arity": m})
     a = s.limit()
     tau = sp.simplify(sum(c * (a.start + k) for k, c in enumerate(a.mask)) / 2)
     for lam in lambdas:

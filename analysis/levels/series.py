@@ -44,7 +44,7 @@ separately (interval arithmetic over the sub-box).
 
 The same code serves every arity ``m`` (``h = m^-n``, m residue classes, weights ``m^{kn}``):
 :func:`_box_series`, :func:`adaptive_boxes` and :func:`same_support`'s box test take ``arity``
-(default 2) and :mod:`analysis.levels.mary` calls them, so a fix here serves all arities.
+(default: the scheme's own), so a fix here serves all arities.
 
 References
 ----------
@@ -187,7 +187,7 @@ def _box_series(s: LevelDependentScheme, env: dict, m: int, N: int, J: int | Non
     """The weighted series ``sum_n arity^{mn} ||S_{a^n} - S_a||_inf`` on one parameter box (module docstring):
     a dict with the verdict and its numbers; :class:`LevelNotFinite` when a level's enclosure is not finite.
     One implementation for every arity ``m`` (``h = m^-n``), used by :func:`weighted_series` and
-    :func:`analysis.levels.mary.weighted_series_mary`."""
+    :func:`weighted_series` for arity ``m > 2``."""
     q = s.order()
     models = taylor_models(s, env, J=J)
     rho = models[0].rho
@@ -294,8 +294,8 @@ def _adaptive_boxes(s, boxes, m, N, J, depth, arity: int = 2):
 
 
 def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = None, m: int = 0, *,
-                    difference: int = 0, N: int = 40, J: int | None = None, pieces: int = 1,
-                    depth: int = 0, arity: int = 2) -> Result:
+                    difference: int = 0, N: int | None = None, J: int | None = None, pieces: int = 1,
+                    depth: int = 0, arity: int | None = None) -> Result:
     """Decide and enclose ``sum_{n>=0} 2^{mn} ||S_{a^n} - S_a||_inf`` (``arity`` M: ``M^{mn}``, ``h = M^-n``).
 
     Parameters
@@ -307,7 +307,7 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
     difference : int
         Analyse the k-th divided difference scheme ``(2/(1+z))^k a^n`` instead (as papers do).
     N : int
-        Levels summed explicitly; the rest is the analytic tail.
+        Levels summed explicitly; the rest is the analytic tail (default 40).
     pieces : int
         Sub-boxes of each parameter box (several boxed parameters: the product grid).
     depth : int
@@ -316,8 +316,12 @@ def weighted_series(s: LevelDependentScheme, values: Mapping[str, Any] | None = 
 
     Returns a :class:`Result`: certified ``[lower, upper]`` and ``witness["verdict"] ==
     "convergent"``; or ``value = oo`` with ``"divergent"`` and the certified leading constant; or
-    inconclusive.
+    inconclusive. Any arity (the scheme's, or ``arity``);
+    :func:`analysis.levels.leading_term.series_by_leading_term` is the same sum with the witness of the
+    ``series`` command for ``m > 2``.
     """
+    arity = s.arity if arity is None else arity
+    N = 40 if N is None else N
     if not isinstance(m, int) or m < 0:
         raise AnalysisError(f"the weight exponent m must be a non-negative integer, not {m!r}")
     if not isinstance(N, int) or N < 2:
@@ -397,7 +401,7 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                           box: tuple[str, Any, Any] | None = None, arity: int = 2) -> Result:
     """Certify that the stationary scheme ``S_a`` is C^m (Dyn–Levin norm test, then the hooks).
 
-    ``arity`` M >= 3: :func:`analysis.regularity.mary.smoothness_mary` (the m-ary norm test, exact spectral
+    ``arity`` M >= 3: :func:`analysis.regularity.holder.smoothness` (the m-ary norm test, exact spectral
     radii, JSR bounds; certified True or False), exact values only.
 
     ``box = (name, lo, hi)``: the symbol has one free parameter and C^m is certified on the whole
@@ -411,13 +415,14 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
     if box is None and not a.is_numeric:
         raise AnalysisError("the limit symbol has free parameters: give their values")
     if arity != 2:
-        from ..regularity.mary import NotConvergentMary, smoothness_mary
+        from ..regularity.convergence import NotConvergent
+        from ..regularity.holder import smoothness
 
         if box is not None:
             raise AnalysisError("a parameter box for the limit of an m-ary scheme: give exact values")
         try:
-            r = smoothness_mary(a, arity, m)
-        except NotConvergentMary as exc:
+            r = smoothness(a, m, arity=arity)
+        except NotConvergent as exc:
             r = exc.result()
         return Result(value=r.value, status=r.status, witness={"smooth": r.value, **r.witness},
                       provenance=r.provenance)
@@ -458,7 +463,7 @@ def stationary_smoothness(a: LaurentSymbol, m: int, *, L_max: int = 4,
                   provenance={"method": "Dyn-Levin norm test"})
 
 
-def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0, arity: int = 2) -> Result:
+def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0, arity: int | None = None) -> Result:
     """Certify that ``a^n`` and ``a`` have the same support for every level ``n >= 0``.
 
     Outside the limit's support the level coefficient must vanish identically; inside, it is
@@ -467,6 +472,7 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0
     interval enclosures tighten on smaller boxes), at most ``depth`` times; certified when every
     sub-box is.
     """
+    arity = s.arity if arity is None else arity
     r = _same_support_box(s, values, N=N, arity=arity)
     env = _parse_values(s, values)
     if r.is_certified or depth <= 0 or not any(isinstance(v, tuple) for v in env.values()):
@@ -484,9 +490,10 @@ def same_support(s: LevelDependentScheme, values, *, N: int = 40, depth: int = 0
     return next(p for p in parts if not p.is_certified)
 
 
-def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40, arity: int = 2) -> Result:
+def _same_support_box(s: LevelDependentScheme, values, *, N: int = 40, arity: int | None = None) -> Result:
     """:func:`same_support` on one box, for any arity ``m`` (``h = m^-n``; also
-    :func:`analysis.levels.mary.same_support_mary`)."""
+    :func:`same_support` of an m-ary scheme)."""
+    arity = s.arity if arity is None else arity
     env = _parse_values(s, values)
     lim = s._limits
     models = taylor_models(s, env)
@@ -591,11 +598,11 @@ def _dyn_levin_hypotheses(sup: Result, lim: Result, ser: Result, mm: int) -> tup
 
 def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int, *,
                difference: int = 0, L_max: int = 4, N: int = 40, pieces: int = 1, depth: int = 0,
-               arity: int = 2) -> Result:
+               arity: int | None = None) -> Result:
     """C^m of ``{S_{a^n}}`` by Dyn–Levin 1995 (Theorem 1.1 of seed 003), hypotheses checked.
 
     ``arity`` M: the theorem with dilation M (``h = M^-n``, weight ``M^{mn}``, the limit's C^m by the m-ary
-    analysis; :mod:`analysis.levels.mary` says why Dyn–Levin's proof carries over), the divided difference
+    analysis; Dyn–Levin 1995 state it for ``m = 2``; their proof uses the dilation only through ``||S^n||``-type bounds and ``2^{-n}`` mesh sizes, and carries over with ``2 -> m``), the divided difference
     scheme ``(M/(1+...+z^(M-1)))^k a^n`` (:mod:`analysis.levels.divided`).
 
     With ``difference = k`` the theorem is applied to the k-th divided difference scheme
@@ -606,6 +613,7 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     ``witness["hypotheses"]`` holds a Result for each hypothesis; the verdict is certified only
     when all are.
     """
+    arity = s.arity if arity is None else arity
     target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference, arity)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
     box = None

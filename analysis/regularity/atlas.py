@@ -154,7 +154,7 @@ def _payload(symbol: LaurentSymbol) -> tuple[tuple[sp.Expr, ...], int, tuple[str
 
 
 def _verdicts(a: LaurentSymbol, h: Result | None, k: int | None, j_levels: Sequence[int],
-              budget: float) -> dict[str, Any]:
+              budget: float, m: int = 2) -> dict[str, Any]:
     from .holder import smoothness
 
     out: dict[str, Any] = {}
@@ -169,13 +169,14 @@ def _verdicts(a: LaurentSymbol, h: Result | None, k: int | None, j_levels: Seque
         elif h.upper is not None and h.upper <= j:
             out[key] = False
         else:
-            out[key] = smoothness(a, j, budget=budget).value
+            out[key] = smoothness(a, j, budget=budget, arity=m).value
     return out
 
 
 def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: Sequence[int] = DEFAULT_J_LEVELS,
-                   budget: int = 2_000) -> dict[str, Any]:
-    """Certified alpha enclosure and C^j verdicts of ``symbol.subs(values)`` (one atlas sample).
+                   budget: int = 2_000, *, arity: int = 2) -> dict[str, Any]:
+    """Certified alpha enclosure and C^j verdicts of ``symbol.subs(values)`` (one atlas sample), arity ``m``:
+    ``alpha = k - log_m JSR(T_0, ..., T_{m-1})``; ``j > k`` is not C^j (too few factors ``q_m``).
 
     Returns a dict with ``alpha_lower``, ``alpha_upper`` (rationals), ``alpha`` (exact when
     known), ``alpha_exact`` (a closed form such as ``"3 - log2(rho(T_01))/2"`` when the JSR is
@@ -191,18 +192,23 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
     >>> p = evaluate_point(LaurentSymbol.from_mask(["1/8", "1/2", "3/4", "1/2", "1/8"], start=-2), {}, (2, 3))
     >>> p["alpha"], p["C^2"], p["C^3"], p["status"]
     (3, True, False, 'certified')
+    >>> s = evaluate_point(LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)"), {}, (2, 3), arity=3)
+    >>> s["alpha"], s["C^2"], s["C^3"], s["status"]           # ternary cubic B-spline: alpha = 3
+    (3, True, False, 'certified')
     """
+    from ..algebra.factorization import check_arity
     from .convergence import difference_mask
     from .holder import holder_exponent
 
+    m = check_arity(arity)
     t0 = time.perf_counter()
     a = symbol.subs(dict(values)) if values else symbol
     sample: dict[str, Any] = {"alpha_lower": None, "alpha_upper": None, "alpha": None, "alpha_exact": None,
                               "k": None, "status": INCONCLUSIVE}
     h = k = None
     try:
-        k, _ = difference_mask(a)
-        h = holder_exponent(a, budget=budget)
+        k, _ = difference_mask(a, arity=m)
+        h = holder_exponent(a, budget=budget, arity=m)
     except AnalysisError as exc:
         sample["note"] = str(exc)
     if h is not None:
@@ -210,7 +216,7 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
         ex = h.witness.get("alpha_exact")
         sample["alpha_exact"] = None if ex is None else (ex if isinstance(ex, str) else sp.sstr(ex))
     try:
-        sample.update(_verdicts(a, h, k, j_levels, budget))
+        sample.update(_verdicts(a, h, k, j_levels, budget, m))
     except AnalysisError as exc:  # pragma: no cover - verdicts only fail where alpha failed
         sample["note"] = str(exc)
         sample.update({f"C^{j}": None for j in j_levels})
@@ -224,9 +230,7 @@ def _evaluate_task(task: tuple) -> dict[str, Any]:
     """The picklable unit of work: ``(mask, start, names, ((name, "p/q"), ...), j_levels, budget, key[, arity])``."""
     mask, start, names, values, j_levels, budget, key, *m = task
     symbol, vals = _rebuild(mask, start, names), {n: sp.Rational(v) for n, v in values}
-    from .atlas_mary import evaluate_point_mary   # m-ary families (issue 12)
-    sample = (evaluate_point_mary(symbol, vals, m[0], j_levels, budget) if m else
-              evaluate_point(symbol, vals, j_levels, budget))
+    sample = evaluate_point(symbol, vals, j_levels, budget, arity=m[0] if m else 2)
     sample["key"] = key
     return sample
 
@@ -335,11 +339,11 @@ class _Runner:
 # exceptional parameter sets (more factors (1+z): alpha may jump up there)
 # --------------------------------------------------------------------------------------------
 
-def _exceptional(symbol: LaurentSymbol) -> list[dict]:
+def _exceptional(symbol: LaurentSymbol, m: int = 2) -> list[dict]:
     from ..algebra.factorization import smoothing_factor
 
     try:
-        f = smoothing_factor(symbol)
+        f = smoothing_factor(symbol, arity=m)
     except AnalysisError:  # pragma: no cover - defensive
         return []
     out: list[dict] = []
@@ -395,8 +399,7 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
     progress
         Show a tqdm bar on stderr (only when stderr is a terminal).
     arity
-        ``m`` of an m-ary family (issue 12; samples by :mod:`analysis.regularity.atlas_mary`, factors
-        ``1+...+z^{m-1}``, ``alpha = k - log_m JSR``); default 2, the binary code path.
+        ``m`` of an m-ary family (factors ``1+...+z^{m-1}``, ``alpha = k - log_m JSR``); default 2.
 
     Returns
     -------
@@ -469,8 +472,8 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
     # an axis with one point is a fixed value: 'generic' refers to the sampled set
     fixed = {p: lo for p, n, lo in ((p1, n1, lo1), (p2, n2, lo2)) if n == 1}
     region = symbol.subs(fixed) if fixed else symbol
-    from . import atlas_mary as am
-    generic_k = _generic_k(region) if arity == 2 else am.generic_k_mary(region, am.check_arity(arity))
+    from ..algebra.factorization import check_arity
+    generic_k = _generic_k(region, check_arity(arity))
 
     def tasks_for(keys):
         out = []
@@ -537,7 +540,7 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
                                   sp.Rational(0) if N2 == 0 else (hi2 - lo2) / N2)},
         "counts": {"samples": len(rows), "certified": certified, "inconclusive": len(rows) - certified,
                    "per_level": per_level, "refined_cells": refined_cells, "verdicts": tallies},
-        "exceptional": _exceptional(region) if arity == 2 else am.exceptional_mary(region, arity),
+        "exceptional": _exceptional(region, arity),
         "generic_k": generic_k,
         "exceptional_samples": sum(1 for r in rows if r["exceptional"]),
         "executor": description, **({"arity": arity} if arity != 2 else {}),
@@ -552,12 +555,12 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
                                          "samples": sample_seconds}})
 
 
-def _generic_k(symbol: LaurentSymbol) -> int | None:
-    """``N - 1`` for the generic number ``N`` of factors ``(1+z)`` of the family."""
+def _generic_k(symbol: LaurentSymbol, m: int = 2) -> int | None:
+    """``N - 1`` for the generic number ``N`` of factors ``q_m`` (``(1+z)`` for ``m = 2``) of the family."""
     from ..algebra.factorization import smoothing_factor
 
     try:
-        return int(smoothing_factor(symbol, exceptional=False).value) - 1
+        return int(smoothing_factor(symbol, exceptional=False, arity=m).value) - 1
     except (AnalysisError, TypeError, ValueError):  # pragma: no cover - defensive
         return None
 

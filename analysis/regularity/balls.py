@@ -17,7 +17,7 @@ import sympy as sp
 from ..algebra.factorization import smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, AnalysisError, Result
-from .convergence import log2_interval
+from .convergence import log_interval
 from ..algebra.reader import as_expr
 
 
@@ -194,10 +194,10 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
     if lo is None or lo <= 0:
         raise AnalysisError("the joint spectral radius lower bound is 0; the Hölder formula does not apply")
     if hi is not None:
-        l2lo, l2hi = log2_interval(sp.Rational(lo), sp.Rational(hi))
+        l2lo, l2hi = log_interval(sp.Rational(lo), sp.Rational(hi))
         a_lo, a_hi = k - l2hi, k - l2lo
     else:
-        a_lo, a_hi = None, k - log2_interval(sp.Rational(lo), sp.Rational(lo))[0]
+        a_lo, a_hi = None, k - log_interval(sp.Rational(lo), sp.Rational(lo))[0]
     word = r.witness.get("product") or ()
     witness = {"N": N, "k": k, "jsr": r, "product": word, "rho_product": r.witness.get("rho_product"),
                "c_radius": sp.Rational(c_rad.numerator, c_rad.denominator),

@@ -1,9 +1,10 @@
 """Convergence (the sum rules), the difference mask of the Hölder formula, and exact helpers
-shared by the regularity routines.
+shared by the regularity routines, for any arity ``m`` (the keyword ``arity``, default 2).
 
-A binary scheme can converge only if ``a(1) = 2`` and ``a(-1) = 0``; a failure is a
-**certified** verdict (:class:`NotConvergent`), not bad input. With ``N`` factors ``(1+z)``,
-``k = N - 1`` and ``c = 2^k a/(1+z)^(k+1)`` (:func:`difference_mask`), ``alpha = k - log2 rho(c)``.
+A scheme can converge only if ``a(1) = m`` and ``a(eps) = 0`` at the m-th roots of unity
+``eps != 1`` (``a(1) = 2``, ``a(-1) = 0`` for ``m = 2``); a failure is a **certified** verdict
+(:class:`NotConvergent`), not bad input. With ``N`` factors ``q_m = 1 + ... + z^{m-1}``, ``k = N - 1``
+and ``c = m^k a/q_m^(k+1)`` (:func:`difference_mask`), ``alpha = k - log_m rho(c)``.
 """
 
 from __future__ import annotations
@@ -11,7 +12,7 @@ from __future__ import annotations
 import mpmath
 import sympy as sp
 
-from ..algebra.factorization import factor_out, smoothing_factor
+from ..algebra.factorization import arity_key, check_arity, factor_out, smoothing_factor, sum_rules
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, AnalysisError, Result
 
@@ -27,27 +28,40 @@ class NotConvergent(AnalysisError):
     callers that report regularity (``subdiv holder``, :func:`smoothness`) turn it into a result.
     """
 
-    def __init__(self, reason: str, *, hint: str | None = None):
-        self.reason = reason
-        self.hint = hint
-        super().__init__(f"the scheme does not satisfy the sum rules a(1) = 2, a(-1) = 0 ({reason}): "
+    def __init__(self, reason: str, *, hint: str | None = None, arity: int = 2):
+        self.reason, self.hint, self.arity = reason, hint, arity
+        m = arity
+        rules = "sum rules a(1) = 2, a(-1) = 0" if m == 2 else \
+            f"{m}-ary sum rules a(1) = {m}, a(eps) = 0 for eps^{m} = 1, eps != 1"
+        super().__init__(f"the scheme does not satisfy the {rules} ({reason}): "
                          "it does not converge" + (f"; {hint}" if hint else ""))
 
     def result(self) -> Result:
+        m = self.arity
+        method = ("exact sum rules a(1) = 2, a(-1) = 0 (necessary for convergence)" if m == 2 else
+                  f"exact {m}-ary sum rules (necessary for convergence)")
         return Result(value=False, status=CERTIFIED,
                       witness={"convergent": False, "reason": f"not convergent: {self.reason}",
                                **({"hint": self.hint} if self.hint else {})},
-                      provenance={"method": "exact sum rules a(1) = 2, a(-1) = 0 (necessary for convergence)"})
+                      provenance={"method": method, **arity_key(m)})
 
 
-def convergence_failure(a: LaurentSymbol) -> str | None:
-    """``None`` when ``a(1) = 2`` and ``a(-1) = 0`` exactly, else the reason, e.g.
-    ``"a(-1) = 1/2 != 0"`` (both sum rules are necessary for convergence).
+def convergence_failure(a: LaurentSymbol, *, arity: int = 2) -> str | None:
+    """``None`` when the sum rules hold exactly (``a(1) = 2`` and ``a(-1) = 0`` for ``m = 2``; ``a(1) = m``
+    and ``a(eps) = 0`` at the m-th roots of unity ``eps != 1``), else the reason, e.g.
+    ``"a(-1) = 1/2 != 0"`` or one naming the root of unity (the sum rules are necessary for convergence).
 
     >>> convergence_failure(LaurentSymbol.from_mask(["1/4", "1/2", "1", "1/4"]))
     'a(-1) = 1/2 != 0'
+    >>> convergence_failure(LaurentSymbol.from_mask(["1/2", 1, 1, 1, "1/2"]), arity=4) is None
+    True
+    >>> convergence_failure(LaurentSymbol.from_mask(["1/2", 1, 1, 1, "1/2"]), arity=3)
+    'a(1) = 4 != 3; a(exp(2*pi*i/3)) = 1/4 + sqrt(3)*I/4 != 0; a(exp(4*pi*i/3)) = 1/4 - sqrt(3)*I/4 != 0'
     """
     a.require_numeric("the sum rules")
+    if arity != 2:
+        r = sum_rules(a, arity=arity)
+        return None if r.value else "; ".join(r.witness["failures"])
     s1, sm1 = sp.expand(a(1)), sp.expand(a(-1))
     bad = []
     if s1 - 2 != 0:
@@ -69,38 +83,56 @@ def _from_doubles(a: LaurentSymbol) -> bool:
     return any(q >= 2 ** 40 and q & (q - 1) == 0 for q in qs)
 
 
-def difference_mask(a: LaurentSymbol) -> tuple[int, LaurentSymbol]:
-    """``(k, c)`` with ``k = N - 1`` (``N`` factors ``(1+z)``) and ``c = 2^k a / (1+z)^(k+1)``.
+def difference_mask(a: LaurentSymbol, *, arity: int = 2) -> tuple[int, LaurentSymbol]:
+    """``(k, c)`` with ``k = N - 1`` (``N`` factors ``q_m``) and ``c = m^k a / q_m^(k+1)``
+    (``2^k a/(1+z)^(k+1)`` for ``m = 2``).
 
-    Raises :class:`NotConvergent` (a certified verdict) when a sum rule fails."""
+    Raises :class:`NotConvergent` (a certified verdict) when a sum rule fails.
+
+    >>> difference_mask(LaurentSymbol.from_expr("(1+z+z**2)**2/(3*z**2)"), arity=3)
+    (1, LaurentSymbol([1], start=-2, domain=QQ))
+    """
+    m = check_arity(arity)
     a.require_numeric("a Hölder exponent")
-    why = convergence_failure(a)
+    why = convergence_failure(a, arity=m)
     if why is not None:
-        raise NotConvergent(why)
-    N = smoothing_factor(a, exceptional=False).value
-    return N - 1, factor_out(a, N) / 2
+        raise NotConvergent(why, arity=m)
+    N = smoothing_factor(a, arity=m, exceptional=False).value
+    return N - 1, factor_out(a, N, arity=m) / m
 
 
-def log2_interval(lo: sp.Rational, hi: sp.Rational, prec: int = 90):
-    """Rational outward bounds of ``[log2 lo, log2 hi]``."""
+def log_interval(lo: sp.Rational, hi: sp.Rational, base: int = 2, prec: int = 90):
+    """Rational outward bounds of ``[log_base lo, log_base hi]``."""
     from ..algebra.algebraic import _q
 
     old = iv.prec
     iv.prec = prec
     try:
-        L1 = iv.log(iv.mpf(int(lo.p)) / int(lo.q)) / iv.log(2)
-        L2 = iv.log(iv.mpf(int(hi.p)) / int(hi.q)) / iv.log(2)
+        L1 = iv.log(iv.mpf(int(lo.p)) / int(lo.q)) / iv.log(iv.mpf(base))
+        L2 = iv.log(iv.mpf(int(hi.p)) / int(hi.q)) / iv.log(iv.mpf(base))
         return _q(L1.a), _q(L2.b)
     finally:
         iv.prec = old
 
 
-def power_of_two_exponent(x: sp.Rational) -> int | None:
-    """``e`` if ``x == 2^e`` exactly, else None."""
+def power_exponent(x, m: int = 2) -> int | None:
+    """``e`` if ``x == m^e`` exactly (``e`` an integer), else None.
+
+    >>> power_exponent(sp.Rational(1, 9), 3), power_exponent(2, 3), power_exponent(sp.Rational(1, 4))
+    (-2, None, -2)
+    """
     x = sp.Rational(x)
     if x <= 0:
         return None
     p, q = int(x.p), int(x.q)
-    if p & (p - 1) == 0 and q & (q - 1) == 0:
-        return p.bit_length() - q.bit_length()
+    if q == 1:
+        e = 0
+        while p % m == 0:
+            p, e = p // m, e + 1
+        return e if p == 1 else None
+    if p == 1:
+        e = 0
+        while q % m == 0:
+            q, e = q // m, e + 1
+        return -e if q == 1 else None
     return None

@@ -167,7 +167,6 @@ def alpha_closed_form(h: Result, arity: int = 2) -> dict[str, Any] | None:
     proven equal to ``rho^(1/L)`` (``alpha`` is then the exponent); otherwise ``alpha`` is an exact
     upper bound (the JSR is at least ``rho(Pi)^(1/L)``). None for the ball routes, uncertified results
     or matrices whose spectral radius cannot be identified exactly."""
-    from ..stationary.mary import transition_matrices_mary
     from ..stationary.transition import transition_matrices
     from .holder import word_product
 
@@ -185,7 +184,7 @@ def alpha_closed_form(h: Result, arity: int = 2) -> dict[str, Any] | None:
     T = None
 
     def mats():
-        return list(transition_matrices(c)) if m == 2 else list(transition_matrices_mary(c, m))
+        return list(transition_matrices(c, arity=m))
 
     if jsr.value is not None:                                     # JSR known exactly (rational)
         rho, L, exact, how = _q(jsr.value), 1, True, "JSR bounds equal"

@@ -52,11 +52,12 @@ from typing import Any, Sequence
 
 import sympy as sp
 
+from ..algebra.factorization import arity_key, check_arity
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
 from ..stationary.transition import transition_matrices
 from .balls import ball_route
-from .convergence import NotConvergent, difference_mask, log2_interval, power_of_two_exponent
+from .convergence import NotConvergent, difference_mask, log_interval, power_exponent
 
 
 #: default work budgets of :func:`holder_exponent` (units of :func:`analysis.jsr.jsr_bounds`)
@@ -64,10 +65,13 @@ EXACT_BUDGET = 20_000
 BALL_BUDGET = 60_000
 
 
-def holder_exponent(a: Any, *, budget: int | None = None, max_length: int | None = None,
+def holder_exponent(a: Any, *, arity: int = 2, budget: int | None = None, max_length: int | None = None,
                     rel_gap: float = 1e-8, arithmetic: str | None = None, sum_rules: int | None = None,
                     prec: int | None = None) -> Result:
     """A certified enclosure ``[lower, upper]`` of the Hölder exponent of the scheme ``S_a``.
+
+    ``arity`` ``m`` (default 2): ``(S_a f)_i = sum_j a_{i-mj} f_j`` and ``alpha = k - log_m JSR`` of the
+    ``m`` transition matrices; for ``m > 2`` the mask must be an exact symbol.
 
     ``a`` is any kind of mask (module docstring). ``arithmetic`` is ``"exact"`` (the default
     for a :class:`~analysis.algebra.symbol.LaurentSymbol`) or ``"ball"`` (the symbol's
@@ -94,14 +98,19 @@ def holder_exponent(a: Any, *, budget: int | None = None, max_length: int | None
     >>> r = holder_exponent(schemes.get("daubechies-6"))                  # Arb ball mask
     >>> r.status, round(float(r.lower), 9)
     ('certified', 1.087833926)
+    >>> holder_exponent(LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)"), arity=3).value   # ternary cubic B-spline
+    3
     """
     from ..algebra.approx import ApproximateMask
     from ..algebra.closed_form import ClosedFormMask
 
+    m = check_arity(arity)
     if arithmetic not in (None, "exact", "ball"):
         raise AnalysisError(f"arithmetic must be 'exact' or 'ball', not {arithmetic!r}")
+    if m != 2 and not (isinstance(a, LaurentSymbol) and arithmetic != "ball"):
+        raise AnalysisError(f"an m-ary Hölder exponent needs an exact symbol, not {type(a).__name__}")
     if isinstance(a, LaurentSymbol) and arithmetic != "ball":
-        return _exact_route(a, budget=EXACT_BUDGET if budget is None else budget,
+        return _exact_route(a, arity=m, budget=EXACT_BUDGET if budget is None else budget,
                             max_length=12 if max_length is None else max_length, rel_gap=rel_gap)
     if arithmetic == "exact":
         raise AnalysisError(f"exact arithmetic needs an exact symbol, not {type(a).__name__}")
@@ -162,52 +171,55 @@ def _approximate_route(m, **kw) -> Result:
                   provenance={**h.provenance, "message": message})
 
 
-def _exact_route(a: LaurentSymbol, *, budget: int = EXACT_BUDGET, max_length: int = 12,
+def _exact_route(a: LaurentSymbol, *, arity: int = 2, budget: int = EXACT_BUDGET, max_length: int = 12,
                  rel_gap: float = 1e-8) -> Result:
-    """A certified enclosure ``[lower, upper]`` of the Hölder exponent of the scheme ``S_a``.
+    """A certified enclosure ``[lower, upper]`` of the Hölder exponent of the scheme ``S_a`` of arity ``m``:
+    ``alpha = k - log_m JSR(T_0, ..., T_{m-1})`` of ``c = m^k a/q_m^(k+1)``.
 
     ``value`` is the exact exponent when the JSR is attained by a product with a rational
-    spectral radius that is a power of two (B-splines); otherwise ``lower``/``upper`` are
-    rationals and ``witness["alpha_exact"]`` gives ``k - log2(rho(Pi))/L`` when the JSR is proven
-    equal to ``rho(Pi)^(1/L)``. The status is that of the JSR bounds.
+    spectral radius that is a power of ``m`` (B-splines); otherwise ``lower``/``upper`` are
+    rationals and (``m = 2``) ``witness["alpha_exact"]`` gives ``k - log2(rho(Pi))/L`` when the JSR is
+    proven equal to ``rho(Pi)^(1/L)``. The status is that of the JSR bounds.
     """
     from ..jsr import jsr_bounds
 
-    k, c = difference_mask(a)
-    T0, T1 = transition_matrices(c)
-    r = jsr_bounds([T0, T1], budget=budget, max_length=max_length, rel_gap=rel_gap)
+    m = arity
+    k, c = difference_mask(a, arity=m)
+    r = jsr_bounds(list(transition_matrices(c, arity=m)), budget=budget, max_length=max_length, rel_gap=rel_gap)
     lo, hi = r.lower, r.upper
-    witness = {"k": k, "c": c, "jsr": r, "product": r.witness.get("product"),
+    witness = {"k": k, "c": c, **arity_key(m), "jsr": r, "product": r.witness.get("product"),
                "rho_product": r.witness.get("rho_product")}
     value = None
     if lo is None or lo <= 0:
         raise AnalysisError("the joint spectral radius lower bound is 0; the Hölder formula does not apply")
     a_lo = a_hi = None
     if hi is not None:
-        l2lo, l2hi = log2_interval(sp.Rational(lo), sp.Rational(hi))
+        l2lo, l2hi = log_interval(sp.Rational(lo), sp.Rational(hi), m)
         a_lo, a_hi = k - l2hi, k - l2lo
     else:
-        a_hi = k - log2_interval(sp.Rational(lo), sp.Rational(lo))[0]
+        a_hi = k - log_interval(sp.Rational(lo), sp.Rational(lo), m)[0]
     if r.value is not None:
-        e = power_of_two_exponent(r.value)
+        e = power_exponent(r.value, m)
         if e is not None:
             value = sp.Integer(k - e)
-    if r.status == CERTIFIED and r.witness.get("closed"):
+    if m == 2 and r.status == CERTIFIED and r.witness.get("closed"):
         word = r.witness.get("product") or ()
         rho_expr = r.witness.get("rho_product_root_exact")
         if rho_expr is not None:
             witness["alpha_exact"] = sp.Integer(k) - sp.log(rho_expr, 2)
         elif word:
             witness["alpha_exact"] = f"{k} - log2(rho(T_{''.join(map(str, word))}))/{len(word)}"
-    status = r.status
+    if m == 2:
+        prov = {"method": "alpha = k - log2 JSR(T0, T1) of c = 2^k a/(1+z)^(k+1)",
+                "jsr_method": r.provenance.get("method"), "arithmetic": r.provenance.get("arithmetic")}
+    else:
+        prov = {"method": f"alpha = k - log_{m} JSR(T_0..T_{m - 1}) of c = {m}^k a/q_{m}^(k+1)",
+                "arity": m, "jsr_method": r.provenance.get("method")}
     return Result(value=value, lower=a_lo if value is None else value, upper=a_hi if value is None else value,
-                  status=status, witness=witness,
-                  provenance={"method": "alpha = k - log2 JSR(T0, T1) of c = 2^k a/(1+z)^(k+1)",
-                              "jsr_method": r.provenance.get("method"),
-                              "arithmetic": r.provenance.get("arithmetic"),
-                              "work": r.provenance.get("work"),
-                              "timing": r.provenance.get("timing"),
-                              **({"message": r.provenance["message"]} if "message" in r.provenance else {})})
+                  status=r.status, witness=witness,
+                  provenance={**prov, "work": r.provenance.get("work"), "timing": r.provenance.get("timing"),
+                              **({"message": r.provenance["message"]}
+                                 if m == 2 and "message" in r.provenance else {})})
 
 
 # --------------------------------------------------------------------------------------------
@@ -253,15 +265,29 @@ def _spectral_radius_at_least_exact(P: sp.Matrix, theta: sp.Rational) -> bool | 
         return None
 
 
-def smoothness(a: Any, j: int, *, budget: int = EXACT_BUDGET, max_length: int = 12) -> Result:
+def smoothness(a: Any, j: int, *, arity: int = 2, budget: int = EXACT_BUDGET, max_length: int = 12,
+               max_L: int = 4, max_word: int = 3) -> Result:
     """Is ``S_a`` C^j?  ``value`` True (alpha > j certified), False (alpha <= j certified), None.
 
     ``a``: any kind of mask :func:`holder_exponent` takes (ball masks: from the enclosure of alpha).
 
-    ``witness["reason"]`` says which bound decided it: the JSR upper bound below ``2^(k-j)``
-    (C^j), or a product ``Pi`` with ``rho(Pi)^(1/L) >= 2^(k-j)`` (not C^j; decided exactly when
+    ``witness["reason"]`` says which bound decided it: the JSR upper bound below ``m^(k-j)``
+    (C^j), or a product ``Pi`` with ``rho(Pi)^(1/L) >= m^(k-j)`` (not C^j; decided exactly when
     equality holds). An inconclusive verdict says what would settle it.
+
+    Arity ``m > 2`` (an exact symbol): :func:`_smoothness_dilated` — the same order of tests (sum rules
+    naming the root of unity, factor count, Dyn–Levin norms for ``L <= max_L``, exact spectral radii
+    of products of length ``<= max_word``, then the JSR bounds), with sympy products; the binary route
+    below uses FLINT products, norms up to ``L = 6``, words up to length 4 and an exact borderline
+    check. The two are kept apart because their witnesses (which test decided, in which words) are
+    what the reports and goldens of each arity record; ``max_L``/``max_word`` apply to ``m > 2``.
+
+    >>> smoothness(LaurentSymbol.from_mask([1, 2]), 0, arity=3).witness["reason"]
+    'not convergent: a(exp(2*pi*i/3)) = sqrt(3)*I != 0; a(exp(4*pi*i/3)) = -sqrt(3)*I != 0'
     """
+    m = check_arity(arity)
+    if m != 2:
+        return _smoothness_dilated(a, m, j, budget=budget, max_length=max_length, max_L=max_L, max_word=max_word)
     if j < 0:
         raise AnalysisError("j must be >= 0")
     if not isinstance(a, LaurentSymbol):
@@ -305,6 +331,65 @@ def smoothness(a: Any, j: int, *, budget: int = EXACT_BUDGET, max_length: int = 
     witness["reason"] = (f"JSR in [{sp.sstr(lo)}, {sp.sstr(hi)}] straddles 2^{k - j}: a longer budget, "
                          "a better spectrum-maximizing product or exact borderline analysis would settle it")
     return Result(value=None, status=INCONCLUSIVE if rigorous else NUMERICAL, witness=witness, provenance=h.provenance)
+
+
+def _smoothness_dilated(a: LaurentSymbol, m: int, j: int, *, budget: int, max_length: int, max_L: int,
+                        max_word: int) -> Result:
+    """:func:`smoothness` for arity ``m > 2`` (see there)."""
+    from itertools import product as words
+
+    from ..stationary.difference import difference_norm
+
+    if not isinstance(j, int) or j < 0:
+        raise AnalysisError("j must be a non-negative integer")
+    try:
+        k, c = difference_mask(a, arity=m)
+    except NotConvergent as exc:
+        return exc.result()
+    prov = {"arity": m}
+    if j > k:
+        return Result(value=False, status=CERTIFIED,
+                      witness={"reason": f"only {k + 1} factors q_{m}: alpha <= {k + 1} and C^{j} needs "
+                                         f"q_{m}^{j + 1} | a and alpha > {j}", "k": k},
+                      provenance={**prov, "method": "factor count"})
+    if a.domain.is_QQ or a.domain.is_ZZ:
+        for L in range(1, max_L + 1):
+            r = difference_norm(a, j + 1, L, arity=m)
+            if r.witness["contractive"]:
+                return Result(value=True, status=CERTIFIED,
+                              witness={"reason": f"||(1/{m} S_a{j + 1})^{L}||_inf = {sp.sstr(r.value)} < 1 "
+                                                 "(Dyn-Levin)", "k": k, "norm": r},
+                              provenance={**prov, "method": "exact m-ary Dyn-Levin norm test"})
+        T = transition_matrices(c, arity=m)
+        theta = sp.Integer(m) ** (k - j)
+        for L in range(1, max_word + 1):
+            for w in words(range(m), repeat=L):
+                if L > 1 and min(w[i:] + w[:i] for i in range(L)) != w:
+                    continue
+                P = sp.eye(T[0].shape[0])
+                for i in w:
+                    P = P * T[i]
+                x = sp.Symbol("x")
+                if _modulus_at_least([sp.Rational(c) for c in reversed(P.charpoly(x).all_coeffs())], theta ** L):
+                    return Result(value=False, status=CERTIFIED,
+                                  witness={"reason": f"the product T_{''.join(map(str, w))} has an eigenvalue of "
+                                                     f"modulus >= {m}^{(k - j) * L}: alpha <= {j}",
+                                           "k": k, "product": w},
+                                  provenance={**prov, "method": "exact spectral radius of a short product"})
+    h = holder_exponent(a, arity=m, budget=budget, max_length=max_length)
+    jsr = h.witness["jsr"]
+    lo, hi = jsr.lower, jsr.upper
+    theta = sp.Integer(m) ** (k - j)
+    witness = {"alpha": h, "k": k, "threshold_jsr": theta}
+    if hi is not None and hi < theta:
+        witness["reason"] = f"JSR <= {sp.sstr(hi)} < {m}^{k - j}: alpha > {j}"
+        return Result(value=True, status=CERTIFIED, witness=witness, provenance=h.provenance)
+    if lo is not None and lo >= theta:
+        witness["reason"] = f"rho(Pi)^(1/L) >= {sp.sstr(lo)} >= {m}^{k - j}: alpha <= {j}"
+        return Result(value=False, status=CERTIFIED, witness=witness, provenance=h.provenance)
+    witness["reason"] = (f"JSR in [{sp.sstr(lo)}, {sp.sstr(hi)}] straddles {m}^{k - j}: a longer budget or a "
+                         "better spectrum-maximizing product would settle it")
+    return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=h.provenance)
 
 
 def _modulus_at_least(charpoly_coeffs: list, theta: sp.Rational) -> bool | None:

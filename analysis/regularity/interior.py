@@ -49,7 +49,6 @@ from ..algebra.symbol import LaurentSymbol
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.difference import difference_symbol
-from ..stationary.mary import difference_symbol_mary
 from ..stationary.normbox import ParametricNorm
 from ..algebra.reader import as_expr
 
@@ -153,7 +152,7 @@ def ck_interior(a: LaurentSymbol, j: int, lo, hi, param=None, *, lo_open: bool =
     p = a.params[0]
     if param is not None and str(param) != p.name:
         raise AnalysisError(f"unknown parameter {str(param)!r} (the scheme's parameter is {p.name})")
-    am = difference_symbol(a, j + 1) if arity == 2 else difference_symbol_mary(a, j + 1, arity)
+    am = difference_symbol(a, j + 1) if arity == 2 else difference_symbol(a, j + 1, arity=arity)
     A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     if A.compare(B) >= 0:
         raise AnalysisError("the interval is empty")

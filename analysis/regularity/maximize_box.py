@@ -26,7 +26,7 @@ With ``N`` the generic number of factors ``q_m = 1 + z + ... + z^(m-1)``, ``k = 
 
 1. *Search* (floats): a grid over the box, then Nelder–Mead from the best grid point, of
    ``k - max_{|w| <= L} log_m rho(T_w)/|w|``; the maximiser is rounded to a rational ``t*``.
-2. *At t\\**: ``holder_exponent`` (binary) or ``holder_exponent_mary`` (certified enclosure).
+2. *At t\\**: ``holder_exponent`` with the arity (certified enclosure).
 3. *Upper bound* (branch and bound over sub-boxes, the box with the largest bound split along its
    widest side): the transition matrices on a sub-box are Arb ball matrices (each coefficient a
    polynomial in the parameters evaluated on the ball box); for each candidate word the ball
@@ -54,11 +54,11 @@ from fractions import Fraction
 import numpy as np
 import sympy as sp
 
-from ..algebra.mary import factor_out_mary, smoothing_factor_mary
+from ..algebra.factorization import factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
-from ..stationary.mary import transition_matrices_mary
+from ..stationary.transition import transition_matrices
 from ..algebra.reader import as_expr
 
 __all__ = ["maximize_holder_box"]
@@ -68,14 +68,14 @@ class _BoxFamily:
     """The transition matrices of ``c`` as polynomial entries in the parameters (floats and balls)."""
 
     def __init__(self, a: LaurentSymbol, params: tuple, m: int):
-        f = smoothing_factor_mary(a, m)
+        f = smoothing_factor(a, arity=m)
         self.N, self.m, self.params = f.value, m, params
         if self.N < 1:
             raise AnalysisError("the family does not satisfy the sum rules identically: not convergent generically")
         self.k = self.N - 1
         self.exceptional = f.witness.get("exceptional", [])
-        c = factor_out_mary(a, self.N, m) / m
-        mats = transition_matrices_mary(c, m)
+        c = factor_out(a, self.N, arity=m) / m
+        mats = transition_matrices(c, arity=m)
         self.n = mats[0].shape[0]
         self.entries = [[[sp.Poly(sp.expand(M[i, j]), *params) for j in range(self.n)] for i in range(self.n)]
                         for M in mats]
@@ -162,14 +162,9 @@ def _ball_bound(F: _BoxFamily, box, words, prec=128):
 
 
 def _certified_alpha(a: LaurentSymbol, m: int, budget: int, work: Work | None = None):
-    if m == 2:
-        from .holder import holder_exponent
+    from .holder import holder_exponent
 
-        r = holder_exponent(a, budget=budget)
-    else:
-        from .mary import holder_exponent_mary
-
-        r = holder_exponent_mary(a, m, budget=budget)
+    r = holder_exponent(a, budget=budget, arity=m)
     if work is not None:
         work.charge(r.provenance.get("work") or 0)
     return r

@@ -1,6 +1,7 @@
 """C^k parameter ranges of one-parameter families: where ``S_a(p)`` is C^j, with boundaries
-certified on both sides (:func:`ck_parameter_set`), the curve ``alpha(p)`` (:func:`alpha_curve`),
-and the proof or refutation of a claimed range (:func:`verify_smoothness_interval`).
+certified on both sides (:func:`ck_parameter_set`; for any arity from exact norm and eigenvalue sets,
+:func:`ck_range`), the curve ``alpha(p)`` (:func:`alpha_curve`), and the proof or refutation of a
+claimed range (:func:`verify_smoothness_interval`).
 
 :func:`ck_parameter_set` samples a grid, locates every change of the C^j verdict by bisection
 with certified verdicts on both sides, and makes a boundary exact where an eigenvalue of a fixed
@@ -48,11 +49,11 @@ import math
 from typing import Sequence
 
 from ..algebra.algebraic import RealAlgebraic
-from ..algebra.factorization import factor_out, smoothing_factor
+from ..algebra.factorization import arity_key, check_arity, factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from ..stationary.difference import difference_symbol
-from ..stationary.normset import norm_solution_set
+from ..stationary.normset import _parameter, norm_solution_set
 from ..stationary.transition import transition_matrices
 from .holder import holder_exponent, smoothness, word_product
 from ..algebra.reader import as_expr
@@ -344,23 +345,172 @@ def _simple_rational_near(r, side: int, tol_q):
     return None
 
 
+# --------------------------------------------------------------------------------------------
+# C^j ranges from exact norm sets and eigenvalue sets (any arity)
+# --------------------------------------------------------------------------------------------
+
+def _violation_set(a: LaurentSymbol, m: int, j: int, p: sp.Symbol, k: int) -> tuple[sp.Set, list]:
+    """``{p : some T_eps(c(p)) has a real eigenvalue r(p) with |r(p)| >= m^(k-j)}`` from the linear
+    factors (in lambda) of the characteristic polynomials; nonlinear factors are listed, not used."""
+    lam = sp.Symbol("lambda")
+    c = factor_out(a, k + 1, arity=m) / m
+    theta = sp.Integer(m) ** (k - j)
+    V: sp.Set = sp.EmptySet
+    unused = []
+    for eps, T in enumerate(transition_matrices(c, arity=m)):
+        cp = sp.factor_list(sp.expand(T.charpoly(lam).as_expr()), lam)
+        for f, _mult in cp[1]:
+            poly = sp.Poly(f, lam)
+            if poly.degree() != 1:
+                if poly.degree() > 1:
+                    unused.append((eps, f))
+                continue
+            A, B = poly.all_coeffs()
+            r = sp.cancel(-B / A)
+            if r.free_symbols - {p}:
+                unused.append((eps, f))
+                continue
+            for ineq in (r >= theta, r <= -theta):
+                V = V.union(sp.solveset(ineq, p, domain=sp.S.Reals))
+    return V, unused
+
+
+def _norm_below_at(a, m, j, p, x, L_max):
+    """The smallest L <= L_max with ``||(1/m S_{a_{j+1}})^L|| < 1`` exactly at the algebraic point x."""
+    from ..algebra.algebraic import RealAlgebraic
+    from ..stationary.normset import _norm_below_at_point, _residue_polys
+
+    X = RealAlgebraic.from_expr(x)
+    for L in range(1, min(L_max, 6) + 1):
+        _, by_res = _residue_polys(a, j + 1, L, "paper", p, m)
+        if _norm_below_at_point(by_res, X, 1):
+            return L
+    return None
+
+
+def _cover_undecided(a, m, j, p, undecided, S, L_max, points_only=False, strip_budget: int = 30_000):
+    """Shrink the undecided part with the exact parametric norm tests on each of its intervals, and the
+    strips they leave next to ends of eigenvalue type with the parametric invariant polytope
+    (:func:`analysis.regularity.strips.close_strip`, ``strip_budget`` work units per interval)."""
+    from .interior import ck_interior
+
+    parts = undecided.args if isinstance(undecided, sp.Union) else (undecided,)
+    covered = []
+    for part in parts:
+        if isinstance(part, sp.FiniteSet):
+            for x in part:
+                L = _norm_below_at(a, m, j, p, x, L_max)
+                if L is not None:
+                    S = S.union(sp.FiniteSet(x))
+                    covered.append({"point": sp.sstr(x), "L": L})
+                    continue
+                v = smoothness(a.subs({p: x}), j, budget=10_000, arity=m)   # certified verdict there
+                if v.value is True and v.status == CERTIFIED:
+                    S = S.union(sp.FiniteSet(x))
+                    covered.append({"point": sp.sstr(x), "verdict": v.witness.get("reason")})
+            continue
+        if points_only or not isinstance(part, sp.Interval) or not (part.start.is_finite and part.end.is_finite):
+            continue
+        r = ck_interior(a, j, part.start, part.end, p, arity=m, L_max=L_max,
+                        budget=30_000 + max(0, strip_budget - 30_000), strip_budget=strip_budget)
+        C = r.value["certified"].to_sympy()
+        polytopes = [{"from": x["from"], "to": x["to"], "kind": x["kind"], **x["polytope"]}
+                     for x in r.witness["pieces"] if "polytope" in x]
+        if C != sp.EmptySet:
+            S = S.union(C)
+            covered.append({"interval": str(part), "certified": str(r.value["certified"]),
+                            "pieces": len(r.witness["pieces"]), **({"polytope": polytopes} if polytopes else {})})
+        if r.provenance.get("strips not closed by the invariant polytope"):
+            covered.append({"interval": str(part), "strips not closed by the invariant polytope":
+                            r.provenance["strips not closed by the invariant polytope"]})
+    return S, covered
+
+
+def ck_range(a: LaurentSymbol, j: int, param=None, *, arity: int = 2, Ls: Sequence = (1, 2, 3),
+             within=(-sp.oo, sp.oo), interior_L_max: int = 8, strip_budget: int = 30_000) -> Result:
+    """Where is the one-parameter family of arity ``m`` ``C^j``?  Both sides certified where possible.
+
+    Unlike :func:`ck_parameter_set` (sampling and bisection, the binary ``subdiv range``), the sets
+    here are exact unions of intervals, for any arity (the ``range`` command for ``m > 2``):
+
+    * **C^j** (sufficient): the union over ``L in Ls`` of the exact sets where the m-ary Dyn–Levin test
+      ``||(1/m S_{a_{j+1}})^L||_inf < 1`` holds (:func:`analysis.stationary.normset.norm_solution_set`).
+    * **not C^j** (necessary): the exact set where a single transition matrix ``T_eps(c(p))``,
+      ``c = m^k a/q_m^(k+1)``, has a real eigenvalue of modulus ``>= m^(k-j)`` (then ``alpha <= j``).
+
+    ``value`` is the C^j set (a sympy set); ``witness["not_Cj"]`` the proven complement part,
+    ``witness["undecided"]`` what neither covers inside ``within`` (empty: the range is exact, certified
+    on both sides; otherwise points there can be decided one by one with :func:`smoothness`).
+    What the norm sets leave undecided is first covered, where possible, by the exact parametric
+    norm tests with L <= ``interior_L_max`` (:func:`analysis.regularity.interior.ck_interior`;
+    ``witness["interior_tests"]``; 0 turns this off), and the strips they leave next to ends of
+    eigenvalue type by the parametric invariant polytope (:func:`analysis.regularity.strips.close_strip`,
+    ``strip_budget`` work units per interval; ``interior_tests[...]["polytope"]``, or why a strip was not closed).
+    Uses the generic ``k`` (``N - 1`` identically in the parameter).
+    """
+
+    m = check_arity(arity)
+    p = _parameter(a, param)
+    k = smoothing_factor(a, exceptional=False, arity=m).value - 1
+    if j > k:
+        raise AnalysisError(f"the family has only {k + 1} factors q_{m} identically: C^{j} needs {j + 1}")
+    lo, hi = (as_expr(w) for w in within)
+    box = sp.Interval(lo, hi, left_open=True, right_open=True)
+    S: sp.Set = sp.EmptySet
+    per_L = {}
+    for L in Ls:
+        r = norm_solution_set(a, j + 1, L, p, within=(lo, hi), arity=m)
+        per_L[L] = str(r.value)
+        S = S.union(r.value.to_sympy())
+    V, unused = _violation_set(a, m, j, p, k)
+    V = V.intersect(box)
+    undecided = box - S.union(V)
+    covered = []
+    if interior_L_max and undecided != sp.EmptySet:
+        S, covered = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, strip_budget=strip_budget)
+        undecided = box - S.union(V)
+        if undecided != sp.EmptySet:     # isolated points left (e.g. closed ends of the intervals)
+            S, more = _cover_undecided(a, m, j, p, undecided, S, interior_L_max, points_only=True)
+            covered += more
+            undecided = box - S.union(V)
+    exact = undecided.is_empty is True or undecided == sp.EmptySet
+    return Result(value=S, status=CERTIFIED if exact else INCONCLUSIVE,
+                  witness={"parameter": p.name, "j": j, "k": k, "arity": m, "not_Cj": V, "undecided": undecided,
+                           "norm_sets": per_L, "nonlinear_factors": unused,
+                           "exact": exact, "interior_tests": covered},
+                  provenance={"method": "m-ary Dyn-Levin norm sets (C^j) and exact real eigenvalues of the "
+                                        "transition matrices (not C^j)", "arity": m})
+
+
 def alpha_curve(a: LaurentSymbol, param=None, *, within=(-1, 1), samples: int = 24,
-                budget: int = 10_000) -> Result:
-    """Certified enclosures of alpha(p) at ``samples + 1`` rational points (for a figure); ``budget``
-    in work units per point (:func:`~analysis.regularity.holder.holder_exponent`)."""
-    p = _single_parameter(a, param)
+                budget: int = 10_000, arity: int = 2) -> Result:
+    """Certified enclosures of alpha(p) at ``samples + 1`` equally spaced rational points of ``within``
+    (ends included; for a figure and the smoothness profile); ``budget`` in work units per point
+    (:func:`~analysis.regularity.holder.holder_exponent`, arity ``m``). A point where the exponent cannot
+    be enclosed (e.g. not convergent) is an inconclusive row with a note.
+
+    >>> import sympy as sp
+    >>> t = sp.Symbol("t")
+    >>> fam = LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)") * (1 - t) + LaurentSymbol.from_expr(
+    ...     "(1+z+z**2)**3/(9*z**3)") * t                           # cubic to quadratic ternary B-spline
+    >>> [(r["p"], r["lower"]) for r in alpha_curve(fam, within=(0, 1), samples=1, arity=3).value]
+    [(0, 3), (1, 2)]
+    """
+    m = check_arity(arity)
+    p = _single_parameter(a, param) if m == 2 else _parameter(a, param)
     lo, hi = (sp.Rational(sp.nsimplify(as_expr(w))) for w in within)
     rows = []
     for i in range(samples + 1):
         q = lo + (hi - lo) * sp.Rational(i, samples)
         try:
-            h = holder_exponent(a.subs({p: q}), budget=budget)
+            h = holder_exponent(a.subs({p: q}), budget=budget, arity=m)
             rows.append({"p": q, "lower": h.lower, "upper": h.upper, "status": h.status})
         except AnalysisError as exc:
             rows.append({"p": q, "lower": None, "upper": None, "status": INCONCLUSIVE, "note": str(exc)})
     status = CERTIFIED if all(r["status"] == CERTIFIED for r in rows) else INCONCLUSIVE
-    return Result(value=rows, status=status, witness={"parameter": p.name},
-                  provenance={"method": "holder_exponent at rational sample points"})
+    return Result(value=rows, status=status, witness={"parameter": p.name, **arity_key(m)},
+                  provenance={"method": "holder_exponent at rational sample points" if m == 2 else
+                              f"holder_exponent (arity {m}) at rational sample points", **arity_key(m)})
 
 
 # --------------------------------------------------------------------------------------------

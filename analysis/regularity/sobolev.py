@@ -12,6 +12,9 @@ Examples
 (1/2, 'certified', False)
 >>> sobolev_exponent(LaurentSymbol.from_mask(["1/2", 1, "1/2"], start=-1)).value   # hat function
 3/2
+>>> r = sobolev_exponent(LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)"), arity=3)   # ternary cubic B-spline
+>>> r.value, r.status, r.witness["minimal_polynomial_root"]
+(7/2, 'certified', 1/2187)
 
 Algorithm
 ---------
@@ -47,6 +50,17 @@ closed form, so ``limsup |s_n|^{1/n}`` is the largest modulus). The roots are is
 field); ``lambda = 2^-k`` is recognised exactly (``mu(+-2^-k) = 0`` and every other root ball
 below it), giving ``s_2 = k/2`` exactly. The logarithm is enclosed with outward rounding.
 
+*Arity m > 2* (``sobolev_exponent(a, arity=m)``; :func:`_autocorrelation_route`). With ``P = a a*/m`` and
+``(T h)_i = sum_j P_{m i - j} h_j`` the same periodisation holds with ``m^-n``. No stability is needed:
+with ``h = (2 - z - 1/z)^(N+1)`` alone ``lambda < 1`` certifies ``phi in L2``; the weight is then the
+autocorrelation symbol ``w_a`` (:func:`autocorrelation_symbol`, the eigenvector of ``T`` for the eigenvalue 1
+when that eigenspace is one-dimensional), else ``q q*`` from the stability reduction
+(:func:`analysis.regularity.stability.stable_shifts`). With ``h = (2 - z - 1/z)^r w`` and ``lambda`` as above,
+``s_2 = -(1/2) log_m lambda`` when ``m^(-2r) < lambda < 1``; ``lambda = m^-k`` gives ``s_2 = k/2`` (the m-ary
+B-spline of degree ``d`` has ``s_2 = d + 1/2``). At ``m = 2`` this route is independent of the binary one
+(which always uses the stability reduction, and whose witness the binary reports record); the tests check
+that they agree on random masks.
+
 *Ball masks (Daubechies D6 ... known by Arb enclosures).* The exact sequence is not available.
 Stability is certified by root isolation (:func:`analysis.regularity.stability.stable_shifts`) and then the
 stable-case formula ``s_2 = N - (1/2) log2 rho(T_Q)`` is used (Villemoes, Eirola):
@@ -69,6 +83,7 @@ A. Ron, Z. Shen, *The Sobolev regularity of refinable functions*, J. Approx. The
 
 from __future__ import annotations
 
+import math
 import time as _time
 from fractions import Fraction
 from typing import Any
@@ -89,17 +104,22 @@ def _coeffs(s: LaurentSymbol, K) -> dict[int, Any]:
     return {i: K.from_sympy(c) for i, c in s.items() if c != 0}
 
 
-def transfer_sequence(P: dict, h: dict, K, terms: int) -> list:
-    """``[(T^n h)_0 for n < terms]`` exactly over the domain ``K``; ``P``, ``h`` dicts index -> K."""
+def transfer_sequence(P: dict, h: dict, K, terms: int, m: int = 2) -> list:
+    """``[(T^n h)_0 for n < terms]`` exactly over the domain ``K``, ``(T h)_i = sum_j P_{m i - j} h_j``;
+    ``P``, ``h`` dicts index -> K.
+
+    >>> transfer_sequence({-1: sp.QQ(1, 2), 0: sp.QQ(1), 1: sp.QQ(1, 2)}, {0: sp.QQ(1)}, sp.QQ, 3, 3)
+    [1, 1, 1]
+    """
     out = []
     cur = dict(h)
     for _ in range(terms):
         out.append(cur.get(0, K.zero))
         new: dict[int, Any] = {}
         for j, hj in cur.items():
-            for k, pk in P.items():          # i with 2i - j = k
-                if (k + j) % 2 == 0:
-                    i = (k + j) // 2
+            for k, pk in P.items():          # i with m i - j = k
+                if (k + j) % m == 0:
+                    i = (k + j) // m
                     new[i] = new.get(i, K.zero) + pk * hj
         cur = {i: v for i, v in new.items() if v != K.zero}
     return out
@@ -164,9 +184,9 @@ def _fr(x) -> Fraction:
     return x if isinstance(x, Fraction) else Fraction(int(x.p), int(x.q))
 
 
-def _max_modulus(mu: sp.Poly):
+def _max_modulus(mu: sp.Poly, m: int = 2):
     """``(lo, hi, exact, how)``: rational bounds of the largest root modulus of ``mu``; ``exact`` is
-    the exponent ``k`` when the largest modulus is exactly ``2^-k`` (else None)."""
+    the exponent ``k`` when the largest modulus is exactly ``m^-k`` (else None)."""
     import flint
 
     from ..jsr._exact import arb_to_fraction_bounds
@@ -181,8 +201,8 @@ def _max_modulus(mu: sp.Poly):
         import math
 
         mid = (lo + hi) / 2
-        k = -round(math.log2(float(mid)))
-        cand = sp.Rational(1, 2 ** k) if k >= 0 else sp.Integer(2) ** (-k)
+        k = -round(math.log2(float(mid)) if m == 2 else math.log(float(mid), m))
+        cand = sp.Rational(1, m ** k) if k >= 0 else sp.Integer(m) ** (-k)
         with flint.ctx.workprec(256):
             cb = flint.arb(flint.fmpq(int(cand.p), int(cand.q)))
             ok = True
@@ -206,9 +226,9 @@ def _max_modulus(mu: sp.Poly):
 
 
 def _log2_bounds(lo: Fraction, hi: Fraction):
-    from .convergence import log2_interval
+    from .convergence import log_interval
 
-    return log2_interval(sp.Rational(lo.numerator, lo.denominator), sp.Rational(hi.numerator, hi.denominator))
+    return log_interval(sp.Rational(lo.numerator, lo.denominator), sp.Rational(hi.numerator, hi.denominator))
 
 
 # --------------------------------------------------------------------------------------------
@@ -282,6 +302,145 @@ def _finish(lo: Fraction, hi: Fraction, k_exact, witness, prov, *, offset: int) 
 
 
 # --------------------------------------------------------------------------------------------
+# any arity: the autocorrelation-weighted route
+# --------------------------------------------------------------------------------------------
+
+def _lambda(Pd: dict, h: LaurentSymbol, K, L: int, m: int):
+    """``(lo, hi, k_exact, mu, D, terms, how)`` for ``lambda = limsup ((T^n h)_0)^(1/n)``, exactly."""
+    hd = _coeffs(h, K)
+    D = 2 * max(max(abs(i) for i in hd), L) + 1
+    seq = transfer_sequence(Pd, hd, K, 2 * D + 2, m)
+    C = berlekamp_massey(seq, K)
+    mu = sp.Poly.from_list([K.to_sympy(c) for c in C], sp.Symbol("x"), domain=K)
+    if mu.degree() <= 0:
+        return Fraction(0), Fraction(0), None, mu, D, len(seq), "the sequence vanishes"
+    lo, hi, k_exact, how = _max_modulus(mu, m)
+    return lo, hi, k_exact, mu, D, len(seq), how
+
+
+def autocorrelation_symbol(a: LaurentSymbol, m: int):
+    """``(w, dim)``: the eigenvector ``w`` of the m-ary transfer operator ``T`` (``P = a a*/m``) for the eigenvalue 1
+    on Laurent polynomials supported in ``[-L, L]`` (``L`` the length of the mask), normalised to ``w(1) = 1``, when
+    that eigenspace has dimension ``dim = 1``; else ``(None, dim)``.
+
+    If ``phi_a`` is in ``L2`` and ``a`` satisfies the m-ary sum rules, ``w`` is its autocorrelation symbol
+    ``w_a(xi) = sum_k |phi^(xi + 2 pi k)|^2 = sum_k (int phi phi(. - k)) e^{-i k xi}`` (``T w_a = w_a``, support
+    inside ``[-L/(m-1), L/(m-1)]``, ``w_a(1) = 1``).
+
+    >>> w, dim = autocorrelation_symbol(LaurentSymbol.from_expr("(1+z+z**2)**2/(3*z**2)"), 3)   # hat function
+    >>> w.mask, dim
+    ((1/6, 2/3, 1/6), 1)
+    """
+    from sympy.polys.matrices import DomainMatrix
+
+    dom = a.domain if not a.domain.is_ZZ else sp.QQ
+    P = a * a.reversed() / m
+    L = P.end
+    idx = range(-L, L + 1)
+    rows = [[dom.from_sympy(P.coeff(m * i - j)) - (dom.one if i == j else dom.zero) for j in idx] for i in idx]
+    ns = DomainMatrix(rows, (len(idx), len(idx)), dom).nullspace()
+    dim = ns.shape[0]
+    if dim != 1:
+        return None, dim
+    v = ns.to_list()[0]
+    total = sum(v, dom.zero)
+    if total == dom.zero:
+        return None, dim
+    return LaurentSymbol.from_mask([dom.to_sympy(dom.quo(x, total)) for x in v], start=-L), dim
+
+
+def _autocorrelation_route(a: LaurentSymbol, m: int, *, max_extra_r: int = 4) -> Result:
+    """The L2-Sobolev exponent ``s_2`` of the refinable function ``phi_a`` of arity ``m``, certified or
+    inconclusive, weighted by the autocorrelation symbol (module docstring, "Arity m > 2").
+
+    ``a``: a numeric :class:`~analysis.algebra.symbol.LaurentSymbol` (rational or real algebraic) with
+    ``a(1) = m`` (else :class:`AnalysisError`). Returns a :class:`Result`: ``value`` (exact ``k/2`` when
+    ``lambda = m^-k``), ``lower``/``upper`` (rational, outward rounded), the witness (``weight`` ``w``,
+    ``r``, the minimal polynomial, ``lambda`` bounds) and provenance.
+
+    >>> _autocorrelation_route(LaurentSymbol.from_mask(["1/2", 1, "1/2"], start=-1), 2).value   # hat function
+    3/2
+    """
+    from ..algebra.factorization import check_arity, smoothing_factor
+    from .convergence import log_interval
+
+    m = check_arity(m)
+    if not isinstance(a, LaurentSymbol):
+        raise AnalysisError(f"the {m}-ary Sobolev exponent needs an exact symbol, not {type(a).__name__}")
+    a.require_numeric("a Sobolev exponent")
+    dom = a.domain
+    if not (dom.is_QQ or dom.is_ZZ or dom.is_AlgebraicField):
+        raise AnalysisError(f"the Sobolev exponent needs rational or algebraic coefficients, not {dom}")
+    if sp.simplify(a(1) - m) != 0:
+        raise AnalysisError(f"the {m}-ary Sobolev exponent needs the normalisation a(1) = {m} "
+                            f"(here a(1) = {sp.sstr(a(1))})")
+    t0 = _time.perf_counter()
+    N = smoothing_factor(a, arity=m).value
+    method = (f"exact {m}-ary transfer-operator sequence s_n = (T^n h)_0, (T h)_i = sum_j P_(m i - j) h_j, "
+              f"P = a a*/{m}, h = (2-z-1/z)^r w; Berlekamp-Massey; s_2 = -(1/2) log_{m} lambda")
+    witness: dict[str, Any] = {"N": N, "arity": m, "method": method}
+    prov = {"method": method, "arity": m}
+
+    def inconclusive(reason, **extra):
+        witness.update(extra, reason=reason)
+        prov["timing"] = {"seconds": round(_time.perf_counter() - t0, 4)}
+        return Result(value=None, status=INCONCLUSIVE, witness=witness, provenance=prov)
+
+    K = dom if not dom.is_ZZ else sp.QQ
+    Pd = _coeffs(a * a.reversed() / m, K)
+    L = max(abs(i) for i in Pd)
+    diff = LaurentSymbol.from_mask([-1, 2, -1], start=-1)
+    # route 1: phi in L2 (h = (2-z-1/z)^r alone bounds the band energies, no stability needed), then the
+    # autocorrelation symbol w_a (T w_a = w_a) as the weight
+    lo1, hi1, _k1, _mu1, _, _, _ = _lambda(Pd, diff ** (N + 1), K, L, m)
+    witness["lambda_L2_upper"] = hi1
+    w = None
+    if not hi1 < 1:
+        why = (f"phi is not certified to be in L2 (lambda for h = (2-z-1/z)^{N + 1} is only bounded by "
+               f"{float(hi1):.6g}, not < 1)")
+    else:
+        w, dim = autocorrelation_symbol(a, m)
+        why = f"the eigenvalue 1 of T has multiplicity {dim} (the autocorrelation symbol is not determined)"
+    if w is not None:
+        witness["weight"] = "autocorrelation symbol w_a (eigenvalue 1 of T simple)"
+    else:
+        # route 2: the stability reduction phi_a = q(tau) phi_b/q(1), weight q q*
+        stab = stable_shifts(a, arity=m)
+        witness["stable_shifts"] = stab
+        if stab.value is None or stab.witness.get("q") is None:
+            return inconclusive(f"{why}, and the stability reduction is incomplete: {stab.witness['reason']}")
+        q = stab.witness["q"]
+        w = q * q.reversed()
+        witness["weight"] = "q q* with phi_a = q(tau) phi_b/q(1), phi_b stable"
+    witness["w"] = w
+    r = N + 1
+    while True:
+        lo, hi, k_exact, mu, D, terms, how = _lambda(Pd, diff ** r * w, K, L, m)
+        threshold = Fraction(1, m ** (2 * r))
+        if lo > threshold or r >= N + 1 + max_extra_r:
+            break
+        r += 1
+    witness.update({"r": r, "recurrence_order": mu.degree(), "krylov_bound": D, "terms": terms,
+                    "minimal_polynomial": mu.as_expr(), "lambda_lower": lo, "lambda_upper": hi, "roots": how,
+                    "minimal_polynomial_root": sp.Rational(lo.numerator, lo.denominator) if k_exact is not None
+                    else None})
+    if not lo > threshold:
+        return inconclusive(f"lambda is not certified above {m}^(-2r) for r <= {r}: increase r")
+    if not hi < 1:
+        return inconclusive(f"lambda >= 1 is possible (lambda <= {float(hi):.6g}): phi may not be in L2")
+    if k_exact is not None:
+        value = lower = upper = sp.Rational(k_exact, 2)
+    else:
+        value = None
+        llo, lhi = log_interval(sp.Rational(lo.numerator, lo.denominator),
+                                  sp.Rational(hi.numerator, hi.denominator), m)
+        lower, upper = -lhi / 2, -llo / 2
+    prov.update({"arithmetic": f"exact over {K}, Arb root isolation",
+                 "timing": {"seconds": round(_time.perf_counter() - t0, 4)}})
+    return Result(value=value, lower=lower, upper=upper, status=CERTIFIED, witness=witness, provenance=prov)
+
+
+# --------------------------------------------------------------------------------------------
 # the ball route (stable case formula)
 # --------------------------------------------------------------------------------------------
 
@@ -342,8 +501,10 @@ def _ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None =
 # public entry point
 # --------------------------------------------------------------------------------------------
 
-def sobolev_exponent(a: Any, *, sum_rules: int | None = None, prec: int | None = None) -> Result:
+def sobolev_exponent(a: Any, *, arity: int = 2, sum_rules: int | None = None, prec: int | None = None) -> Result:
     """The L2-Sobolev exponent ``s_2`` of the basic limit function ``phi_a``, certified.
+
+    ``arity`` ``m > 2``: an exact symbol with ``a(1) = m``, :func:`_autocorrelation_route`.
 
     ``a``: a :class:`~analysis.algebra.symbol.LaurentSymbol` (rational or real algebraic coefficients;
     exact route), a catalogue entry known by Arb balls (``enclosure(prec)``, ``sum_rules``), or a
@@ -355,6 +516,8 @@ def sobolev_exponent(a: Any, *, sum_rules: int | None = None, prec: int | None =
     "q": q, "method": ..., ...}``. :class:`AnalysisError` when ``a(1) != 2``.
     See the module docstring for the algorithm and references.
     """
+    if arity != 2:
+        return _autocorrelation_route(a, arity)
     if isinstance(a, LaurentSymbol):
         a.require_numeric("a Sobolev exponent")
         dom = a.domain

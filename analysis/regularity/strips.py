@@ -6,10 +6,10 @@ spectral radius). :func:`close_strip` certifies ``JSR(t) = rho(Pi(t))^(1/p) < 1`
 ``[u, t*)`` instead, with a Guglielmi–Protasov invariant polytope whose vertices move with ``t``.
 
 Arity ``m >= 2`` (normalisation). ``a_{j+1} = (m z^{m-1}/q_m)^{j+1} a`` is the m-ary difference symbol
-(:func:`analysis.stationary.mary.difference_symbol_mary`; ``q_m = 1 + ... + z^{m-1}``), so
+(:func:`analysis.stationary.difference.difference_symbol`; ``q_m = 1 + ... + z^{m-1}``), so
 ``c = (1/m) a_{j+1} = z^{(m-1)(j+1)} m^j a / q_m^{j+1}``: a shift of the mask whose joint spectral radius
-gives ``alpha = j - log_m rho(c)`` (:mod:`analysis.regularity.mary`). ``JSR(T_0, ..., T_{m-1}) < 1`` of its
-``m`` transition matrices (:func:`analysis.stationary.mary.transition_matrices_mary`, which are
+gives ``alpha = j - log_m rho(c)`` (:func:`analysis.regularity.holder.holder_exponent`). ``JSR(T_0, ..., T_{m-1}) < 1`` of its
+``m`` transition matrices (:func:`analysis.stationary.transition.transition_matrices`, which are
 :func:`analysis.stationary.transition.transition_matrices` for ``m = 2``) is therefore ``alpha > j``:
 ``C^j``, the condition of the m-ary Dyn–Levin test ``||(1/m S_{a_{j+1}})^L|| < 1`` with the norm replaced
 by the extremal one. Words are over ``{0, ..., m-1}``; the flip of a symmetric family maps the letter
@@ -35,11 +35,11 @@ False
 Ternary: the interpolatory 4-point family with tension ``mu`` (catalogue ``ternary-four-point``) is C^1
 up to ``mu = -1/5``, where ``T_1`` of ``(1/3) a_2`` has the eigenvalue ``1/2 - 5 mu/2 = 1``:
 
->>> from analysis.stationary.mary import difference_symbol_mary
+>>> from analysis.stationary.difference import difference_symbol
 >>> mu = sp.Symbol("mu")
 >>> a0, a1, a2, a3 = -sp.Rational(1, 18) - mu/6, sp.Rational(13, 18) + mu/2, sp.Rational(7, 18) - mu/2, -sp.Rational(1, 18) + mu/6
 >>> t4 = LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
->>> r = close_strip(difference_symbol_mary(t4, 2, 3), mu, sp.Rational(-1, 5), sp.Rational(-11455, 65536), lo_open=True, arity=3)
+>>> r = close_strip(difference_symbol(t4, 2, arity=3), mu, sp.Rational(-1, 5), sp.Rational(-11455, 65536), lo_open=True, arity=3)
 >>> r["closed"], r["word"], r["mu"], r["pieces"][0]["from"]
 (True, (1,), '1/3', '-1/5')
 
@@ -105,8 +105,8 @@ from ..algebra.algebraic import RealAlgebraic
 from ..algebra.symbol import LaurentSymbol
 from ..jsr._polytope import build_polytope
 from ..jsr._work import Work
-from ..algebra.mary import check_arity
-from ..stationary.mary import transition_matrices_mary
+from ..algebra.factorization import check_arity
+from ..stationary.transition import transition_matrices
 from ..algebra.reader import as_expr
 
 PREC = 128
@@ -151,7 +151,7 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol, arity: int = 2):
     (or None).
 
     The family is block triangular with the 1x1 blocks ``mus``, so ``JSR(T) = max(JSR(R), |mus|)``."""
-    T = [sp.Matrix(M) for M in transition_matrices_mary(c, arity)]      # m = 2: transition_matrices(c)
+    T = [sp.Matrix(M) for M in transition_matrices(c, arity=arity)]      # m = 2: transition_matrices(c)
     n0 = T[0].rows
     R, mus = list(T), []
     E_tot, P_tot = sp.eye(n0), sp.eye(n0)     # x_full = E_tot y, y = P_tot x_full on the subspace
@@ -547,7 +547,7 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     """Certify ``JSR((1/m) T(a_{j+1}))(t) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
     where the spectral radius reaches 1). ``am`` is the difference symbol ``a_{j+1}`` of arity ``m``
     (:func:`analysis.stationary.difference.difference_symbol` for ``m = 2``,
-    :func:`analysis.stationary.mary.difference_symbol_mary`), ``T`` its ``m`` transition matrices.
+    :func:`analysis.stationary.difference.difference_symbol`), ``T`` its ``m`` transition matrices.
 
     ``budget``: work units (counted, never timed; about a millisecond of CPU each on the reference
     machine) for the float polytope at the end (:func:`~analysis.jsr._polytope.build_polytope`'s units)

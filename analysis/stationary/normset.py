@@ -46,7 +46,6 @@ import sympy as sp
 
 from ..algebra.algebraic import IntervalSet, RealAlgebraic, rational_between as _sample_between
 from .difference import difference_symbol, iterated_symbol
-from .mary import difference_symbol_mary, iterated_symbol_mary
 from ..result import CERTIFIED, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 from ..algebra.reader import as_expr
@@ -90,18 +89,12 @@ def _parameter(a: LaurentSymbol, param) -> sp.Symbol:
 
 
 def _residue_polys(a: LaurentSymbol, m: int, L: int, spelling: str, p: sp.Symbol, arity: int = 2):
-    if arity == 2:
-        am = difference_symbol(a, m, spelling=spelling)
-    else:
-        am = difference_symbol_mary(a, m, arity, spelling=spelling)
+    am = difference_symbol(a, m, spelling=spelling, arity=arity)
     if not am.domain.is_PolynomialRing or not am.domain.domain.is_QQ:
         raise AnalysisError(
             f"a parameter range needs coefficients that are polynomials in {p.name} over the rationals "
             f"(this symbol's domain is {am.domain})")
-    if arity == 2:
-        prod = iterated_symbol(am, L)
-    else:
-        prod = iterated_symbol_mary(am, L, arity)
+    prod = iterated_symbol(am, L, arity=arity)
     scale = sp.Rational(1, arity ** L)
     mod = arity ** L
     by_res: dict[int, list[sp.Poly]] = {}
@@ -202,7 +195,7 @@ def norm_solution_set(a: LaurentSymbol, m: int, L: int, param=None, *, spelling:
     The set is open (the norm is continuous). ``witness["pieces"]`` is the piecewise norm;
     ``witness["implies"]`` says which smoothness the Dyn–Levin test gives on the set (C^{m-1}).
     ``arity`` (default 2): the m-ary test ``||(1/arity S_{a_m})^L||_inf < bound`` with the m-ary
-    difference symbol of :mod:`analysis.stationary.mary` (issue 12).
+    difference symbol of :func:`analysis.stationary.difference.difference_symbol`.
     """
     bound = sp.Rational(bound)
     fn = norm_function(a, m, L, param, spelling=spelling, within=within, arity=arity)

@@ -445,8 +445,8 @@ def _step(data: np.ndarray, st: _Stencils, closed: bool, end_rule: EndRule, exac
 
 def refine(a: LaurentSymbol, points, steps: int = 1, *, closed: bool = True,
            end_rule: EndRule = "interior", exact: bool = False,
-           params: Mapping | None = None) -> np.ndarray:
-    """Apply ``steps`` steps of the binary scheme ``S_a`` to a polygon in ``R^d``.
+           params: Mapping | None = None, arity: int = 2) -> np.ndarray:
+    """Apply ``steps`` steps of the scheme ``S_a`` of arity ``m`` (default 2) to a polygon in ``R^d``.
 
     Parameters
     ----------
@@ -464,7 +464,10 @@ def refine(a: LaurentSymbol, points, steps: int = 1, *, closed: bool = True,
     exact : bool
         Exact rational arithmetic (rational mask required); the result holds ``Fraction``.
     params : mapping, optional
-        Values for the mask's free parameters, e.g. ``{"omega": "1/16"}``.
+        Values for the mask's free parameters, e.g. ``{"omega": "1/16"}`` (arity 2).
+    arity : int
+        The dilation ``m``: ``f_i <- sum_j a_{i-mj} f_j``. For ``m > 2`` see :func:`_refine_dilated`
+        (a direct loop; the points are returned as rows of an array, exact values as sympy rationals).
 
     Returns
     -------
@@ -512,6 +515,8 @@ def refine(a: LaurentSymbol, points, steps: int = 1, *, closed: bool = True,
     ----------
     N. Dyn, D. Levin, Acta Numerica 11 (2002) 73-144, Sect. 2; seed paper 004, Sect. 3.7.
     """
+    if arity != 2:
+        return _refine_dilated(a, points, arity, steps, closed=closed, exact=exact, end_rule=end_rule)
     a = _check_symbol(a, params, "refinement")
     _check_end_rule(end_rule)
     if isinstance(steps, bool) or not isinstance(steps, Integral) or steps < 0:
@@ -523,6 +528,92 @@ def refine(a: LaurentSymbol, points, steps: int = 1, *, closed: bool = True,
     if steps == 0:
         data = data.copy()
     return _finish(data, exact, was_1d)
+
+
+def _refine_dilated(a: LaurentSymbol, points, m: int, steps: int = 1, *, closed: bool = True,
+                    exact: bool = False, end_rule: str = "interior") -> np.ndarray:
+    """``steps`` rounds of ``f_i <- sum_j a_{i-mj} f_j`` for arity ``m > 2`` (rows = points, any dimension).
+
+    Kept beside the vectorised binary step (:func:`refine`) because its results differ in form (a 2-D
+    array always, exact values as sympy rationals), which the m-ary command and reports print.
+
+    Closed polygons are periodic (``n`` points -> ``m n`` points per round, new point ``i`` attached to
+    index ``i`` of the refined periodic sequence). Open polygons, both end rules of :func:`refine` with
+    dilation ``m``:
+
+    * ``end_rule="interior"`` keeps only the new points that depend on old points alone:
+      ``f^{n+1}_i`` for ``e - m + 1 <= i <= m n + s - 1`` (``[s, e]`` the support of the mask);
+    * ``end_rule="extrapolate"`` extends the data by ghost points reflected through the end points,
+      ``P_{-k} = 2 P_0 - P_k`` and ``P_{n-1+k} = 2 P_{n-1} - P_{n-1-k}`` (:func:`point_reflection`), and
+      keeps the new points whose stencil centre lies in the data's index range: with ``c = (s + e)/2``,
+      new point ``i`` is centred at old index ``(i - c)/m`` (data at ``x_j = (j + p) h``, new points at
+      ``(i + p) h/m``, ``p = c/(m-1)``: the parametrisation in which the symmetric mask is centred), so
+      ``i = ceil(c) .. m (n-1) + floor(c)``. For ``m = 2`` these are the binary ranges; primal schemes
+      (``c = 0``) map ``n`` points to ``m (n-1) + 1`` and keep the end points when ``sum_j a_{mj} = 1`` and
+      the mask is symmetric (reflected data are odd-symmetric about them), so linear data stay linear.
+
+    >>> tri = LaurentSymbol.from_expr("(1+z+z**2)**2/(3*z**2)")          # ternary linear B-spline
+    >>> refine(tri, [[0.0], [3.0]], closed=False, arity=3).ravel().tolist()
+    [0.0, 1.0, 2.0, 3.0]
+    >>> q = LaurentSymbol.from_expr("(1+z+z**2)**3/(9*z**3)")            # ternary quadratic B-spline
+    >>> refine(q, [[0], [9], [18]], closed=False, exact=True, end_rule="extrapolate", arity=3).ravel().tolist()
+    [0, 3, 6, 9, 12, 15, 18]
+    """
+    from ..algebra.factorization import check_arity
+
+    m = check_arity(m)
+    a.require_numeric("refinement")
+    if not isinstance(steps, int) or steps < 0:
+        raise AnalysisError(f"steps must be a non-negative integer, not {steps!r}")
+    if end_rule not in ("interior", "extrapolate"):
+        raise AnalysisError(f"unknown end_rule {end_rule!r}; use 'interior' or 'extrapolate'")
+    data = np.array(points, dtype=object if exact else float)
+    if data.ndim == 1:
+        data = data[:, None]
+    if exact:
+        data = np.vectorize(lambda x: sp.Rational(x))(data).astype(object)
+    coeffs = {i: (sp.Rational(c) if exact else float(c)) for i, c in a.items()}
+    s, e = a.start, a.end
+    for _ in range(steps):
+        n = data.shape[0]
+        if n == 0:
+            raise AnalysisError("the polygon has no points")
+        if closed:
+            lo, hi, src, off = 0, m * n - 1, None, 0
+        elif end_rule == "interior":
+            lo, hi, src, off = e - m + 1, m * n + s - 1, data, 0
+            if hi < lo:
+                raise AnalysisError(f"an open polygon of {n} points is too short for a mask of support "
+                                    f"[{s}, {e}] (no new point depends on old points only); use more points, "
+                                    "fewer steps or --end-rule extrapolate")
+        else:
+            src, off, lo, hi = _extrapolated(data, s, e, m, n)
+        out = np.zeros((hi - lo + 1, data.shape[1]), dtype=data.dtype)
+        if exact:
+            out[:] = sp.Integer(0)
+        for i in range(lo, hi + 1):
+            for j in range(-((e - i) // m), (i - s) // m + 1):
+                x = data[j % n] if src is None else src[j + off]
+                out[i - lo] = out[i - lo] + coeffs.get(i - m * j, 0) * x
+        data = out
+    return data
+
+
+def _extrapolated(data: np.ndarray, s: int, e: int, m: int, n: int):
+    """``(extended data, index offset, first kept i, last kept i)`` of the ``"extrapolate"`` end rule."""
+    lo = -((-(s + e)) // 2)                      # ceil(c), c = (s + e)/2
+    hi = m * (n - 1) + (s + e) // 2              # m(n-1) + floor(c)
+    if hi < lo:
+        raise AnalysisError(f"an open polygon of {n} point(s) keeps no new point; give at least 2 points")
+    jmin, jmax = -((e - lo) // m), (hi - s) // m
+    left, right = max(0, -jmin), max(0, jmax - (n - 1))
+    parts = []
+    if left:
+        parts.append(point_reflection(data, "left", left))
+    parts.append(data)
+    if right:
+        parts.append(point_reflection(data, "right", right))
+    return np.concatenate(parts, axis=0), left, lo, hi
 
 
 # --------------------------------------------------------------------------------------------

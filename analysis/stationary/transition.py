@@ -1,9 +1,13 @@
 """Transition matrices, local subdivision matrices, their eigenvalues, and the support of the
-basic limit function.
+basic limit function, for any arity ``m`` (the keyword ``arity``, default 2).
 
 Convention (as everywhere in :mod:`analysis`)::
 
-    (S_a f)_i = sum_j a_{i-2j} f_j,        a(z) = sum_i a_i z^i.
+    (S_a f)_i = sum_j a_{i-mj} f_j,        a(z) = sum_i a_i z^i.
+
+The formulas below are written for ``m = 2``; for arity ``m`` read ``2`` as ``m``, the two transition
+matrices as ``T_0..T_{m-1}`` of size ``max(ceil(N/(m-1)), 1)``, ``(1+z)`` as ``q_m = 1 + ... + z^{m-1}``
+and the support of the basic limit function as the mask support divided by ``m - 1``.
 
 The basic limit function ``phi = lim S_a^n delta`` is then refinable with the *same* mask,
 ``phi(x) = sum_k a_k phi(2x - k)``, and the two objects of this module are:
@@ -51,6 +55,7 @@ from typing import Any, Sequence
 import sympy as sp
 from sympy.polys.matrices import DomainMatrix
 
+from ..algebra.factorization import arity_key, check_arity
 from ..result import CERTIFIED, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 
@@ -89,8 +94,10 @@ def _to_float(x: sp.Expr) -> float:
 # 1. transition matrices
 # --------------------------------------------------------------------------------------------
 
-def transition_matrices(c: LaurentSymbol, *, numeric: bool = False):
-    """The Daubechies–Lagarias transition matrices ``(T_0, T_1)`` of the mask ``c``.
+def transition_matrices(c: LaurentSymbol, *, numeric: bool = False, arity: int = 2):
+    """The Daubechies–Lagarias transition matrices ``(T_0, T_1)`` of the mask ``c`` (``T_0..T_{m-1}``
+    for arity ``m``: ``(T_eps)_{ij} = c_{m i - j + eps}``, ``i, j < max(ceil(N/(m-1)), 1)``; ``phi`` has
+    support ``[0, N/(m-1)]`` and ``v((x+eps)/m) = T_eps v(x)``).
 
     Convention: shift ``c`` so that its support is ``[0, N]`` (``c_0 != 0 != c_N``; the shift
     changes nothing below), then for ``eps in {0, 1}``::
@@ -139,6 +146,8 @@ def transition_matrices(c: LaurentSymbol, *, numeric: bool = False):
     >>> transition_matrices(c, numeric=True)[1]
     array([[ 2. , -0.5],
            [ 0. , -0.5]])
+    >>> [T.tolist() for T in transition_matrices(LaurentSymbol.from_mask([1, 2, 3]), arity=3)]
+    [[[1]], [[2]], [[3]]]
 
     Algorithm
     ---------
@@ -149,16 +158,17 @@ def transition_matrices(c: LaurentSymbol, *, numeric: bool = False):
     I. Daubechies, J. C. Lagarias, SIAM J. Math. Anal. 23 (1992) 1031-1079, Section 2;
     O. Rioul, SIAM J. Math. Anal. 23 (1992) 1544-1576.
     """
+    m = check_arity(arity)
     c = _check_symbol(c, "transition_matrices")
     mask = c.mask                      # c_0 .. c_N after the shift by -c.start
     n_coeff = len(mask)
     N = n_coeff - 1
-    size = max(N, 1)
+    size = max(-(-N // (m - 1)), 1)
 
     def entry(k: int) -> sp.Expr:
         return mask[k] if 0 <= k < n_coeff else sp.Integer(0)
 
-    mats = tuple(sp.Matrix(size, size, lambda i, j, eps=eps: entry(2 * i - j + eps)) for eps in (0, 1))
+    mats = tuple(sp.Matrix(size, size, lambda i, j, eps=eps: entry(m * i - j + eps)) for eps in range(m))
     if not numeric:
         return mats
     c.require_numeric("float transition matrices")
@@ -172,7 +182,7 @@ def transition_matrices(c: LaurentSymbol, *, numeric: bool = False):
 # 2. local subdivision matrix
 # --------------------------------------------------------------------------------------------
 
-def is_invariant_window(a: LaurentSymbol, window: tuple[int, int]) -> bool:
+def is_invariant_window(a: LaurentSymbol, window: tuple[int, int], *, arity: int = 2) -> bool:
     """Whether every new point ``f_i``, ``l <= i <= r``, depends only on old ``f_l..f_r``.
 
     A coefficient counts as present when it is not identically zero (generic parameters).
@@ -184,15 +194,16 @@ def is_invariant_window(a: LaurentSymbol, window: tuple[int, int]) -> bool:
     """
     l, r = window
     s, e = a.start, a.end
+    m = arity
     for i in range(l, r + 1):
-        # j with s <= i - 2j <= e
-        for j in range(-((e - i) // 2), (i - s) // 2 + 1):
-            if (j < l or j > r) and a.coeff(i - 2 * j) != 0:
+        # j with s <= i - mj <= e
+        for j in range(-((e - i) // m), (i - s) // m + 1):
+            if (j < l or j > r) and a.coeff(i - m * j) != 0:
                 return False
     return True
 
 
-def invariant_window(a: LaurentSymbol) -> tuple[int, int]:
+def invariant_window(a: LaurentSymbol, *, arity: int = 2) -> tuple[int, int]:
     """The smallest invariant window ``(l, r)`` of ``S_a``: ``(1 - e, -s - 1)`` for support ``[s, e]``.
 
     Derivation: ``f^{n+1}_i`` uses ``f^n_j`` for ``(i - e)/2 <= j <= (i - s)/2``. The window
@@ -213,15 +224,26 @@ def invariant_window(a: LaurentSymbol) -> tuple[int, int]:
     >>> from analysis.algebra.symbol import LaurentSymbol
     >>> invariant_window(LaurentSymbol.from_mask([1, 2, 1], start=-1))
     (0, 0)
+
+    Arity ``m``: ``l = ceil((m - e)/(m-1)) - 1``, ``r = floor((-s - m)/(m-1)) + 1`` (the same derivation
+    with ``(i - e)/m <= j <= (i - s)/m``; ``l > r`` only for masks with fewer than ``m + 1`` coefficients,
+    then the two are swapped).
+
+    >>> invariant_window(LaurentSymbol.from_expr("(1+z+z**2)**3/(9*z**3)"), arity=3)
+    (-1, 1)
     """
+    m = check_arity(arity)
     a = _check_symbol(a, "invariant_window")
     s, e = a.start, a.end
+    if m != 2:
+        l, r = -((e - m) // (m - 1)) - 1, (-s - m) // (m - 1) + 1
+        return (min(l, r), max(l, r))
     if e - s >= 2:
         return (1 - e, -s - 1)
     return (-s, -s)
 
 
-def _local_domain_matrix(a: LaurentSymbol, window: tuple[int, int]) -> DomainMatrix:
+def _local_domain_matrix(a: LaurentSymbol, window: tuple[int, int], m: int = 2) -> DomainMatrix:
     l, r = window
     coeffs = _domain_coefficients(a)
     K = a.domain
@@ -232,31 +254,31 @@ def _local_domain_matrix(a: LaurentSymbol, window: tuple[int, int]) -> DomainMat
         return coeffs[k] if 0 <= k < len(coeffs) else K.zero
 
     n = r - l + 1
-    rows = [[entry(i - 2 * j) for j in range(l, r + 1)] for i in range(l, r + 1)]
+    rows = [[entry(i - m * j) for j in range(l, r + 1)] for i in range(l, r + 1)]
     return DomainMatrix(rows, (n, n), K)
 
 
-def _resolve_window(a: LaurentSymbol, window: Sequence[int] | None) -> tuple[int, int]:
+def _resolve_window(a: LaurentSymbol, window: Sequence[int] | None, m: int = 2) -> tuple[int, int]:
     if window is None:
-        return invariant_window(a)
+        return invariant_window(a, arity=m)
     try:
         l, r = (int(window[0]), int(window[1]))
     except (TypeError, ValueError, IndexError):
         raise AnalysisError(f"a window is a pair of integers (l, r), not {window!r}") from None
     if l > r:
         raise AnalysisError(f"empty window ({l}, {r})")
-    if not is_invariant_window(a, (l, r)):
-        lo, hi = invariant_window(a)
+    if not is_invariant_window(a, (l, r), arity=m):
+        lo, hi = invariant_window(a, arity=m)
         raise AnalysisError(f"window ({l}, {r}) is not invariant under the scheme; "
                             f"it must contain ({lo}, {hi})")
     return (l, r)
 
 
-def local_subdivision_matrix(a: LaurentSymbol, window: Sequence[int] | None = None
+def local_subdivision_matrix(a: LaurentSymbol, window: Sequence[int] | None = None, *, arity: int = 2
                              ) -> tuple[sp.Matrix, tuple[int, int]]:
     """The local subdivision matrix of ``a`` and its window ``(l, r)``.
 
-    ``M[i - l, j - l] = a_{i - 2j}`` for ``l <= i, j <= r``, so that
+    ``M[i - l, j - l] = a_{i - mj}`` (``m`` the arity) for ``l <= i, j <= r``, so that
     ``(f^{n+1}_l, ..., f^{n+1}_r) = M (f^n_l, ..., f^n_r)``. By default the window is the
     smallest invariant one, ``(1 - e, -s - 1)`` for mask support ``[s, e]``
     (:func:`invariant_window`). A larger invariant window can be given explicitly (papers often
@@ -281,11 +303,12 @@ def local_subdivision_matrix(a: LaurentSymbol, window: Sequence[int] | None = No
     ----------
     N. Dyn, D. Levin, Acta Numerica 11 (2002), Section 4.
     """
+    m = check_arity(arity)
     a = _check_symbol(a, "local_subdivision_matrix")
-    win = _resolve_window(a, window)
+    win = _resolve_window(a, window, m)
     l, r = win
     n = r - l + 1
-    return sp.Matrix(n, n, lambda p, q: a.coeff((l + p) - 2 * (l + q))), win
+    return sp.Matrix(n, n, lambda p, q: a.coeff((l + p) - m * (l + q))), win
 
 
 # --------------------------------------------------------------------------------------------
@@ -326,7 +349,7 @@ def _roots_of_factor(f: sp.Poly, K, parametric: bool) -> list[sp.Expr] | None:
     return None
 
 
-def local_eigenvalues(a: LaurentSymbol, window: Sequence[int] | None = None) -> Result:
+def local_eigenvalues(a: LaurentSymbol, window: Sequence[int] | None = None, *, arity: int = 2) -> Result:
     """The exact eigenvalues, with multiplicities, of the local subdivision matrix of ``a``.
 
     ``value`` is a dict ``{eigenvalue: multiplicity}`` (numeric eigenvalues by decreasing
@@ -366,13 +389,31 @@ def local_eigenvalues(a: LaurentSymbol, window: Sequence[int] | None = None) -> 
     lemma). Linear and quadratic factors are solved in closed form; numeric factors of higher
     degree give ``CRootOf`` roots over ``QQ`` (exact).
 
+    Arity ``m > 2`` (necessary for ``C^k``: ``1, 1/m, ..., 1/m^k`` dominant): sympy's characteristic
+    polynomial of the explicit matrix, factored, and its roots (``witness``: ``charpoly``, ``window``,
+    ``matrix``). This older route is kept for ``m > 2`` because the m-ary reports and goldens record its
+    factored form; both are exact.
+
+    >>> local_eigenvalues(LaurentSymbol.from_expr("(1+z+z**2)**3/(9*z**3)"), arity=3).value
+    {1: 1, 1/3: 1, 1/9: 1}
+
     References
     ----------
     N. Dyn, D. Levin, Acta Numerica 11 (2002), Section 4; S. J. Berkowitz, Inform. Process. Lett.
     18 (1984) 147-150.
     """
+    m = check_arity(arity)
     a = _check_symbol(a, "local_eigenvalues")
-    win = _resolve_window(a, window)
+    win = _resolve_window(a, window, m)
+    if m != 2:
+        Ms = local_subdivision_matrix(a, win, arity=m)[0]
+        cp = sp.factor(Ms.charpoly(LAMBDA).as_expr())
+        eig = sp.roots(sp.Poly(cp, LAMBDA)) if not a.params else Ms.eigenvals()
+        complete = sum(eig.values()) == Ms.shape[0]
+        value = dict(sorted(((sp.simplify(k), v) for k, v in eig.items()), key=lambda kv: _sort_key(kv[0])))
+        return Result(value=value, status=CERTIFIED, witness={"charpoly": cp, "window": win, "matrix": Ms},
+                      provenance={"method": "exact characteristic polynomial of the local subdivision matrix",
+                                  "arity": m, "complete": complete})
     M = _local_domain_matrix(a, win)
     K = a.domain
     parametric = not a.is_numeric
@@ -427,8 +468,10 @@ def _real_roots(expr: sp.Expr, p: sp.Symbol) -> list[sp.Expr]:
     return sorted({r for r in found if r.is_real}, key=lambda x: sp.N(x, 30))
 
 
-def basic_limit_support(a: LaurentSymbol) -> Result:
-    """The support ``[s, e]`` of the basic limit function of ``a`` (``value = (s, e)``).
+def basic_limit_support(a: LaurentSymbol, *, arity: int = 2) -> Result:
+    """The support ``[s, e]`` of the basic limit function of ``a`` (``value = (s, e)``); for arity ``m``
+    ``[s/(m-1), e/(m-1)]`` (after ``n`` steps the nonzero values of ``S^n delta`` sit at indices
+    ``(m^n - 1)/(m-1) [s, e]``).
 
     In our convention the basic limit function ``phi = lim S_a^n delta`` satisfies
     ``phi = sum_k a_k phi(2 . - k)``, and its support (convex hull) is the mask support
@@ -470,11 +513,18 @@ def basic_limit_support(a: LaurentSymbol) -> Result:
     A. S. Cavaretta, W. Dahmen, C. A. Micchelli, Mem. AMS 453 (1991), Chapter 2;
     N. Dyn, D. Levin, Acta Numerica 11 (2002), Section 2.
     """
+    m = check_arity(arity)
     a = _check_symbol(a, "basic_limit_support")
     s, e = a.start, a.end
+    left, right = a.coeff(s), a.coeff(e)
+    if m != 2:                         # the generic support only (the exceptional values are binary-only)
+        lo, hi = sp.Rational(s, m - 1), sp.Rational(e, m - 1)
+        c = (lo + hi) / 2
+        return Result(value=(lo, hi), status=CERTIFIED,
+                      witness={"width": hi - lo, "centre": c, "centred": (lo - c, hi - c), "end_coefficients": (left, right)},
+                      provenance={"method": "mask support / (m - 1)", "arity": m})
     width = e - s
     centre = sp.Rational(s + e, 2)
-    left, right = a.coeff(s), a.coeff(e)
     witness: dict[str, Any] = {
         "width": width,
         "centre": centre,

@@ -35,11 +35,8 @@ from __future__ import annotations
 import sympy as sp
 
 from ...algebra.factorization import polynomial_generation, polynomial_reproduction, smoothing_factor, sum_rules, symmetry
-from ...algebra.mary import (polynomial_generation_mary, polynomial_reproduction_mary, smoothing_factor_mary,
-                             sum_rules_mary, symmetry_mary)
 from ...algebra.symbol import LaurentSymbol
 from ...result import AnalysisError
-from ...stationary.mary import basic_limit_support_mary, local_eigenvalues_mary
 from ...stationary.transition import basic_limit_support, local_eigenvalues
 from ..model import Number, Verdict, exact_result
 from .base import Kind, evidence, parse_number, rules_symbol
@@ -67,7 +64,7 @@ class MaskIdentity(Kind):
                 "same_as": "another scheme of the file", "at": "parameter values",
                 "substitute": "{ parameter = \"expression\" }: a sub-family (e.g. nu = \"1 - 2*mu\")"}
     example = 'mask = ["-1/16", 0, "9/16", 1, "9/16", 0, "-1/16"]\nstart = -3\nat = { w = "1/16" }'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         given = [k for k in ("mask", "symbol", "rules", "same_as") if k in self.fields]
@@ -139,7 +136,7 @@ class SumRules(Kind):
     optional = {"exceptional": "[{ at = {...}, factors = k }] claimed exceptional values", "at": "parameter values",
                 "at_least": "true: the claim is k or more factors (e.g. a(1) = 2, a(-1) = 0 is at least 1)"}
     example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.integer("factors")
@@ -151,8 +148,8 @@ class SumRules(Kind):
 
     def evaluate(self) -> Verdict:
         a, m = self.symbol(), self.arity
-        f = smoothing_factor(a) if m == 2 else smoothing_factor_mary(a, m)
-        sr = sum_rules(a) if m == 2 else sum_rules_mary(a, m)
+        f = smoothing_factor(a, arity=m)
+        sr = sum_rules(a, arity=m)
         k, found = f.value, f.witness["exceptional"]
         exc_text = "; ".join(f"{_cond_text(e['condition'])}: {e['k']} factors" for e in found) or "none"
         if m == 2:
@@ -171,8 +168,7 @@ class SumRules(Kind):
             vals = self.scheme.values(e["at"], self.where)
             hit = [x for x in found if set(map(str, x["condition"])) == set(vals)
                    and all(_same(x["condition"][s], vals[str(s)]) for s in x["condition"])]
-            kk = hit[0]["k"] if hit else (smoothing_factor(a.subs(vals), exceptional=False) if m == 2 else
-                                          smoothing_factor_mary(a.subs(vals), m, exceptional=False)).value
+            kk = hit[0]["k"] if hit else smoothing_factor(a.subs(vals), exceptional=False, arity=m).value
             if kk != e["factors"]:
                 wrong.append(f"at {_cond_text(vals)}: k = {kk}, not {e['factors']}")
         nums = [Number("factors", k), Number("exceptional values", len(found))]
@@ -195,7 +191,7 @@ class Symmetry(Kind):
     optional = {"symmetric": "true (default) or false", "centre": "claimed centre c/2 (our indexing)",
                 "at": "parameter values"}
     example = "symmetric = true\ncentre = 0"
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()
@@ -203,7 +199,7 @@ class Symmetry(Kind):
         self.boolean("symmetric", True)
 
     def evaluate(self) -> Verdict:
-        r = symmetry(self.symbol()) if self.arity == 2 else symmetry_mary(self.symbol(), self.arity)
+        r = symmetry(self.symbol(), arity=self.arity)
         want, centre = self.get("symmetric", True), self.number("centre")
         ev = [evidence("exact comparison a_i = a_(start+end-i)", r,
                        text=f"centre {sp.sstr(r.witness['centre'])} ({r.witness['kind']})")]
@@ -226,7 +222,7 @@ class Interpolatory(Kind):
     optional = {"holds": "true (default): interpolatory for every parameter value; false: for none",
                 "at": "parameter values"}
     example = "holds = true"
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()
@@ -325,7 +321,7 @@ class Support(Kind):
     optional = {"of": "'mask' (default), 'limit function' or 'limit function, centred'", "at": "parameter values",
                 "plot": "[{ parameter = value }, ...]: members whose basic limit functions the report draws"}
     example = 'support = [-3, 3]\nof = "limit function"'
-    mary = True
+    any_arity = True
 
     OF = ("mask", "limit function", "limit function, centred")
 
@@ -344,7 +340,7 @@ class Support(Kind):
     def evaluate(self) -> Verdict:
         a = self.symbol()
         of = self.get("of", "mask")
-        r = basic_limit_support(a) if self.arity == 2 else basic_limit_support_mary(a, self.arity)
+        r = basic_limit_support(a, arity=self.arity)
         true = r.witness["centred"] if of.endswith("centred") else r.value
         if of == "mask":
             true = (a.start, a.end)
@@ -377,7 +373,7 @@ class Eigenvalues(Kind):
     optional = {"complete": "true: the list is the whole spectrum", "window": "[lo, hi] of the local matrix",
                 "at": "parameter values"}
     example = 'eigenvalues = ["1", "1/2", "1/4", "1/4", "1/8"]\ncomplete = true\nat = { w = "1/16" }'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()
@@ -393,8 +389,7 @@ class Eigenvalues(Kind):
 
     def evaluate(self) -> Verdict:
         a = self.symbol()
-        r = (local_eigenvalues(a, window=self.get("window")) if self.arity == 2 else
-             local_eigenvalues_mary(a, self.arity, window=self.get("window")))
+        r = local_eigenvalues(a, window=self.get("window"), arity=self.arity)
         spectrum = [lam for lam, m in r.value.items() for _ in range(m)]
         rest, missing = list(spectrum), []
         for c in self.claimed:
@@ -433,7 +428,7 @@ class Reproduction(Kind):
     optional = {"generation": "claimed generation degree", "reproduction": "claimed reproduction degree",
                 "at": "parameter values"}
     example = "generation = 3\nreproduction = 3\nat = { w = \"1/16\" }"
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()
@@ -444,8 +439,7 @@ class Reproduction(Kind):
     def evaluate(self) -> Verdict:
         a = self.symbol()
         m = self.arity
-        g, r = ((polynomial_generation(a), polynomial_reproduction(a)) if m == 2 else
-                (polynomial_generation_mary(a, m), polynomial_reproduction_mary(a, m)))
+        g, r = polynomial_generation(a, arity=m), polynomial_reproduction(a, arity=m)
         higher = "; ".join(f"{_cond_text(h['condition'])}: degree {h['degree']}" for h in r.witness["higher"])
         ev = [evidence("sum rules (generation)", g, text=f"degree {g.value}"),
               evidence("Conti-Hormann conditions (reproduction)", r,

@@ -39,7 +39,7 @@ from ...result import AnalysisError, Result
 from ..model import Evidence, Number, Verdict, certified, inconclusive, refuted
 from ...algebra.reader import as_expr, read_expression
 
-__all__ = ["Domain", "SchemeSpec", "Kind", "MARY_KINDS", "parse_number", "parse_interval", "interval_text", "evidence",
+__all__ = ["Domain", "SchemeSpec", "Kind", "ANY_ARITY_KINDS", "set_text", "point_in", "parse_number", "parse_interval", "interval_text", "evidence",
            "rules_symbol", "RULES_FORMS"]
 
 
@@ -275,8 +275,8 @@ class SchemeSpec:
         return self.symbol.subs(values) if values else self.symbol
 
 
-#: the kinds available for m-ary schemes (their ``mary = True``; issue 12)
-MARY_KINDS = ("mask identity", "sum rules", "symmetry", "interpolatory", "support", "eigenvalues", "reproduction", "norm test", "ck range",
+#: the kinds available for schemes of every arity (their ``any_arity = True``; the others are binary only)
+ANY_ARITY_KINDS = ("mask identity", "sum rules", "symmetry", "interpolatory", "support", "eigenvalues", "reproduction", "norm test", "ck range",
               "smoothness", "holder",
               "smoothness profile", "sobolev", "support after steps", "limit symmetry",
               "weighted series", "asymptotic equivalence", "exponential reproduction")
@@ -298,8 +298,8 @@ class Kind:
     #: does the kind speak of a level-dependent scheme (``level_mask``) rather than a stationary one?
     #: (None: of either)
     level_scheme: ClassVar[bool | None] = False
-    #: can the kind speak of an m-ary scheme (arity != 2)?  (issue 12; the others refuse at load time)
-    mary: ClassVar[bool] = False
+    #: can the kind speak of a scheme of any arity (arity != 2)?  (the others refuse at load time)
+    any_arity: ClassVar[bool] = False
     #: example fields (TOML lines) for the template of ``subdiv new-paper``
     example: ClassVar[str] = ""
     summary: ClassVar[str] = ""
@@ -333,9 +333,9 @@ class Kind:
                                     + ("level-dependent scheme (level_mask)" if self.level_scheme else
                                        f"stationary scheme; {s!r} is level-dependent (for C^k of a level-dependent "
                                        "scheme use kind 'smoothness')"))
-            if self.scheme.arity != 2 and not self.mary:
+            if self.scheme.arity != 2 and not self.any_arity:
                 raise AnalysisError(f"{where}: kind {self.name!r} is not available for arity {self.scheme.arity} "
-                                    f"(scheme {s!r}); the m-ary kinds are: {', '.join(MARY_KINDS)}")
+                                    f"(scheme {s!r}); the m-ary kinds are: {', '.join(ANY_ARITY_KINDS)}")
         self.check()
 
     # ------------------------------------------------------------------ helpers for kinds
@@ -461,7 +461,7 @@ def alpha_maximum(a: LaurentSymbol, p, lo, hi, curve: list, *, arity: int = 2, n
 def sampled_alpha_maximum(p, curve: list, note: str = ""):
     """The largest certified Hölder exponent among the sample points of an alpha curve: the text
     line, its key numbers and the evidence table (the maximum is *sampled*, and says so).
-    Shared by the binary (:mod:`.profile`) and the m-ary (:mod:`.mary`) smoothness profiles."""
+    Used by the smoothness profile (:mod:`.profile`) of every arity."""
     best = max((x for x in curve if x["lower"] is not None), key=lambda x: x["lower"], default=None)
     alpha_line, nums = "no certified alpha", []
     if best is not None:
@@ -480,3 +480,38 @@ def sampled_alpha_maximum(p, curve: list, note: str = ""):
                             f"{float(x['upper']):.8f}" if x["upper"] is not None else "-", x["status"])
                            for x in curve)))
     return alpha_line, nums, ev
+
+
+def set_text(S) -> str:
+    """A sympy set as ``(a, b) U [c, d]`` (``empty`` for the empty set)."""
+    if S == sp.EmptySet or S.is_empty is True:
+        return "empty"
+    parts = S.args if isinstance(S, sp.Union) else (S,)
+    out = []
+    for x in parts:
+        if isinstance(x, sp.Interval):
+            out.append(f"{'(' if x.left_open else '['}{sp.sstr(x.start)}, {sp.sstr(x.end)}{')' if x.right_open else ']'}")
+        else:
+            out.append(sp.sstr(x))
+    return " U ".join(out)
+
+
+def point_in(S):
+    """A simple exact point of the sympy set ``S`` (a rational inside an interval of positive length,
+    else an element of a finite part), or None."""
+    parts = S.args if isinstance(S, sp.Union) else (S,)
+    for x in parts:
+        if isinstance(x, sp.Interval) and bool(x.end > x.start):
+            lo, hi = x.start, x.end
+            if lo == -sp.oo:
+                lo = hi - 2
+            if hi == sp.oo:
+                hi = lo + 2
+            for den in (1, 2, 3, 5, 10, 30, 100, 1000, 10 ** 6):
+                q = sp.Rational(round(float((lo + hi) / 2) * den), den)
+                if S.contains(q) is sp.true:
+                    return q
+    for x in parts:
+        if isinstance(x, sp.FiniteSet) and x.args:
+            return x.args[0]
+    return None

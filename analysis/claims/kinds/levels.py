@@ -3,9 +3,9 @@ exponential generation/reproduction.
 
 A paper file defines a level-dependent scheme by ``level_mask`` (coefficients in the level ``n``
 or ``h = 2^-n``) and ``start``; parameters with a domain in ``[0, oo)`` are declared positive.
-With ``arity = M`` (issue 12, second round) the scheme is m-ary, ``h = M^-n``, the weights are
-``M^(mn)`` and the m-ary engine evaluates it (:func:`analysis.levels.mary.weighted_series_mary`,
-:func:`analysis.levels.reproduction_mary.generation_mary` / ``reproduction_mary``).
+With ``arity = M`` the scheme carries its arity, ``h = M^-n`` and the weights are ``M^(mn)``
+(:func:`analysis.levels.series.weighted_series`, :func:`analysis.levels.reproduction.generation` /
+``reproduction`` read it from the scheme).
 
 Examples
 --------
@@ -40,6 +40,7 @@ from __future__ import annotations
 import sympy as sp
 
 from ...levels.reproduction import generation, reproduction
+from ...levels.leading_term import series_by_leading_term
 from ...levels.series import weighted_series
 from ...result import CERTIFIED, AnalysisError
 from ..model import Number, Verdict
@@ -52,7 +53,7 @@ __all__ = ["WeightedSeries", "AsymptoticEquivalence", "ExponentialReproduction"]
 class _LevelKind(Kind):
     level_scheme = True
     #: m-ary level-dependent schemes (``arity = M``, ``h = M^-n``) are evaluated by the m-ary engine
-    mary = True
+    any_arity = True
 
     def level(self):
         if self.scheme.level is None:
@@ -100,10 +101,8 @@ class WeightedSeries(_LevelKind):
         d = self.get("difference", 0)
         if M == 2:
             r = weighted_series(self.level(), self.level_values(), m, difference=d)
-        else:
-            from ...levels.mary import difference_scheme_mary, weighted_series_mary
-            s = difference_scheme_mary(self.level(), d) if d else self.level()
-            r = weighted_series_mary(s, self.level_values(), m)
+        else:                        # the m-ary witness layout (series_by_leading_term)
+            r = series_by_leading_term(self.level(), self.level_values(), m, difference=d)
         what = f"sum_n {M}^({m}n) ||S_(a^n) - S_a||" if m else "sum_n ||S_(a^n) - S_a|| (asymptotic equivalence)"
         if d and M != 2:            # (binary summaries unchanged)
             what += f" of the divided difference scheme of order {d}"
@@ -162,11 +161,7 @@ class ExponentialReproduction(_LevelKind):
         s = self.level()
         lams = self.lambdas()
         vals = self.level_values()
-        if self.arity == 2:
-            fn = reproduction if self.get("reproduction") else generation
-        else:
-            from ...levels.reproduction_mary import generation_mary, reproduction_mary
-            fn = reproduction_mary if self.get("reproduction") else generation_mary
+        fn = reproduction if self.get("reproduction") else generation
         r = fn(s, lams, vals or None)
         what = f"{'reproduction' if self.get('reproduction') else 'generation'} of e^(lambda x), lambda in {self.get('lambdas')}"
         want = self.get("holds", True)

@@ -66,7 +66,7 @@ class LimitSymmetry(Kind):
     optional = {"symmetric": "true (default) or false", "centre": "claimed centre of phi (our indexing)",
                 "type": "'primal' (integer centre) or 'dual' (half-integer)", "at": "parameter values"}
     example = 'centre = 0\ntype = "primal"'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()

@@ -51,10 +51,11 @@ import sympy as sp
 from ...algebra.algebraic import RealAlgebraic
 from ...algebra.factorization import smoothing_factor
 from ...regularity.holder import holder_exponent, smoothness
-from ...regularity.ranges import alpha_curve, ck_parameter_set, verify_smoothness_interval
+from ...regularity.ranges import alpha_curve, ck_parameter_set, ck_range, verify_smoothness_interval
 from ...result import CERTIFIED, REFUTED, AnalysisError
 from ..model import Number, Verdict
-from .base import Kind, evidence, interval_text, parse_interval, alpha_maximum
+from .base import Kind, evidence, interval_text, parse_interval, point_in, set_text, alpha_maximum
+from .regularity import SET_LS
 from ...algebra.reader import as_expr
 
 __all__ = ["SmoothnessProfile", "beside_text", "boundary_text", "compact_set", "run_matches", "which_set"]
@@ -209,7 +210,7 @@ class SmoothnessProfile(Kind):
                 "beside": "[{ claim = \"ID\", j = ..., interval = \"(a, b)\" }, ...]: other claims of the paper about "
                           "this family's C^j range, each shown beside the certified C^j set"}
     example = 'within = "(1/32, 1/8)"\nclaimed = { j = 1, interval = "(1/16, 1/8)" }\nmax_j = 1\ngrid = 4\nsamples = 4'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.values()
@@ -246,10 +247,8 @@ class SmoothnessProfile(Kind):
         return dataclasses.replace(v, profile=self.profile) if self.profile is not None else v
 
     def _evaluate(self) -> Verdict:
-        if self.arity != 2:                       # issue 12: ck_range_mary for each j
-            from .mary import profile_verdict
-
-            return profile_verdict(self)
+        if self.arity != 2:                       # ck_range for each j
+            return profile_by_sets(self)
         a = self.symbol()
         p = self.single_parameter()
         lo, hi = self._within()
@@ -347,3 +346,79 @@ class SmoothnessProfile(Kind):
         return self.inconclusive(f"C^{cj} on {interval_text(clo, chi)} neither proven nor refuted; {which}",
                                  settle=v.provenance.get("message", "finer norm tests"), evidence=ev, numbers=nums,
                                  sharpness=sharp)
+
+
+#: work units of JSR search per alpha sample point of :func:`profile_by_sets` (analysis.jsr.jsr_bounds)
+SET_ALPHA_BUDGET = 2_000
+
+
+def profile_by_sets(kind) -> Verdict:
+    """The ``smoothness profile`` kind from the exact C^j sets (used for arity ``m > 2``): for each ``j`` the
+    C^j set of :func:`analysis.regularity.ranges.ck_range` — the union of the exact sets where the Dyn–Levin test
+    ``||(1/m S_{a_{j+1}})^L||_inf < 1`` holds (C^j proven) and the exact set where one transition matrix of
+    ``c = m^k a/q_m^(k+1)`` has a real eigenvalue of modulus ``>= m^(k-j)`` (not C^j proven); what neither covers
+    is *undecided* (inconclusive, never certified). The Hölder exponent is enclosed at ``samples + 1`` rational
+    points only (:func:`analysis.regularity.ranges.alpha_curve`): its maximum is sampled, not certified."""
+    a, m = kind.symbol(), kind.arity
+    p = kind.single_parameter()
+    lo, hi = kind._within()
+    N = smoothing_factor(a, exceptional=False, arity=m).value
+    max_j = kind.get("max_j", max(N - 1, 0))
+    sets, rows, nums, all_cert = {}, [], [], True
+    for j in range(0, min(max_j, N - 1) + 1):
+        r = ck_range(a, j, p, Ls=SET_LS, within=(lo, hi), arity=m)
+        sets[j] = r
+        all_cert &= bool(r.witness["exact"])
+        rows.append((f"C^{j}", set_text(r.value), "certified" if r.witness["exact"] else
+                     f"undecided on {set_text(r.witness['undecided'])}"))
+        nums.append(Number(f"C^{j} set", set_text(r.value)))
+        if not r.witness["exact"]:
+            nums.append(Number(f"C^{j} undecided", set_text(r.witness["undecided"])))
+        if r.value == sp.EmptySet and r.witness["exact"]:
+            break
+    largest = max([j for j, r in sets.items() if r.value != sp.EmptySet], default=-1)
+    ev = [evidence(f"C^j sets of {p.name} in {interval_text(lo, hi)} ({m}-ary)", table=(("j", "set", "status"), *rows),
+                   text=f"{N} generic factors (1+...+z^{m - 1})/{m}; largest j with a non-empty C^j set: {largest}")]
+    curve = alpha_curve(a, p, within=(lo, hi), samples=kind.get("samples", 8), budget=SET_ALPHA_BUDGET, arity=m).value
+    alpha_line, alpha_nums, alpha_ev = alpha_maximum(a, p, lo, hi, curve, arity=m)
+    nums += alpha_nums
+    ev.append(alpha_ev)
+    nums.insert(0, Number("largest j", largest))
+    profile = "; ".join(f"{r[0]}: {r[1]}" + ("" if r[2] == "certified" else f" ({r[2]})") for r in rows) + f"; {alpha_line}"
+    claim = kind.get("claimed")
+    where = kind.where_text()
+    if claim is None:
+        if all_cert:
+            return kind.certified(f"smoothness profile of {where} ({m}-ary)", evidence=ev, numbers=nums,
+                                  sharpness=profile)
+        return kind.inconclusive(f"smoothness profile of {where} ({m}-ary; some C^j sets have undecided strips)",
+                                 settle="longer norm tests or point-wise JSR verdicts on the undecided strips",
+                                 evidence=ev, numbers=nums, sharpness=profile)
+    cj = claim["j"]
+    clo, chi, _, _ = parse_interval(claim["interval"])
+    if cj > N - 1:
+        return kind.refuted(f"false: C^{cj} needs {cj + 1} factors 1+...+z^{m - 1}; the family has {N}",
+                            corrected=f"at most C^{N - 1}", evidence=ev, numbers=nums, sharpness=profile)
+    r = sets.get(cj)
+    if r is None or not (bool(clo >= lo) and bool(chi <= hi)):
+        r = ck_range(a, cj, p, Ls=SET_LS, within=(clo, chi), arity=m)
+    V = r.witness["not_Cj"].intersect(sp.Interval.open(clo, chi))
+    inside = sp.Interval.open(clo, chi).is_subset(r.value)
+    exact_set = r.witness["exact"] and r.value == sp.Interval.open(clo, chi)
+    which = (f"the printed interval {interval_text(clo, chi)} is the C^{cj} set" if exact_set else
+             f"the C^{cj} set (within {interval_text(lo, hi)}) is {set_text(r.value)}"
+             + ("" if r.witness["exact"] else f", undecided on {set_text(r.witness['undecided'])}"))
+    ev.insert(0, evidence(f"claimed: C^{cj} on {interval_text(clo, chi)}", r, text=which))
+    sharp = f"{which}. {profile}"
+    if inside:
+        return kind.certified(f"true: C^{cj} on {interval_text(clo, chi)} proven ({m}-ary Dyn-Levin norm sets)",
+                              evidence=ev, numbers=nums, sharpness=sharp)
+    q = point_in(V)
+    if q is not None:
+        return kind.refuted(f"false: not C^{cj} at {p.name} = {sp.sstr(q)} (certified: a transition matrix has an "
+                            f"eigenvalue of modulus >= {m}^{N - 1 - cj}); {which}",
+                            corrected=f"C^{cj} exactly on {set_text(r.value)}" if r.witness["exact"] else which,
+                            evidence=ev, numbers=nums, sharpness=sharp)
+    return kind.inconclusive(f"C^{cj} on {interval_text(clo, chi)} neither proven nor refuted; {which}",
+                             settle="longer norm tests or point-wise JSR verdicts", evidence=ev, numbers=nums,
+                             sharpness=sharp)

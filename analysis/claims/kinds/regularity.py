@@ -37,13 +37,12 @@ from __future__ import annotations
 import sympy as sp
 
 from ...regularity.holder import holder_exponent
-from ...regularity.mary import holder_exponent_mary
-from ...regularity.ranges import verify_smoothness_interval
+from ...regularity.ranges import ck_range, verify_smoothness_interval
 from ...regularity.sobolev import sobolev_exponent
 from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ...stationary.normset import norm_solution_set
 from ..model import Number, Verdict, contains_interval
-from .base import Kind, _compare, evidence, interval_text
+from .base import Kind, _compare, evidence, interval_text, point_in, set_text
 from ...algebra.reader import as_expr
 
 __all__ = ["NormTest", "CkRange", "Holder", "Sobolev", "enclosure_text", "compare_enclosure"]
@@ -128,6 +127,57 @@ def compare_exact(h: Result, arity: int, value=None, tol=None, lower=None, upper
     return None, why
 
 
+#: the L of the exact norm sets of :func:`ck_range_by_sets` (as `subdiv range --arity`)
+SET_LS = (1, 2)
+
+
+def ck_range_by_sets(kind: Kind) -> Verdict:
+    """The ``ck range`` kind from the exact C^j and not-C^j sets of
+    :func:`analysis.regularity.ranges.ck_range` (used for arity ``m > 2``; the binary kind proves a claimed
+    interval directly, :func:`analysis.regularity.ranges.verify_smoothness_interval`). A claimed open interval
+    is proven when it lies in the C^j set, refuted at a rational point of the not-C^j set inside it; what
+    neither covers is undecided (inconclusive, never certified).
+
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import LaurentSymbol
+    >>> from analysis.claims.kinds.base import SchemeSpec
+    >>> mu = sp.Symbol("mu")
+    >>> r = sp.Rational
+    >>> a0, a1, a2, a3 = -r(1, 18) - mu/6, r(13, 18) + mu/2, r(7, 18) - mu/2, -r(1, 18) + mu/6
+    >>> a = LaurentSymbol.from_mask([a3, a0, 0, a2, a1, 1, a1, a2, 0, a0, a3], start=-5)
+    >>> S = {"t4": SchemeSpec("t4", a, arity=3)}
+    >>> CkRange({"j": 2, "interval": "(1/15, 1/9)"}, S, "x").evaluate().label
+    'CERTIFIED TRUE'
+    >>> v = CkRange({"j": 2, "interval": "(0, 1/9)"}, S, "x").evaluate()
+    >>> v.label, v.numbers[0].value
+    ('REFUTED', 1/30)
+    """
+    a, m = kind.symbol(), kind.arity
+    p = kind.single_parameter()
+    j = kind.get("j")
+    lo, hi, lc, hc = kind.interval("interval")
+    claim = interval_text(lo, hi, lc, hc)
+    r = ck_range(a, j, p, Ls=SET_LS, within=(lo, hi), arity=m)
+    S, V, U = r.value, r.witness["not_Cj"], r.witness["undecided"]
+    text = (f"C^{j} (m-ary norm sets, L in {list(SET_LS)}): {set_text(S)}; not C^{j} (transition-matrix eigenvalue "
+            f"of modulus >= {m}^{r.witness['k'] - j}): {set_text(V)}; undecided: {set_text(U)}")
+    ev = [evidence(f"C^{j} of the {m}-ary scheme on {claim}", r, text=text)]
+    note = " (the closed ends are not checked: the interval is treated as open)" if lc or hc else ""
+    if r.witness["exact"] and (V == sp.EmptySet or V.is_empty is True):
+        return kind.certified(f"C^{j} for every {p.name} in {claim} ({m}-ary Dyn-Levin norm sets){note}", evidence=ev,
+                              numbers=[Number("proven", True)])
+    q = point_in(V)
+    if q is not None:
+        return kind.refuted(f"not C^{j} at {p.name} = {sp.sstr(q)} in {claim} (certified: a transition matrix has an "
+                            f"eigenvalue of modulus >= {m}^{r.witness['k'] - j})",
+                            corrected=f"on {claim} the scheme is C^{j} exactly on {set_text(S)}"
+                                      + (f" and undecided on {set_text(U)}" if not r.witness["exact"] else ""),
+                            evidence=ev, numbers=[Number("counterexample", q)])
+    return kind.inconclusive(f"C^{j} on {claim} neither proven nor refuted: undecided on {set_text(U)}",
+                             settle=f"decide points of {set_text(U)} with `subdiv holder --arity {m} --C {j}` "
+                                    "or longer norm tests", evidence=ev)
+
+
 class _ValueClaim(Kind):
     #: decide a claimed closed form inside the enclosure by the exact alpha (:func:`compare_exact`)
     exact_comparison = False
@@ -192,13 +242,11 @@ class Holder(_ValueClaim):
                "(value = \"2 - log2(1 + sqrt(3))\") inside it is compared exactly where the JSR is known exactly")
     quantity = "alpha"
     example = 'at = { w = "1/16" }\nvalue = 2'
-    mary = True
+    any_arity = True
     exact_comparison = True
 
     def compute(self, a) -> Result:
-        if self.arity != 2:                       # alpha = k - log_m JSR (issue 12)
-            return holder_exponent_mary(a, self.arity, budget=self._budget())
-        return holder_exponent(a, budget=self._budget())
+        return holder_exponent(a, budget=self._budget(), arity=self.arity)
 
     def _budget(self) -> int:
         return int(self.number("budget") or 20_000)
@@ -211,13 +259,13 @@ class Sobolev(_ValueClaim):
     summary = "L2-Sobolev exponent s_2 at fixed parameters: value or bounds, certified"
     quantity = "s_2"
     example = 'at = { w = "1/16" }\nlower = 2'
-    mary = True
+    any_arity = True
 
     def compute(self, a) -> Result:
         if self.arity != 2:                       # s_2 = -(1/2) log_m lambda (issue 12)
-            from ...regularity.sobolev_mary import sobolev_exponent_mary
+            from ...regularity.sobolev import sobolev_exponent
 
-            return sobolev_exponent_mary(a, self.arity)
+            return sobolev_exponent(a, arity=self.arity)
         return sobolev_exponent(a)
 
 
@@ -229,7 +277,7 @@ class NormTest(Kind):
     required = {"j": "smoothness C^j", "L": "number of steps", "interval": "claimed parameter interval"}
     optional = {"at": "values of the other parameters", "plot": "\"(a, b)\": the report draws the norm over this range"}
     example = 'j = 1\nL = 2\ninterval = "(0, 1/8)"'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.integer("j"), self.integer("L", 1), self.interval("interval"), self.interval("plot")
@@ -243,8 +291,7 @@ class NormTest(Kind):
         dom = self.scheme.domains.get(p.name)
         within = (dom.lo, dom.hi) if dom is not None else (-sp.oo, sp.oo)
         m = self.arity
-        r = (norm_solution_set(a, j + 1, L, p, within=within) if m == 2 else
-             norm_solution_set(a, j + 1, L, p, within=within, arity=m))
+        r = norm_solution_set(a, j + 1, L, p, within=within, arity=m)
         S = r.value
         ok = contains_interval(S, lo, hi, closed=lc or hc)
         claim = interval_text(lo, hi, lc, hc)
@@ -272,7 +319,7 @@ class CkRange(Kind):
     required = {"j": "smoothness C^j", "interval": "claimed open parameter interval"}
     optional = {"at": "values of the other parameters"}
     example = 'j = 1\ninterval = "(0, 1/8)"'
-    mary = True
+    any_arity = True
 
     def check(self) -> None:
         self.integer("j"), self.interval("interval")
@@ -280,9 +327,7 @@ class CkRange(Kind):
 
     def evaluate(self) -> Verdict:
         if self.arity != 2:                       # issue 12
-            from .mary import ck_range_verdict
-
-            return ck_range_verdict(self)
+            return ck_range_by_sets(self)
         a = self.symbol()
         p = self.single_parameter()
         j = self.get("j")

@@ -3,7 +3,7 @@ decided both ways by the engine.
 
 A stationary scheme of any arity m is C^k exactly when ``alpha > k`` (for ``k`` below its number of
 smoothing factors): :func:`analysis.regularity.holder.smoothness` (binary) and
-:func:`analysis.regularity.mary.smoothness_mary` (m-ary) decide it — the Dyn–Levin norm test for "C^k",
+:func:`analysis.regularity.holder.smoothness` (m-ary) decide it — the Dyn–Levin norm test for "C^k",
 an exact spectral radius ``rho(Pi) >= m^((N-1-k) L)`` of a product of transition matrices for "not C^k"
 (this decides the borderline ``alpha = k`` exactly: Chaikin is not C^2, the four-point scheme at
 ``w = 1/16`` is not C^2 and at ``w = 0`` not C^1), then the joint spectral radius bounds. A level-dependent
@@ -76,7 +76,7 @@ class Smoothness(Kind):
                 "at": "parameter values (every parameter fixed)",
                 "budget": "work units for the JSR search when the exact tests do not decide (default 20000)"}
     example = 'at = { w = "1/16" }\nC = 2\nholds = false'
-    mary = True
+    any_arity = True
     level_scheme = None          # stationary or level-dependent
 
     def check(self) -> None:
@@ -97,11 +97,10 @@ class Smoothness(Kind):
     # ------------------------------------------------------------------ stationary schemes
     def _stationary(self, j: int) -> Result:
         from ...regularity.holder import EXACT_BUDGET, smoothness
-        from ...regularity.mary import smoothness_mary
 
         budget = int(self.number("budget") or EXACT_BUDGET)
         a = self.symbol()
-        return smoothness(a, j, budget=budget) if self.arity == 2 else smoothness_mary(a, self.arity, j, budget=budget)
+        return smoothness(a, j, budget=budget, arity=self.arity)
 
     def _truth_stationary(self, k: int, first: Result) -> tuple[int | None, int | None, dict]:
         """``(yes, no)``: the largest j certified C^j and the smallest certified not C^j found around ``k``."""
@@ -137,14 +136,9 @@ class Smoothness(Kind):
     def _level(self, k: int) -> tuple[bool | None, int, int | None, Result, str]:
         """``(holds, yes, no, result, reason)`` for a level-dependent scheme."""
         s, vals = self.scheme.level, self.values()
-        if self.arity == 2:
-            from ...levels.ck import level_smoothness
+        from ...levels.ck import level_smoothness
 
-            r = level_smoothness(s, vals, k_max=k + 1)
-        else:
-            from ...levels.mary import level_smoothness_mary
-
-            r = level_smoothness_mary(s, vals, k_max=k + 1)
+        r = level_smoothness(s, vals, k_max=k + 1)
         verdicts = r.witness["verdicts"]
         yes = r.value                               # C^j certified for every j <= yes
         no = r.witness.get("not_C^k")               # certified not C^no (exponential B-spline schemes)

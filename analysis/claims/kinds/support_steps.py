@@ -36,7 +36,6 @@ from __future__ import annotations
 import sympy as sp
 
 from ...result import AnalysisError
-from ...stationary.mary import basic_limit_support_mary
 from ...stationary.transition import basic_limit_support
 from ..model import Number, Verdict, exact_result
 from .base import Kind, evidence, parse_number
@@ -62,7 +61,7 @@ class SupportAfterSteps(Kind):
     optional = {"of": "'mask' (default: indices of S^L delta) or 'scaled' (divided by m^L: level-0 units)",
                 "at": "parameter values"}
     example = 'steps = 2\nsupport = [-9, 9]'
-    mary = True
+    any_arity = True
 
     OF = ("mask", "scaled")
 
@@ -90,7 +89,7 @@ class SupportAfterSteps(Kind):
                 prod = prod * a.upsample(m ** k)
             explicit = (prod.start, prod.end)
         scaled = (sp.Rational(mask_iv[0], m ** L), sp.Rational(mask_iv[1], m ** L))
-        lim = basic_limit_support(a) if m == 2 else basic_limit_support_mary(a, m)
+        lim = basic_limit_support(a, arity=m)
         phi = (sp.Rational(s, m - 1), sp.Rational(e, m - 1))
         of = self.get("of", "mask")
         true = mask_iv if of == "mask" else scaled

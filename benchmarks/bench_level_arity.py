@@ -1,8 +1,8 @@
-"""Issue 12 (catalogue): the level-dependent m-ary exponential B-splines of :mod:`schemes.level_mary`.
+"""Issue 12 (catalogue): the level-dependent m-ary exponential B-splines of :mod:`schemes.level_dependent`.
 
-Run: ``python benchmarks/bench_level_mary.py``. Prints, per entry, the time of the exact generation check
-(:func:`analysis.levels.reproduction_mary.generation_mary` of its frequencies) and of the C^k verdicts
-(:func:`analysis.levels.mary.level_smoothness_mary` at ``t = 1``), each in a fresh cache state of the entry
+Run: ``python benchmarks/bench_level_arity.py``. Prints, per entry, the time of the exact generation check
+(:func:`analysis.levels.reproduction.generation` of its frequencies) and of the C^k verdicts
+(:func:`analysis.levels.mary.level_smoothness` at ``t = 1``), each in a fresh cache state of the entry
 (the first call includes the exact series expansion), with the verdicts: the certified C^k, whether "not C^(k+1)"
 is certified too (the smoothness is then exact), and whether that is the true C^(d-1) of the exponential B-spline
 of degree d (d from the support: ``len(mask) = (d+1)(m-1) + 1``; Unser-Blu 2005). Then the wall time of
@@ -21,18 +21,18 @@ import sympy as sp
 
 
 def main() -> None:
-    from analysis.levels.mary import level_smoothness_mary
-    from analysis.levels.reproduction_mary import generation_mary
-    from schemes.level_mary import MARY_ENTRIES, T
+    from analysis.levels.ck import level_smoothness
+    from analysis.levels.reproduction import generation
+    from schemes.level_dependent import ARITY_ENTRIES, T
 
     gen_times, ck_times, all_true = [], [], True
-    for slug, s in MARY_ENTRIES.items():
+    for slug, s in ARITY_ENTRIES.items():
         d = (len(s.mask) - 1) // (s.arity - 1) - 1
         lam = ([0] if d > 1 else []) + ([sp.I * T, -sp.I * T] if slug.endswith("trig") else [T, -T])
         t0 = time.perf_counter()
-        g = generation_mary(s, lam)
+        g = generation(s, lam)
         t1 = time.perf_counter()
-        r = level_smoothness_mary(s, {"t": 1})
+        r = level_smoothness(s, {"t": 1})
         t2 = time.perf_counter()
         gen_times.append(t1 - t0)
         ck_times.append(t2 - t1)

@@ -4,11 +4,11 @@ mask coefficients (parameters at their default; the ternary 4-point family also 
 Prints one row per scheme (arity, length, alpha or its enclosure, status, seconds) and the median and
 maximum time. Target (issue 12): median under 2 s, none over 30 s.
 
-Then the same for the certified m-ary L2-Sobolev exponent (``sobolev_exponent_mary``), and the weighted
+Then the same for the certified m-ary L2-Sobolev exponent (``sobolev_exponent``), and the weighted
 series ``sum 3^(kn)||S_(a^n) - S_a||`` (k = 0, 1, 2) and the C^k verdicts of the ternary exponential
 B-spline (level-dependent, theta = 1).
 
-Run:  python benchmarks/bench_mary.py
+Run:  python benchmarks/bench_arity.py
 """
 
 from __future__ import annotations
@@ -19,8 +19,8 @@ import time
 import sympy as sp
 
 import schemes
-from analysis.regularity.mary import holder_exponent_mary
-from analysis.regularity.sobolev_mary import sobolev_exponent_mary
+from analysis.regularity.holder import holder_exponent
+from analysis.regularity.sobolev import sobolev_exponent
 
 EXTRA = {"ternary-four-point": [{"mu": sp.Rational(1, 10)}, {"mu": sp.Rational(-1, 10)}]}
 
@@ -41,7 +41,7 @@ def main() -> None:
     rows, times = [], []
     for label, e, a in _cases():
         t0 = time.perf_counter()
-        h = holder_exponent_mary(a, e.arity)
+        h = holder_exponent(a, arity=e.arity)
         dt = time.perf_counter() - t0
         times.append(dt)
         alpha = sp.sstr(h.value) if h.value is not None else f"[{float(h.lower):.10f}, {float(h.upper):.10f}]"
@@ -60,7 +60,7 @@ def sobolev() -> None:
     print("\nm-ary L2-Sobolev exponent s_2 (certified)")
     for label, e, a in _cases():
         t0 = time.perf_counter()
-        r = sobolev_exponent_mary(a, e.arity)
+        r = sobolev_exponent(a, arity=e.arity)
         dt = time.perf_counter() - t0
         times.append(dt)
         s2 = sp.sstr(r.value) if r.value is not None else (
@@ -70,17 +70,19 @@ def sobolev() -> None:
 
 
 def levels() -> None:
-    from analysis.levels.mary import level_smoothness_mary, ternary_exponential_bspline_2, weighted_series_mary
+    from analysis.levels.ck import level_smoothness
+    from analysis.levels.expbspline import ternary_exponential_bspline_2
+    from analysis.levels.leading_term import series_by_leading_term
 
     s = ternary_exponential_bspline_2()
     print("\nternary exponential B-spline of degree 2, theta = 1 (level-dependent)")
     for k in (0, 1, 2):
         t0 = time.perf_counter()
-        r = weighted_series_mary(s, {"theta": 1}, k)
+        r = series_by_leading_term(s, {"theta": 1}, k)
         print(f"  sum 3^({k}n)||S_(a^n) - S_a||: {r.witness['verdict']:<10} {r.status:<10} "
               f"{time.perf_counter() - t0:7.3f} s")
     t0 = time.perf_counter()
-    r = level_smoothness_mary(s, {"theta": 1})
+    r = level_smoothness(s, {"theta": 1})
     print(f"  C^k verdicts (holder): C^{r.value} {r.status}, exact {r.witness['exact']} (not C^{r.witness['not_C^k']})   "
           f"{time.perf_counter() - t0:7.3f} s")
 
