@@ -112,7 +112,7 @@ ENTRIES = LazyEntries({
               "the paper's title ('An interpolating 4-point C2 ternary stationary subdivision scheme') and "
               "Beccari et al.'s summary ('Hassan et al. (2002) showed that we can achieve higher smoothness and "
               "smaller support for the so-called interpolating 4-point stationary scheme, by going from binary "
-              "(Dyn et al., 1987) to ternary'); both are checked in tests/test_issue12_mary.py. Internal "
+              "(Dyn et al., 1987) to ternary'); both are checked in tests/test_mary.py. Internal "
               "checks: interpolatory, symmetric, sum rules for every mu, and at mu = 1/27 it equals the "
               "ternary Lagrange (Dubuc-Deslauriers) scheme. Default mu = 1/27 (cubic reproduction, computed)."),
     "ternary-dd-4": lambda: SchemeEntry(

@@ -61,7 +61,7 @@ Algorithm
    enclosed with outward rounding. Masks with parameters must be substituted first.
 
 For ``m = 2`` this is an independent route to the binary :func:`analysis.regularity.sobolev.sobolev_exponent`
-(which always uses the stability reduction); ``tests/test_issue12_sobolev.py`` checks they agree on random masks.
+(which always uses the stability reduction); ``tests/test_sobolev_mary.py`` checks they agree on random masks.
 
 References
 ----------
