@@ -18,7 +18,7 @@ from analysis.regularity.strips import close_strip
 from analysis.stationary.difference import difference_symbol
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
-from test_issue12_strips import _quaternary  # noqa: E402  (the quaternary test family)
+from test_strips_arity import _quaternary  # noqa: E402  (the quaternary test family)
 
 R = sp.Rational
 MU = sp.Symbol("mu")

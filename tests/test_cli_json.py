@@ -1,13 +1,14 @@
-"""`--json` is exactly one JSON document on stdout, for every command, in a subprocess (issue 9.2).
+"""`--json` is exactly one JSON document on stdout, for every command (issue 9.2).
 
-Each command runs as ``python -m analysis ...`` so that output written by compiled libraries at
-the file-descriptor level (HiGHS prints its banner to the C stdout) is caught too. The inputs
-exercise the solver paths: the warm-started HiGHS LP (real invariant polytope), Clarabel's SOCP
+Each command runs through :func:`analysis.cli.main.main` with file descriptors 1 and 2 captured
+(``tests/cli_run.py``), so that output written by compiled libraries at the file-descriptor level is
+caught too; ``subdiv report --json`` and the solver-banner tests run ``python -m analysis ...`` in a
+fresh process (HiGHS prints its banner when the first ``Highs`` object of a process is built). The
+inputs exercise the solver paths: the warm-started HiGHS LP (real invariant polytope), Clarabel's SOCP
 (complex invariant polytope), Arb ball arithmetic (Daubechies D6), local worker processes and a
 Dask cluster. The second half tests the guard of :func:`analysis.cli.main.main` itself: whatever a
 library prints (Python ``print``, ``os.write(1, ...)``, C ``puts``) goes to stderr, in a
-subprocess and under pytest's ``capsys``/``capfd``, and ``subdiv ... | head`` stays quiet.
-"""
+subprocess and under pytest's ``capsys``/``capfd``, and ``subdiv ... | head`` stays quiet."""
 
 from __future__ import annotations
 
@@ -21,6 +22,7 @@ import textwrap
 import pytest
 
 from analysis.cli import main
+from tests.cli_run import run_cli
 
 FOUR_POINT = "-1/16,0,9/16,1,9/16,0,-1/16"          # the 4-point scheme, w = 1/16: alpha = 2 (LP path)
 #: c = 2a/(1+z)^2 has transition matrix T0 with the complex leading eigenvalue (15 + i sqrt(479))/16
@@ -95,7 +97,8 @@ CASES = {
                              lambda d: "deviation" in d["witness"]),
     "nonuniform-chamfer": (["nonuniform", "chamfer", "--levels", "4"], lambda d: "midpoint_deviation" in d["witness"]),
     "nonuniform-claims": (["nonuniform", "claims", "--seed", "000"], lambda d: len(d) > 0 and "status" in d[0]),
-    "check": (["check", "000"], lambda d: d["agree"] is True and d["claims"] > 0),
+    # one claim: the whole of every paper is checked by tests/test_report.py (and tests/test_claims_*.py)
+    "check": (["check", "000", "--claim", "000:S_2"], lambda d: d["agree"] is True and d["claims"] == 1),
     "new-paper": (["new-paper", os.path.join(__import__("tempfile").mkdtemp(), "p.toml")],        # issue 11
                   lambda d: d["wrote"].endswith("p.toml") and "smoothness profile" in d["kinds"]),
     "surface": (["surface", "--scheme", "box-111"],
@@ -113,9 +116,14 @@ CASES = {
 
 
 @pytest.mark.parametrize("name", sorted(CASES))
-def test_every_command_json_is_one_document(name):
+def test_every_command_json_is_one_document(name, capfd):
+    """In the test process (file descriptors captured: what a subprocess would print on stdout); a
+    fresh process is tested by the report case below and by the guard tests further down."""
     argv, ok = CASES[name]
-    data = run_json(*argv, "--json")
+    r = run_cli(capfd, *argv, "--json")
+    assert r.returncode == 0, r.stderr
+    assert "Traceback" not in r.stderr
+    data = json.loads(r.stdout)            # the whole of stdout: exactly one JSON document
     assert ok(data), data
 
 

@@ -15,6 +15,7 @@ about 700 lines.
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 import pytest
@@ -49,8 +50,10 @@ def _modules():
 MODULES = _modules()
 
 
-def _imports(name: str) -> set[str]:
-    """Every module ``name`` imports (absolute names, resolved, restricted to our packages)."""
+@functools.lru_cache(maxsize=None)
+def _imports(name: str) -> frozenset[str]:
+    """Every module ``name`` imports (absolute names, resolved, restricted to our packages); parsed when
+    a test asks (not at collection, in every test process)."""
     f, is_pkg = MODULES[name]
     tree = ast.parse(f.read_text(encoding="utf-8"))
     base = name.split(".") if is_pkg else name.split(".")[:-1]
@@ -74,7 +77,7 @@ def _imports(name: str) -> set[str]:
                 t = t.rpartition(".")[0]
             if t and t.split(".")[0] in PACKAGES and t != name:
                 found.add(t)
-    return found
+    return frozenset(found)
 
 
 def _layer(mod: str) -> str | None:
@@ -113,12 +116,15 @@ def _violation(src: str, dst: str) -> str | None:
     return None
 
 
-GRAPH = {m: _imports(m) for m in MODULES}
+@functools.lru_cache(maxsize=None)
+def _graph() -> dict[str, frozenset[str]]:
+    """The module import graph: module -> the modules it imports."""
+    return {m: _imports(m) for m in MODULES}
 
 
 @pytest.mark.parametrize("module", sorted(MODULES))
 def test_imports_respect_the_layers(module):
-    bad = [(dst, why) for dst in sorted(GRAPH[module]) if (why := _violation(module, dst))]
+    bad = [(dst, why) for dst in sorted(_imports(module)) if (why := _violation(module, dst))]
     assert not bad, "\n".join(f"{module} imports {dst}: {why}" for dst, why in bad)
 
 
@@ -133,7 +139,7 @@ def test_no_import_cycles():
         counter[0] += 1
         stack.append(v)
         on.add(v)
-        for w in GRAPH[v]:
+        for w in _graph()[v]:
             if w not in index:
                 visit(w)
                 low[v] = min(low[v], low[w])
@@ -150,7 +156,7 @@ def test_no_import_cycles():
             if len(comp) > 1:
                 sccs.append(sorted(comp))
 
-    for v in sorted(GRAPH):
+    for v in sorted(_graph()):
         if v not in index:
             visit(v)
     # a package __init__ re-exporting its submodules, whose submodules import the package's
@@ -161,7 +167,7 @@ def test_no_import_cycles():
 
 def _package_edge_only(comp):
     for m in comp:
-        for w in GRAPH[m]:
+        for w in _graph()[m]:
             if w in comp and not (m.startswith(w + ".") or w.startswith(m + ".")):
                 yield False
                 return

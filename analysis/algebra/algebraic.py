@@ -251,7 +251,14 @@ class RealAlgebraic:
         if pm == 0:
             self.a = self.b = m
             return
-        if self.poly.count_roots(self.a, m) > 0:
+        pa = self.poly.eval(self.a)
+        if pa != 0:
+            # the one root in [a, b] is simple (square-free polynomial): it lies in (a, m) exactly when
+            # the polynomial changes sign there (the same answer as counting roots, without a Sturm sequence)
+            inside = (pa > 0) != (pm > 0)
+        else:
+            inside = self.poly.count_roots(self.a, m) > 0
+        if inside:
             self.b = m
         else:
             self.a = m

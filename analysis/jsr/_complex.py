@@ -128,20 +128,17 @@ def socp_norm(Vm: np.ndarray, x: np.ndarray) -> tuple[float, np.ndarray, np.ndar
     import clarabel
 
     n, m = Vm.shape
-    # variables: a (m), b (m), s (m)
-    Are = np.hstack([Vm.real, -Vm.imag, np.zeros((n, m))])
-    Aim = np.hstack([Vm.imag, Vm.real, np.zeros((n, m))])
-    rows = [sps.csc_matrix(np.vstack([Are, Aim]))]
-    cones = [clarabel.ZeroConeT(2 * n)]
-    blocks = []
-    for j in range(m):
-        E = sps.lil_matrix((3, 3 * m))
-        E[0, 2 * m + j] = -1.0
-        E[1, j] = -1.0
-        E[2, m + j] = -1.0
-        blocks.append(E)
-        cones.append(clarabel.SecondOrderConeT(3))
-    A = sps.vstack(rows + blocks).tocsc()
+    # variables: a (m), b (m), s (m); rows: [Re V, -Im V, 0; Im V, Re V, 0] (a + ib) = x, then for each
+    # vertex j the cone rows -(s_j, a_j, b_j) (built as one coordinate list: the same canonical CSC
+    # matrix as stacking the blocks, without m small sparse matrices)
+    dense = np.vstack([np.hstack([Vm.real, -Vm.imag]), np.hstack([Vm.imag, Vm.real])])
+    r0, c0 = np.nonzero(dense)
+    j = np.arange(m)
+    rows = np.concatenate([r0, 2 * n + 3 * j, 2 * n + 3 * j + 1, 2 * n + 3 * j + 2])
+    cols = np.concatenate([c0, 2 * m + j, j, m + j])
+    vals = np.concatenate([dense[r0, c0], -np.ones(3 * m)])
+    A = sps.csc_matrix((vals, (rows, cols)), shape=(2 * n + 3 * m, 3 * m))
+    cones = [clarabel.ZeroConeT(2 * n)] + [clarabel.SecondOrderConeT(3) for _ in range(m)]
     b = np.concatenate([x.real, x.imag, np.zeros(3 * m)])
     q = np.concatenate([np.zeros(2 * m), np.ones(m)])
     P = sps.csc_matrix((3 * m, 3 * m))

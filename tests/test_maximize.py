@@ -9,8 +9,6 @@ exact JSR route (:func:`holder_exponent`), an independent code path.
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
 import sympy as sp
@@ -18,6 +16,7 @@ import sympy as sp
 from analysis.algebra.derive import derive_mask
 from analysis.regularity import holder_exponent
 from analysis.regularity.maximize import maximize_holder
+from tests.cli_run import run_cli
 
 R = sp.Rational
 
@@ -54,13 +53,11 @@ def test_two_parameters_is_inconclusive():
     assert r.status == "inconclusive" and "family too large" in r.provenance["message"]
 
 
-def test_cli_maximize_json():
-    out = subprocess.run([sys.executable, "-m", "analysis", "derive", "--support", "7", "--interpolatory",
-                          "--symmetric", "primal", "--reproduce", "1", "--maximize", "holder",
-                          "--within=-1/8,0", "--gap", "1/100", "--json"], capture_output=True, text=True)
+def test_cli_maximize_json(capfd):
+    out = run_cli(capfd, "derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+                  "--maximize", "holder", "--within=-1/8,0", "--gap", "1/100", "--json")
     d = json.loads(out.stdout)
     assert d["maximize"]["status"] == "certified" and d["maximize"]["maximiser"] == "-1/16"
-    bad = subprocess.run([sys.executable, "-m", "analysis", "derive", "--support", "7", "--interpolatory",
-                          "--symmetric", "primal", "--reproduce", "1", "--maximize", "holder"],
-                         capture_output=True, text=True)
+    bad = run_cli(capfd, "derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+                  "--maximize", "holder")
     assert bad.returncode == 2 and bad.stderr.startswith("subdiv: error: --maximize needs --within")

@@ -10,8 +10,6 @@ its local subdivision matrix has eigenvalues among 1, 1/m, ..., 1/m^d (Dyn–Lev
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
 import sympy as sp
@@ -32,6 +30,7 @@ from analysis.stationary.difference import difference_norm, difference_symbol, s
 from analysis.stationary.transition import (basic_limit_support, local_eigenvalues, local_subdivision_matrix,
                                             transition_matrices)
 from analysis.stationary.refinement import refine
+from tests.cli_run import run_cli
 
 R = sp.Rational
 MU = sp.Symbol("mu")
@@ -270,22 +269,19 @@ def _run(*argv):
 
 
 @pytest.mark.parametrize("bad", ["1", "0", "x", "2.5", "-3"])
-def test_cli_bad_arity_one_line(bad):
-    p = subprocess.run([sys.executable, "-m", "analysis", "holder", "--mask", "1,1", f"--arity={bad}"],
-                       capture_output=True, text=True)
+def test_cli_bad_arity_one_line(bad, capfd):
+    p = run_cli(capfd, "holder", "--mask", "1,1", f"--arity={bad}")
     assert p.returncode == 2 and p.stdout == ""
     assert p.stderr.count("\n") == 1 and p.stderr.startswith("subdiv: error: --arity must be an integer >= 2")
 
 
-def test_cli_mary_json_and_binary_only_commands():
-    p = subprocess.run([sys.executable, "-m", "analysis", "holder", "--scheme", "ternary-bspline-3", "--C", "2",
-                        "--json"], capture_output=True, text=True)
+def test_cli_mary_json_and_binary_only_commands(capfd):
+    p = run_cli(capfd, "holder", "--scheme", "ternary-bspline-3", "--C", "2", "--json")
     doc = json.loads(p.stdout)
     assert doc["arity"] == 3 and doc["alpha"]["value"] == 3 and doc["smoothness"]["value"] is True
-    # atlas takes m-ary input since the second half of issue 12 (tests/test_issue12_mary_claims.py):
+    # atlas takes m-ary input since the second half of issue 12 (tests/test_arity_claims.py):
     # a missing axis is still a one-line error
-    p = subprocess.run([sys.executable, "-m", "analysis", "atlas", "--scheme", "ternary-bspline-2"],
-                       capture_output=True, text=True)
+    p = run_cli(capfd, "atlas", "--scheme", "ternary-bspline-2")
     assert p.returncode == 2 and "give both axes" in p.stderr and p.stderr.count("\n") == 1
 
 
@@ -314,13 +310,11 @@ def test_cli_list_mary_and_sobolev():
     rows = {r["slug"]: r for r in json.loads(out)["schemes"]}
     assert rows["ternary-four-point"]["arity"] == 3 and "arity" not in rows["chaikin"]
     rc, out, _ = _run("holder", "--scheme", "ternary-bspline-2", "--sobolev", "--json")
-    s2 = json.loads(out)["sobolev"]                # B-spline of degree 2: s_2 = 5/2 (tests/test_issue12_sobolev.py)
+    s2 = json.loads(out)["sobolev"]                # B-spline of degree 2: s_2 = 5/2 (tests/test_sobolev_arity.py)
     assert rc == 0 and (s2["status"], s2["value"]) == ("certified", "5/2")
 
 
-def test_cli_arity_two_is_byte_identical():
-    p1 = subprocess.run([sys.executable, "-m", "analysis", "factor", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2"],
-                        capture_output=True, text=True)
-    p2 = subprocess.run([sys.executable, "-m", "analysis", "factor", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2",
-                         "--arity", "2"], capture_output=True, text=True)
+def test_cli_arity_two_is_byte_identical(capfd):
+    p1 = run_cli(capfd, "factor", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2")
+    p2 = run_cli(capfd, "factor", "--mask", "1/4,3/4,3/4,1/4", "--start", "-2", "--arity", "2")
     assert p1.returncode == 0 and p1.stdout == p2.stdout and p1.stderr == p2.stderr

@@ -26,7 +26,7 @@ from analysis.levels.ck import level_smoothness
 from analysis.levels.level_dependent import H, LevelDependentScheme
 from analysis.result import CERTIFIED, AnalysisError
 from schemes.level_dependent import T, get
-from tests.test_issue12_levels_one_implementation import _run
+from tests.test_levels_one_implementation import _run
 
 
 def _degree_from_support(s) -> int:
@@ -36,7 +36,7 @@ def _degree_from_support(s) -> int:
     return (n - 1) // (m - 1) - 1
 
 
-# ternary degree 1-3 trig: tests/test_issue12_level_mary_catalogue.py; all 12: benchmarks/bench_level_arity.py
+# ternary degree 1-3 trig: tests/test_catalogue_level_arity.py; all 12: benchmarks/bench_level_arity.py
 @pytest.mark.parametrize("slug", ["quaternary-exp-bspline-2-hyp", "quaternary-exp-bspline-1-trig"])
 def test_true_smoothness_certified_both_ways(slug):
     s = get(slug)

@@ -22,7 +22,7 @@ from analysis.levels.ck import level_smoothness
 from analysis.levels.reproduction import generation
 from analysis.result import CERTIFIED, AnalysisError
 from schemes.level_dependent import ARITY_ENTRIES, T, get
-from tests.test_issue12_levels_one_implementation import _run
+from tests.test_levels_one_implementation import _run
 
 Z = sp.Symbol("z")
 
@@ -66,7 +66,7 @@ def test_exact_generation(slug):
 
 @pytest.mark.parametrize("d", [1, 2, 3])
 def test_ck_verdicts_ternary_trig(d):
-    # since the m-ary C^k chain (tests/test_issue12_level_ck_mary.py): the true C^(d-1), certified both ways
+    # since the m-ary C^k chain (tests/test_level_ck_arity.py): the true C^(d-1), certified both ways
     # (d = 3 stopped at C^1 before: the direct series with weight 3^(2n) diverges, a^n - a = O(h^2))
     r = level_smoothness(get(f"ternary-exp-bspline-{d}-trig"), {"t": 1})
     assert r.status == CERTIFIED and r.value == d - 1

@@ -141,18 +141,17 @@ def test_ternary_c1_range_grows_beyond_the_norm_sets():
     assert smoothness(a.subs({sp.Symbol("mu"): q}), 1, arity=3).value is True
 
 
-def _run(*argv):
-    import subprocess
-    import sys
+def _run(capfd, *argv):
+    from tests.cli_run import run_cli
 
-    return subprocess.run([sys.executable, "-m", "analysis", *argv], capture_output=True, text=True)
+    return run_cli(capfd, *argv)
 
 
-def test_family_file_round_trip(tmp_path):
+def test_family_file_round_trip(tmp_path, capfd):
     from analysis.cli.family import read_family
 
     f = tmp_path / "fam.json"
-    out = _run("derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+    out = _run(capfd, "derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
                "--output", str(f))
     assert out.returncode == 0 and "family written to" in out.stdout
     doc = read_family(str(f))
@@ -160,7 +159,7 @@ def test_family_file_round_trip(tmp_path):
     mask = LaurentSymbol.from_mask(doc["mask"], start=doc["start"])
     t = mask.params[0]
     assert mask == FOUR_POINT.subs({W: -t})            # t1 = -w (the tension family)
-    r = _run("range", "--family", str(f), "--C", "1", "--within=-1/8,0", "--grid", "4", "--json")
+    r = _run(capfd, "range", "--family", str(f), "--C", "1", "--within=-1/8,0", "--grid", "4", "--json")
     assert r.returncode == 0, r.stderr
     import json
 
@@ -175,19 +174,19 @@ def test_family_file_round_trip(tmp_path):
     ('{"format": "subdiv-family", "arity": 2, "start": 0, "mask": []}', "non-empty list"),
     ('{"format": "subdiv-family", "arity": 2, "start": "0", "mask": ["1"]}', "'start' missing"),
 ], ids=["missing", "json", "format", "empty-mask", "start"])
-def test_bad_family_file_is_one_line_error(tmp_path, content, msg):
+def test_bad_family_file_is_one_line_error(tmp_path, content, msg, capfd):
     f = tmp_path / "bad.json"
     if content is not None:
         f.write_text(content)
-    r = _run("range", "--family", str(f), "--C", "1", "--within=0,1")
+    r = _run(capfd, "range", "--family", str(f), "--C", "1", "--within=0,1")
     assert r.returncode == 2 and r.stdout == ""
     assert r.stderr.startswith("subdiv: error:") and msg in r.stderr and len(r.stderr.strip().splitlines()) == 1
 
 
-def test_family_excludes_other_inputs(tmp_path):
+def test_family_excludes_other_inputs(tmp_path, capfd):
     f = tmp_path / "fam.json"
-    _run("derive", "--support", "3", "--symmetric", "primal", "--sum-rules", "1", "--output", str(f))
-    r = _run("atlas", "--family", str(f), "--mask", "1,1", "--x", "t1=0:1:2", "--y", "t1=0:1:2")
+    _run(capfd, "derive", "--support", "3", "--symmetric", "primal", "--sum-rules", "1", "--output", str(f))
+    r = _run(capfd, "atlas", "--family", str(f), "--mask", "1,1", "--x", "t1=0:1:2", "--y", "t1=0:1:2")
     assert r.returncode == 2 and "--family replaces the scheme input" in r.stderr
 
 
@@ -233,11 +232,11 @@ def test_maximize_two_parameters_finds_the_exceptional_line():
     assert h.value is False
 
 
-def test_cli_maximize_box_errors():
-    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+def test_cli_maximize_box_errors(capfd):
+    r = _run(capfd, "derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
              "--maximize", "holder", "--box", "t1=0,1/32")
     assert r.returncode == 2 and "give a range for every free parameter (t1, t2)" in r.stderr
-    r = _run("derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+    r = _run(capfd, "derive", "--support", "11", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
              "--maximize", "holder", "--box", "t1:0,1")
     assert r.returncode == 2 and "malformed --box" in r.stderr
 

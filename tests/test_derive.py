@@ -7,8 +7,6 @@ interpolation in sympy, the pseudo-spline formula, binomials) or quoted from the
 from __future__ import annotations
 
 import json
-import subprocess
-import sys
 
 import pytest
 import sympy as sp
@@ -18,6 +16,7 @@ from analysis.algebra.derive import InconsistentRequirements, derive_mask, max_s
 from analysis.algebra.linear_forms import LinearForm
 from analysis.algebra.symbol import LaurentSymbol
 from analysis.result import AnalysisError
+from tests.cli_run import run_cli
 
 R = sp.Rational
 
@@ -167,11 +166,10 @@ def test_constructions():
         [R(-7, 128), R(105, 128), R(35, 128), R(-5, 128)], [R(-5, 128), R(35, 128), R(105, 128), R(-7, 128)], first=-1)
 
 
-def test_cli_derive_json_and_error():
-    out = subprocess.run([sys.executable, "-m", "analysis", "derive", "--support", "7", "--interpolatory",
-                          "--symmetric", "primal", "--reproduce", "1", "--json"], capture_output=True, text=True)
+def test_cli_derive_json_and_error(capfd):
+    out = run_cli(capfd, "derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1",
+                  "--json")
     d = json.loads(out.stdout)
     assert d["dimension"] == 1 and d["mask"] == "t1,0,1/2 - t1,1,1/2 - t1,0,t1"
-    bad = subprocess.run([sys.executable, "-m", "analysis", "derive", "--support", "5", "--interpolatory",
-                          "--sum-rules", "3"], capture_output=True, text=True)
+    bad = run_cli(capfd, "derive", "--support", "5", "--interpolatory", "--sum-rules", "3")
     assert bad.returncode == 2 and bad.stderr.count("\n") == 1 and "interpolatory; sum rules of order 3" in bad.stderr

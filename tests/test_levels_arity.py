@@ -107,7 +107,7 @@ def test_arity_two_equals_binary_code():
 
 def test_smoothness_c1_and_not_c2(exp3):
     # C^2 was undecided before the m-ary C^k chain; the limit is not C^2 and the scheme is a ternary exponential
-    # B-spline scheme of order 3, so "not C^2" is now certified (tests/test_issue12_level_ck_mary.py)
+    # B-spline scheme of order 3, so "not C^2" is now certified (tests/test_level_ck_arity.py)
     r = level_smoothness(exp3, {"theta": sp.pi / 2})
     assert r.value == 1 and r.status == CERTIFIED
     last = r.witness["verdicts"][-1]
@@ -138,7 +138,7 @@ def test_bad_input():
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1])
     assert rc != 0 and err.startswith("subdiv: error: undefined name(s) theta")
     rc, out, err = _run("series", "--arity", "3", "--symbol", SYM3, "--where", WHERE3[0], "--where", WHERE3[1],
-                        "--param", "theta=1", "--C", "1")      # --difference works since round 2 (test_issue12_round2)
+                        "--param", "theta=1", "--C", "1")      # --difference works since round 2 (test_level_arity_claims)
     assert rc != 0 and "not available for m-ary" in err
     rc, out, err = _run("series", "--arity", "1", "--symbol", SYM3)
     assert rc != 0 and "--arity must be an integer >= 2" in err

@@ -88,7 +88,7 @@ def test_arity_mismatch_in_python():
 def test_parametric_ternary_limit_ternary_four_point():
     # the catalogue's ternary-four-point family (mask typed from memory of Hassan-Ivrissimtzis-Dodgson-Sabin 2002,
     # NOT checked against the paper) has the C^2 set exactly (1/15, 1/9), certified by this code on both sides
-    # (tests/test_issue12_strips.py, `subdiv range --scheme ternary-four-point --C 2`); perturbed by 3^-n/100 at
+    # (tests/test_strips_arity.py, `subdiv range --scheme ternary-four-point --C 2`); perturbed by 3^-n/100 at
     # level n, the limit is that scheme: C^2 on a box inside the set, not certified on a box through mu = 1/9
     # (the limit's exact m-ary norm sets decide the sub-boxes)
     mask = ["-1/18+m/6", "-1/18-m/6", "0", "7/18-m/2", "13/18+m/2", "1", "13/18+m/2", "7/18-m/2", "0",

@@ -137,7 +137,7 @@ def _paper(kind, fields, arity=3, mask=None):
 
 
 def test_binary_kinds_refuse_mary_schemes_at_load_time():
-    # every stationary kind is m-ary since the m-ary Sobolev exponent (tests/test_issue12_sobolev.py): the
+    # every stationary kind is m-ary since the m-ary Sobolev exponent (tests/test_sobolev_arity.py): the
     # sobolev claim is now evaluated (s_2 = 2.2105... at mu = 1/27, between alpha = 1.817... and alpha + 1/2)
     v = evaluate_paper(_paper("sobolev", 'at = { mu = "1/27" }\nlower = 2\nupper = 3'))[0].verdict
     assert v.status == "certified"
