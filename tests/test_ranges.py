@@ -35,10 +35,17 @@ def test_too_wide_interval_refuted_at_a_certified_point(dfh):
     assert smoothness(dfh.subs({"omega": q}), 2).value is False     # independent re-check
 
 
-def test_interval_reaching_the_true_boundary_is_not_overclaimed(dfh):
-    """Up to 0.0214 (omega* ~ 0.021464) the norm tests cannot cover everything: inconclusive."""
+def test_interval_reaching_the_true_boundary_is_proven_and_not_overclaimed(dfh):
+    """Up to 0.0214 (omega* ~ 0.021464) the exact norm sets and the Arb boxes cannot cover
+    everything; the parametric norms with the invariant polytope on the strip next to omega* do.
+    Past omega* the claim is refuted at a certified point beyond it."""
     r = verify_smoothness_interval(dfh, 2, (Q(1, 100), Q(214, 10000)), max_boxes=60, samples=2)
-    assert r.value is None and r.status == "inconclusive"
+    assert r.value is True and r.status == "certified", r.witness
+    assert r.witness["route"] == "parametric norm tests and invariant polytopes on sub-intervals"
+    r = verify_smoothness_interval(dfh, 2, (Q(1, 100), Q(216, 10000)), max_boxes=60, samples=2)
+    assert r.value is False and r.status == "refuted"
+    w, q = sp.Symbol("w"), r.witness["counterexample"]
+    assert (327680 * w**4 + 25600 * w**3 + 352 * w**2 + 24 * w - 1).subs(w, q) > 0     # beyond omega*
 
 
 def test_bad_input(dfh):

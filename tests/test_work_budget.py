@@ -114,6 +114,7 @@ def test_hoist_timing_moves_every_timing_to_the_top():
 #: every function of the engine that reads a clock; each may only fill a timing field (a
 #: ``"timing"`` entry, a ``seconds`` record of the claim evaluation, or text printed to stderr)
 ALLOWED_CLOCKS = {
+    ("analysis/cli/vertex.py", "cmd_vertex"),
     ("analysis/jsr/__init__.py", "jsr_bounds"),
     ("analysis/jsr/_search.py", "smp_search"),
     ("analysis/regularity/atlas.py", "evaluate_point"),

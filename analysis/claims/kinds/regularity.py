@@ -262,11 +262,7 @@ class Sobolev(_ValueClaim):
     any_arity = True
 
     def compute(self, a) -> Result:
-        if self.arity != 2:                       # s_2 = -(1/2) log_m lambda (issue 12)
-            from ...regularity.sobolev import sobolev_exponent
-
-            return sobolev_exponent(a, arity=self.arity)
-        return sobolev_exponent(a)
+        return sobolev_exponent(a, arity=self.arity)      # s_2 = -(1/2) log_m lambda
 
 
 class NormTest(Kind):
