@@ -32,8 +32,8 @@ Examples
 >>> a.lam_exact, a.reif_ok, a.curvature, a.curvature_status
 (sqrt(5)/16 + 5/16, True, 'bounded', 'certified')
 >>> b = analyse(scheme_rules("loop", ring=1), 5)
->>> b.mu_vs_lam2, b.curvature, b.curvature_reason[:47]
-('=', 'inconclusive', 'mu = lambda^2, but the eigenfunction of block 0')
+>>> b.mu_vs_lam2, b.curvature, b.curvature_reason[:45]
+('=', 'inconclusive', 'mu = lambda^2, but eigenfunctions on the ring')
 
 References
 ----------
@@ -412,6 +412,9 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
     if big:
         a.mu = max(big, key=lambda e: e.modulus.lower())
         a.mu_vs_lam2 = ">"
+        if not _ring_evaluated(rules):
+            _inconclusive(a, f"mu > lambda^2, but {RING_NOT_EVALUATED}", final=True)
+            return
         for e in sorted(big, key=lambda e: -float(e.modulus.lower())):
             vecs = _arb_eigenvectors(rules, n, e)
             ok, why = _nonzero_on_ring(rules, n, e, vecs, a.prec)
@@ -435,6 +438,9 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
                          "(exact equality is decided when lambda is a polynomial in cos(2 pi/n))")
         return
     a.mu, a.mu_vs_lam2 = tied[0], "="
+    if not _ring_evaluated(rules):
+        _inconclusive(a, f"mu = lambda^2, but {RING_NOT_EVALUATED}", final=True)
+        return
     lam_c1 = _lambda_in_c1(top, a.lam_exact)
     groups: dict = {}
     for e, sign in zip(tied, signs):
@@ -464,6 +470,15 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
         return
     a.notes.append(nonzero)
     a.curvature, a.curvature_status = "bounded", "certified"
+
+
+RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for quad and triangle rules on the "
+                      "2-ring (give --ring 2)")
+
+
+def _ring_evaluated(rules: LocalRules) -> bool:
+    """Whether eigenfunctions on the ring are evaluated for these rules (segment patches as in :mod:`.charmap`)."""
+    return rules.ring == 2 and rules.lattice in ("quad", "triangle")
 
 
 def _inconclusive(a: VertexAnalysis, reason: str, final: bool = False) -> None:
@@ -497,9 +512,8 @@ def _nonzero_on_ring(rules: LocalRules, n: int, e: Eigenvalue, vectors: list, pr
 
     from .charmap import segment_ordinates
 
-    if rules.ring != 2 or rules.lattice not in ("quad", "triangle"):
-        return False, (f"the eigenfunction of block {e.k} on the ring is not evaluated for these rules "
-                       "(it is for quad and triangle rules on the 2-ring)")
+    if not _ring_evaluated(rules):
+        return False, RING_NOT_EVALUATED
     if not vectors:
         return False, f"no eigenvector of block {e.k} could be enclosed"
     old = ctx.prec
