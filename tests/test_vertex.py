@@ -6,12 +6,12 @@ Literature values (each with its source) are checks of the computation, never in
 * Loop: subdominant eigenvalue 3/8 + cos(2 pi/n)/4 (Loop 1987; Peters–Reif, Subdivision Surfaces, 2008,
   ch. 6); Catmull–Clark: (c + 5 + sqrt((c + 9)(c + 1)))/16, c = cos(2 pi/n) (Stam 1998; Peters–Reif 2008);
   Doo–Sabin: 1/2 and 1/4 on the n-gon (Doo–Sabin 1978).
-* Curvature (Karčiauskas–Peters–Reif, Shape characterization of subdivision surfaces — case studies,
-  CAGD 21 (2004); Peters–Reif 2008, ch. 7; the statements as we read them, to be re-checked against the
-  papers' tables when they are at hand): Catmull–Clark has mu > lambda^2 (unbounded curvature) for
+* Curvature — UNVERIFIED literature checks, written from memory of Karčiauskas–Peters–Reif, Shape
+  characterization of subdivision surfaces — case studies, CAGD 21 (2004) and Peters–Reif 2008, ch. 7;
+  a search of the available references did not confirm them; re-check against the papers' tables: Catmull–Clark has mu > lambda^2 (unbounded curvature) for
   n >= 5 and a flat spot (mu < lambda^2) at n = 3; Loop has mu > lambda^2 for n >= 7 (the block-2
   eigenvalue 3/8 + cos(4 pi/n)/4) and at n = 3 (the 2-ring eigenvalue 1/8 > 1/16 = lambda^2), while Loop's
-  beta_n makes the block-0 eigenvalue equal lambda^2 (bounded curvature at n = 4, 5).
+  beta_n makes the block-0 eigenvalue equal lambda^2 (bounded curvature at n = 4..6; 6 is regular).
 """
 
 from __future__ import annotations
@@ -66,7 +66,7 @@ def test_loop_eigen_conditions_certified(n):
     assert sp.simplify(a.lam_exact - (sp.Rational(3, 8) + sp.cos(2 * sp.pi / n) / 4)) == 0
 
 
-# (scheme, n): mu against lambda^2, as the literature states it (module docstring)
+# (scheme, n): mu against lambda^2, as we recall the literature (module docstring: unverified)
 CURVATURE = {("loop", 3): ">", ("loop", 4): "=", ("loop", 5): "=", ("loop", 6): "=", ("loop", 7): ">",
              ("loop", 10): ">", ("catmull-clark", 3): "<", ("catmull-clark", 4): "=",
              ("catmull-clark", 5): ">", ("catmull-clark", 6): ">", ("catmull-clark", 7): ">"}
@@ -77,7 +77,8 @@ def test_curvature_behaviour_matches_the_literature(key):
     name, n = key
     a = analyse(scheme_rules(name, ring=2, n=n), n)
     assert a.reif_ok
-    assert (a.mu_vs_lam2, a.curvature_status) == (CURVATURE[key], "certified")
+    verdict = {"<": "zero", "=": "bounded", ">": "unbounded"}[CURVATURE[key]]
+    assert (a.mu_vs_lam2, a.curvature, a.curvature_status) == (CURVATURE[key], verdict, "certified")
 
 
 def test_doo_sabin_curvature_is_not_claimed():
@@ -295,3 +296,102 @@ def test_cli_vertex_figure(tmp_path, capsys):
     assert path.stat().st_size > 0 and capsys.readouterr().out.rstrip().endswith(f"figure: {path}")
     assert main(["vertex", "--scheme", "loop", "--valence", "4", "--figure", str(tmp_path / "x.txt")]) == 2
     assert "not an image format" in capsys.readouterr().err
+
+
+def test_exact_lambda_needs_its_ball_not_a_float_match():
+    """A root is the exact value only if the ball contains it (rational) or its Arb value meets this
+    isolating ball and no other; a float within 1e-12 of the ball's midpoint is not enough."""
+    from flint import acb, arb
+
+    from analysis.vertex.spectrum import _exact_root
+
+    quarter = sp.Poly(lam - sp.Rational(1, 4), lam)
+    near = acb(arb(0.25 + 2.0 ** -50, 2.0 ** -60))                 # misses 1/4 by ~1e-15
+    assert _exact_root(quarter, near, 4, 1, [near]) is None
+    exact = acb(arb(0.25, 2.0 ** -60))
+    assert _exact_root(quarter, exact, 4, 1, [exact]) == sp.Rational(1, 4)
+    root2 = sp.Poly(lam ** 2 - 2, lam)
+    miss, other = acb(arb(2).sqrt() + 2.0 ** -50), acb(-arb(2).sqrt())
+    assert _exact_root(root2, miss, 4, 1, [miss, other]) is None
+    hit = acb(arb(2).sqrt())
+    assert _exact_root(root2, hit, 4, 1, [hit, other]) == sp.sqrt(2)
+
+
+@pytest.mark.parametrize("n, value", [(3, (9 + sp.sqrt(17)) / 32), (6, (11 + sp.sqrt(57)) / 32)])
+def test_catmull_clark_exact_lambda_is_certified_where_the_double_misses_the_ball(n, value):
+    a = analyse(scheme_rules("catmull-clark", ring=2), n)
+    assert sp.simplify(a.lam_exact - value) == 0
+
+
+def test_a_jordan_block_at_lambda_squared_is_not_bounded_curvature(monkeypatch):
+    """Catmull–Clark n = 4: lambda^2 = 1/4 is double in block 2 and semisimple (bounded curvature). Block 2
+    replaced by its companion matrix (same characteristic polynomial, so the same spectrum, but one Jordan
+    block per eigenvalue) must not be called bounded."""
+    import analysis.vertex.spectrum as spec
+
+    rules = scheme_rules("catmull-clark", ring=2)
+    a = analyse(rules, 4)
+    assert (a.curvature, a.curvature_status) == ("bounded", "certified")
+    assert any("semisimple in block 2" in x for x in a.notes)
+    orig = spec.fourier_block
+
+    def companion(r, k, n):
+        B = orig(r, k, n)
+        if (k, n) != (2, 4):
+            return B
+        co = sp.Poly(B.charpoly(lam).as_expr(), lam).all_coeffs()[::-1]       # monic, constant first
+        m = B.rows
+        C = sp.zeros(m, m)
+        for i in range(1, m):
+            C[i, i - 1] = 1
+        for i in range(m):
+            C[i, m - 1] = -co[i]
+        return C
+
+    monkeypatch.setattr(spec, "fourier_block", companion)
+    b = analyse(rules, 4)
+    assert b.mu_vs_lam2 == "=" and (b.curvature, b.curvature_status) == ("inconclusive", "inconclusive")
+    assert "not semisimple in block 2" in b.curvature_reason
+
+
+def test_curvature_needs_an_eigenfunction_nonzero_on_the_ring(monkeypatch):
+    """Loop n = 3: mu = 1/8 > lambda^2 = 1/16 (a 2-ring eigenvalue); its eigenfunctions in blocks 0 and 1
+    are certified nonzero on the ring. If they vanished there, mu would not decide the curvature."""
+    from flint import acb
+
+    import analysis.vertex.spectrum as spec
+    from analysis.vertex.charmap import eigenvector, segment_ordinates
+
+    rules = scheme_rules("loop", ring=2, n=3)
+    a = analyse(rules, 3)
+    assert (a.curvature, a.curvature_status) == ("unbounded", "certified")
+    assert a.mu.ball.overlaps(acb(1) / 8)
+    eighth = [e for e in a.eigenvalues if e.ball.overlaps(acb(1) / 8)]
+    assert sorted(e.k for e in eighth) == [0, 1]
+    for e in eighth:
+        ords = segment_ordinates(rules, 3, eigenvector(rules, 3, e.ball, e.k), e.ball, e.k)
+        assert any(not x.contains(0) for x in ords)
+    zero = [acb(0)] * len(eigenvector(rules, 3, a.mu.ball, a.mu.k))
+    assert all(x.contains(0) for x in segment_ordinates(rules, 3, zero, a.mu.ball, a.mu.k))
+    monkeypatch.setattr(spec, "_arb_eigenvectors", lambda r, n, e: [[acb(0)] * len(zero)])
+    b = analyse(rules, 3)
+    assert b.mu_vs_lam2 == ">" and b.curvature == "inconclusive"
+    assert "certified nonzero" in b.curvature_reason
+
+
+def test_one_ring_rules_do_not_decide_bounded_or_unbounded_curvature():
+    """Loop's 1-ring misses the 2-ring eigenvalue 1/8 at n = 3 (mu = 1/16 = lambda^2 there): without the
+    eigenfunctions on the ring no bounded/unbounded verdict is given."""
+    a = analyse(scheme_rules("loop", ring=1), 3)
+    assert a.mu_vs_lam2 == "=" and (a.curvature, a.curvature_status) == ("inconclusive", "inconclusive")
+    assert "2-ring" in a.curvature_reason
+
+
+def test_c1_wording_generic_data_and_no_refutation_from_a_non_injective_map():
+    from analysis.vertex.valence import c1_verdict
+
+    a = analyse(scheme_rules("catmull-clark", ring=2), 5)
+    status, text = c1_verdict(a, {"status": "certified", "winding_number": 1, "precision_bits": 128})
+    assert status == "certified" and "generic initial data" in text and "Reif 1995" in text
+    status, text = c1_verdict(a, {"status": "refuted", "winding_number": -4, "precision_bits": 128})
+    assert status == "inconclusive" and "not injective" in text and "sufficient condition fails" in text

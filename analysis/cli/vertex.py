@@ -77,7 +77,8 @@ def _line(e: dict) -> str:
     r = e["reif"]
     parts.append("Reif: " + ("holds" if r["value"] else ("fails: " + r["witness"]["reason"]) if r["status"] == "certified"
                              else "undecided") + f" [{r['status']}]")
-    parts.append(f"curvature: {cv['value']} [{cv['status']}]")
+    why = cv["witness"].get("reason")
+    parts.append(f"curvature: {cv['value']}" + (f" ({why})" if why else "") + f" [{cv['status']}]")
     parts.append(f"C^1: {e['c1']['witness']['verdict']} [{e['c1']['status']}]")
     return "  ".join(parts)
 

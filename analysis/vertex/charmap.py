@@ -52,7 +52,8 @@ _BSPLINE_TO_BEZIER = ((1, 4, 1, 0), (0, 4, 2, 0), (0, 2, 4, 0), (0, 1, 4, 1))
 MAX_DEPTH = 5
 
 
-def _acb_entry(expr: sp.Expr, n: int):
+def _acb_entry(expr: sp.Expr, n: int, k: int = 1):
+    """An entry of Fourier block k (a Laurent polynomial in w = exp(2 pi i k/n)) as a complex ball."""
     from flint import acb, arb, fmpq
 
     c1 = arb.cos_pi_fmpq(fmpq(2, n))
@@ -63,28 +64,33 @@ def _acb_entry(expr: sp.Expr, n: int):
         for (i,), q in poly.terms():
             q = sp.Rational(q)
             val += arb(int(q.p)) / int(q.q) * c1 ** i
-        total += acb(val) * acb(fmpq(2 * l_, n)).exp_pi_i()
+        total += acb(val) * acb(fmpq(2 * l_ * k, n)).exp_pi_i()
     return total
 
 
-def eigenvector(rules: LocalRules, n: int, lam_ball) -> list:
-    """An Arb enclosure of block 1's eigenvector for lambda, normalised so that its first entry is 1:
-    the remaining entries solve all but one equation of ``(B - lambda I) v = 0``, for every lambda in the
-    ball (a solve that succeeds proves the reduced system nonsingular there)."""
+def eigenvector(rules: LocalRules, n: int, lam_ball, k: int = 1) -> list:
+    """An Arb enclosure of an eigenvector of Fourier block k for the eigenvalue in ``lam_ball`` (block 1 and
+    lambda: the characteristic map's), normalised so that one entry is 1 (the first one that works): the
+    remaining entries solve all but one equation of ``(B - lambda I) v = 0``, for every lambda in the ball
+    (a solve that succeeds proves the reduced system nonsingular there, so the eigenvalue is geometrically
+    simple in the block)."""
     from flint import acb, acb_mat
 
-    B = fourier_block(rules, 1, n)
+    B = fourier_block(rules, k, n)
     m = B.rows
-    M = [[_acb_entry(B[i, j], n) - (acb(lam_ball) if i == j else 0) for j in range(m)] for i in range(m)]
-    for drop in range(m):
-        rows = [i for i in range(m) if i != drop]
-        A = acb_mat([[M[i][j] for j in range(1, m)] for i in rows])
-        b = acb_mat([[-M[i][0]] for i in rows])
-        try:
-            x = A.solve(b)
-        except (ZeroDivisionError, ValueError):
-            continue
-        return [acb(1)] + [x[i, 0] for i in range(m - 1)]
+    M = [[_acb_entry(B[i, j], n, k) - (acb(lam_ball) if i == j else 0) for j in range(m)] for i in range(m)]
+    for one in range(m):
+        cols = [j for j in range(m) if j != one]
+        for drop in range(m):
+            rows = [i for i in range(m) if i != drop]
+            A = acb_mat([[M[i][j] for j in cols] for i in rows])
+            b = acb_mat([[-M[i][one]] for i in rows])
+            try:
+                x = A.solve(b)
+            except (ZeroDivisionError, ValueError):
+                continue
+            v = [x[i, 0] for i in range(m - 1)]
+            return v[:one] + [acb(1)] + v[one:]
     raise AnalysisError(f"the eigenvector of lambda at valence {n} could not be enclosed")
 
 
@@ -92,12 +98,14 @@ class _Net:
     """Level-0 and level-1 control points of the characteristic net (complex balls), sector 0 and its
     rotations."""
 
-    def __init__(self, rules: LocalRules, n: int, v: list, lam_ball):
+    def __init__(self, rules: LocalRules, n: int, v: list, lam_ball, k: int = 1):
         from flint import acb, fmpq
 
-        self.n, self.v, self.lam = n, v, acb(lam_ball)
+        off = 1 if (rules.centre and k == 0) else 0           # block 0 has the centre first
+        self.n, self.v, self.lam = n, v[off:], acb(lam_ball)
+        self.centre = v[0] if off else acb(0)
         self.index = {p: i for i, p in enumerate(rules.coords)}
-        self.rot = [acb(fmpq(2 * d, n)).exp_pi_i() for d in range(n)]
+        self.rot = [acb(fmpq(2 * d * k, n)).exp_pi_i() for d in range(n)]
         self.cache: dict = {}
 
     home = staticmethod(_quad_home)
@@ -109,7 +117,7 @@ class _Net:
     def level0(self, x, y):
         r, h = self._home(x, y)
         if h == (0, 0):
-            return 0 * r
+            return self.centre
         if h not in self.index:
             raise AnalysisError(f"level-0 point {h} is outside the rings")
         return r * self.v[self.index[h]]
@@ -117,7 +125,7 @@ class _Net:
     def level1(self, X, Y):
         r, (hx, hy) = self._home(X, Y)
         if (hx, hy) == (0, 0):
-            return 0 * r
+            return self.lam * self.centre
         if (hx, hy) in self.index:                 # in the 2-ring: lambda v (the eigen-relation)
             return r * self.lam * self.v[self.index[(hx, hy)]]
         if (hx, hy) not in self.cache:
@@ -235,7 +243,10 @@ def _arg_increment(ctrl: list, depth: int = 0):
 def _verdict(regular: bool, sign: int, pieces: int, curve: list, n: int, prec: int, arb, method: str) -> dict:
     """Winding number of the outer boundary (pieces of ``curve``, from sector 0's start to its rotation)
     and the status: certified (regular, winding = Jacobian sign), refuted (regular, other certified
-    winding number), inconclusive."""
+    winding number), inconclusive. "Refuted" is about injectivity only: an injective map of the ring
+    sends its outer boundary to a Jordan curve invariant under the rotation by 2 pi/n, which winds +-1
+    around the fixed point 0 (with the orientation of the Jacobian); it is not a claim that the scheme
+    is not C^1 (:func:`.valence.c1_verdict` reports that case inconclusive)."""
     incs = [_arg_increment(cp) for cp in curve]
     winding = None
     if all(x is not None for x in incs):
@@ -301,6 +312,25 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128
                         "winding number of the outer boundary")
     finally:
         ctx.prec = old
+
+
+def segment_ordinates(rules: LocalRules, n: int, v: list, mu_ball, k: int) -> list:
+    """The Bézier ordinates (complex balls) of the segment patches of the eigenfunction of block k with
+    eigenvector ``v`` (entries as in :func:`eigenvector`) for the eigenvalue in ``mu_ball``: the same nets
+    as the characteristic map's (bicubic patches on the quad lattice, quartic box-spline patches on the
+    triangle lattice; rules on the 2-ring), with sector j scaled by exp(2 pi i j k/n).
+
+    An ordinate that excludes 0 proves the eigenfunction nonzero on the segment (a polynomial patch with
+    a nonzero Bézier ordinate is not the zero polynomial)."""
+    from .boxspline import SUBTRIANGLES
+
+    if rules.ring != 2 or rules.lattice not in ("quad", "triangle"):
+        raise AnalysisError("eigenfunctions on the segment are evaluated for quad and triangle rules on the 2-ring")
+    if rules.lattice == "triangle":
+        net = _TriNet(rules, n, v, mu_ball, k)
+        return [x for st in SUBTRIANGLES[1:] for x in net.bezier_tri(*st)]
+    net = _Net(rules, n, v, mu_ball, k)
+    return [x for a, b in SEGMENT for row in net.bezier(a, b) for x in row]
 
 
 # --------------------------------------------------------------------------------------------------

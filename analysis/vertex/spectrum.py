@@ -18,14 +18,22 @@ The checks (Reif 1995; Peters–Reif 2008, ch. 5) are ball comparisons, never fl
 conjugate ball and no other), positive, simple in block 1 (hence double: blocks 1 and n - 1, and
 semisimple: two Jordan blocks of size 1); every other eigenvalue has a modulus certified below lambda.
 The subsubdominant ``mu`` (largest modulus after lambda) is compared with lambda^2 by balls, and an
-equality is decided exactly when lambda is rational-linear in ``C1`` (Loop) or both are rational.
+equality is decided exactly when lambda is rational-linear in ``C1`` (Loop) or both are rational. The
+exact value of lambda is a closed form accepted only when its Arb value meets lambda's isolating ball
+and no other (a rational one: when the ball contains it). Unbounded and bounded curvature also need the
+deciding eigenvalue's eigenfunction certified nonzero on the ring (Bézier ordinates of its segment
+patches, rules on the 2-ring), and mu = lambda^2 semisimple (exact rank); otherwise the curvature is
+inconclusive with the reason.
 
 Examples
 --------
 >>> from analysis.vertex.rules import scheme_rules
->>> a = analyse(scheme_rules("loop", ring=1), 5)
->>> a.lam_exact, a.reif_ok, a.curvature
-(sqrt(5)/16 + 5/16, True, 'bounded')
+>>> a = analyse(scheme_rules("loop", ring=2, n=5), 5)
+>>> a.lam_exact, a.reif_ok, a.curvature, a.curvature_status
+(sqrt(5)/16 + 5/16, True, 'bounded', 'certified')
+>>> b = analyse(scheme_rules("loop", ring=1), 5)
+>>> b.mu_vs_lam2, b.curvature, b.curvature_reason[:45]
+('=', 'inconclusive', 'mu = lambda^2, but eigenfunctions on the ring')
 
 References
 ----------
@@ -79,6 +87,8 @@ class VertexAnalysis:
     curvature: str = "inconclusive"
     curvature_status: str = "inconclusive"
     mu_vs_lam2: str = "?"
+    curvature_reason: str = ""
+    curvature_final: bool = False      # inconclusive for a reason that more precision does not remove
     prec: int = 0
     notes: list = field(default_factory=list)
 
@@ -196,18 +206,48 @@ def spectrum(rules: LocalRules, n: int, prec: int = 64) -> list[Eigenvalue] | No
 
 # --------------------------------------------------------------------------------------------------
 
-def _exact_root(F: sp.Poly, ball, n: int, k: int):
-    """The root of F(lam, cos(2 pi k/n)) in ``ball`` as a radical expression when deg F <= 2."""
+def exact_rational(x) -> sp.Rational:
+    """The exact rational value of an exact Arb number (an endpoint or midpoint: a binary float)."""
+    man, exp = x.mid().man_exp()
+    return sp.Integer(int(man)) * sp.Integer(2) ** int(exp)
+
+
+def _ball_has_rational(ball, q: sp.Rational) -> bool:
+    """Does the complex ball contain the rational q? (exact comparison with the ball's endpoints)"""
+    return bool(ball.imag.contains(0) and exact_rational(ball.real.lower()) <= q <= exact_rational(ball.real.upper()))
+
+
+def _exact_root(F: sp.Poly, ball, n: int, k: int, siblings: list, prec: int = 128):
+    """The root of F(lam, cos(2 pi k/n)) in ``ball`` as a radical expression when deg F <= 2, or None.
+
+    ``siblings`` are the isolating balls of all roots of F in block k (one root in each). A rational
+    root is accepted only if ``ball`` contains it exactly. Any other root expression is evaluated in Arb
+    (:func:`.valence.arb_value`, refined up to 4 ``prec``) and accepted only if its enclosure meets
+    ``ball`` and no other isolating ball: the root it denotes is then the one in ``ball``.
+    """
     from flint import acb
+
+    from .valence import arb_value
 
     if F.degree(lam) > 2:
         return None
     ck = sp.cos(2 * sp.pi * k / n)
     expr = F.as_expr().subs({c: ck, C1: sp.cos(2 * sp.pi / n)})
     for r in sp.roots(sp.Poly(expr, lam), multiple=True):
-        val = complex(sp.N(r, 30))
-        if ball.overlaps(acb(val.real, val.imag)) or abs(complex(ball.mid()) - val) < 1e-12:
-            return sp.radsimp(sp.nsimplify(r)) if r.is_Rational else sp.simplify(r)
+        if r.is_Rational:
+            if _ball_has_rational(ball, r):
+                return r
+            continue
+        value = sp.simplify(r)
+        for bits in (prec, 2 * prec, 4 * prec):
+            enc = arb_value(value, n, bits)
+            if enc is None:
+                break
+            meets = [s for s in siblings if s.overlaps(acb(enc))]
+            if not any(s is ball for s in meets):
+                break
+            if len(meets) == 1:
+                return value
     return None
 
 
@@ -254,7 +294,7 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
         if eig is None:
             continue
         res = _check(rules, n, eig, prec)
-        if res.reif_status != "inconclusive" and res.curvature_status != "inconclusive":
+        if res.reif_status != "inconclusive" and (res.curvature_status != "inconclusive" or res.curvature_final):
             return res
     if res is None:
         a = VertexAnalysis(n, rules.name, [], None, None, None, prec=max_prec)
@@ -315,8 +355,8 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
             a.reif_reason = "the subdominant eigenvalue is not real"
         else:
             a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
-    a.lam_exact = _exact_root(top.factor, top.ball, n, 1)
-    _curvature(a, others, n)
+    a.lam_exact = _exact_root(top.factor, top.ball, n, 1, _siblings(eig, top))
+    _curvature(rules, a, others, n)
     return a
 
 
@@ -325,7 +365,7 @@ def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue
     double, strictly dominant eigenvalue. (Exact test as for mu = lambda^2.)"""
     if not (top.real and top.ball.real > 0):
         return None
-    lam_exact = _exact_root(top.factor, top.ball, n, 1)
+    lam_exact = _exact_root(top.factor, top.ball, n, 1, _siblings(a.eigenvalues, top))
     for e in others:
         if e.modulus < top.modulus or not e.real:
             continue
@@ -334,6 +374,11 @@ def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue
             return (f"an eigenvalue of block {e.k} equals {'-' if sign < 0 else ''}lambda exactly "
                     f"({'lambda is not double' if sign > 0 else 'not strictly below lambda in modulus'})")
     return None
+
+
+def _siblings(eig: list[Eigenvalue], e: Eigenvalue) -> list:
+    """The isolating balls of the roots of e's factor in e's block."""
+    return [x.ball for x in eig if x.k == e.k and x.factor == e.factor]
 
 
 def _certainly_nonreal(ball) -> bool:
@@ -345,8 +390,14 @@ def _fmt(ball) -> str:
     return f"{x.real:.6g}" if abs(x.imag) < 1e-300 else f"{x.real:.6g}{x.imag:+.6g}i"
 
 
-def _curvature(a: VertexAnalysis, others: list[Eigenvalue], n: int) -> None:
-    """mu (the largest modulus after lambda) against lambda^2."""
+def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n: int) -> None:
+    """mu (the largest modulus after lambda) against lambda^2.
+
+    Zero curvature (every other eigenvalue below lambda^2) needs nothing more. Unbounded and bounded
+    curvature rest on the eigenvalue that decides them (Peters–Reif 2008, ch. 7): its eigenfunction must
+    be nonzero on the ring (some Bézier ordinate of the segment patches excludes 0, :func:`_nonzero_on_ring`),
+    and for mu = lambda^2 the eigenvalue must be semisimple (a Jordan block makes the curvature grow like
+    m on the m-th ring): rank(B_k - lambda^2 I) = size - multiplicity, exactly over Q(exp(2 pi i/n))."""
     top = a.lam
     rest = [e for e in others if not (e.k == 1 and e.factor == top.factor and e.ball.overlaps(top.ball))]
     if not rest or not a.reif_ok:
@@ -360,21 +411,168 @@ def _curvature(a: VertexAnalysis, others: list[Eigenvalue], n: int) -> None:
     big = [e for e in rest if e.modulus > lam2]
     if big:
         a.mu = max(big, key=lambda e: e.modulus.lower())
-        a.mu_vs_lam2, a.curvature, a.curvature_status = ">", "unbounded", "certified"
+        a.mu_vs_lam2 = ">"
+        if not _ring_evaluated(rules):
+            _inconclusive(a, f"mu > lambda^2, but {RING_NOT_EVALUATED}", final=True)
+            return
+        for e in sorted(big, key=lambda e: -float(e.modulus.lower())):
+            vecs = _arb_eigenvectors(rules, n, e)
+            ok, why = _nonzero_on_ring(rules, n, e, vecs, a.prec)
+            if ok:
+                a.mu, a.curvature, a.curvature_status = e, "unbounded", "certified"
+                a.notes.append(why)
+                return
+        _inconclusive(a, f"mu > lambda^2, but {why}", final=True)
         return
     tied = [e for e in rest if not (e.modulus < lam2)]
-    verdicts = []
+    verdicts, signs = [], []
     for e in tied:
-        if not e.real:
-            verdicts.append(None)
-            continue
-        sign = 1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)
+        sign = (1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)) if e.real else 0
+        signs.append(sign)
         verdicts.append(_equal_exact(e, top, a.lam_exact, n, sign, a.eigenvalues) if sign else None)
     if any(v is False for v in verdicts):
-        a.notes.append("mu != lambda^2 (exact) but not yet separated by the balls")
-    elif all(v is True for v in verdicts):
-        a.mu = tied[0]
-        a.mu_vs_lam2, a.curvature, a.curvature_status = "=", "bounded", "certified"
-    else:
-        a.notes.append("mu and lambda^2 not separated by the balls and not decided exactly "
-                       "(exact equality is decided when lambda is a polynomial in cos(2 pi/n))")
+        _inconclusive(a, "mu != lambda^2 (exact) but not yet separated by the balls")
+        return
+    if not all(v is True for v in verdicts):
+        _inconclusive(a, "mu and lambda^2 not separated by the balls and not decided exactly "
+                         "(exact equality is decided when lambda is a polynomial in cos(2 pi/n))")
+        return
+    a.mu, a.mu_vs_lam2 = tied[0], "="
+    if not _ring_evaluated(rules):
+        _inconclusive(a, f"mu = lambda^2, but {RING_NOT_EVALUATED}", final=True)
+        return
+    lam_c1 = _lambda_in_c1(top, a.lam_exact)
+    groups: dict = {}
+    for e, sign in zip(tied, signs):
+        groups.setdefault((e.k, sign), []).append(e)
+    nonzero = None
+    for (k, sign), es in sorted(groups.items()):
+        mult = sum(e.mult for e in es)
+        got = _exact_eigenspace(rules, n, k, sp.expand(sign * lam_c1 ** 2))
+        if got is None:
+            _inconclusive(a, f"mu = lambda^2 in block {k}, but its semisimplicity could not be decided exactly",
+                          final=True)
+            return
+        size, basis = got
+        if size - len(basis) != size - mult:
+            _inconclusive(a, f"mu = lambda^2 is not semisimple in block {k} (eigenspace of dimension {len(basis)}, "
+                             f"multiplicity {mult}): a Jordan block, curvature not bounded by this criterion",
+                          final=True)
+            return
+        a.notes.append(f"mu = lambda^2 semisimple in block {k}: rank(B_{k} - mu I) = {size - mult} "
+                       f"= size {size} - multiplicity {mult} (exact)")
+        if nonzero is None:
+            ok, why = _nonzero_on_ring(rules, n, es[0], basis, a.prec)
+            if ok:
+                nonzero = why
+    if nonzero is None:
+        _inconclusive(a, f"mu = lambda^2, but {why}", final=True)
+        return
+    a.notes.append(nonzero)
+    a.curvature, a.curvature_status = "bounded", "certified"
+
+
+RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for quad and triangle rules on the "
+                      "2-ring (give --ring 2)")
+
+
+def _ring_evaluated(rules: LocalRules) -> bool:
+    """Whether eigenfunctions on the ring are evaluated for these rules (segment patches as in :mod:`.charmap`)."""
+    return rules.ring == 2 and rules.lattice in ("quad", "triangle")
+
+
+def _inconclusive(a: VertexAnalysis, reason: str, final: bool = False) -> None:
+    a.curvature, a.curvature_status, a.curvature_reason = "inconclusive", "inconclusive", reason
+    a.curvature_final = final
+    a.notes.append(reason)
+
+
+def _arb_eigenvectors(rules: LocalRules, n: int, e: Eigenvalue) -> list:
+    """An Arb eigenvector of block e.k for e (geometrically simple), or none."""
+    from flint import ctx
+
+    from ..result import AnalysisError
+    from .charmap import eigenvector
+
+    old = ctx.prec
+    ctx.prec = max(old, 128)
+    try:
+        return [eigenvector(rules, n, e.ball, e.k)]
+    except AnalysisError:
+        return []
+    finally:
+        ctx.prec = old
+
+
+def _nonzero_on_ring(rules: LocalRules, n: int, e: Eigenvalue, vectors: list, prec: int) -> tuple[bool, str]:
+    """Is some eigenfunction (one of ``vectors``, eigenvectors of block e.k for e) nonzero on the ring?
+    Certified when a Bézier ordinate of its segment patches (:func:`.charmap.segment_ordinates`) excludes 0.
+    Returns (certified?, what was shown or why not)."""
+    from flint import ctx
+
+    from .charmap import segment_ordinates
+
+    if not _ring_evaluated(rules):
+        return False, RING_NOT_EVALUATED
+    if not vectors:
+        return False, f"no eigenvector of block {e.k} could be enclosed"
+    old = ctx.prec
+    ctx.prec = max(prec, 128)
+    try:
+        for v in vectors:
+            ords = segment_ordinates(rules, n, v, e.ball, e.k)
+            good = [x for x in ords if not (x.real.contains(0) and x.imag.contains(0))]
+            if good:
+                big = max(good, key=lambda x: float(abs(x).lower()))
+                return True, (f"eigenfunction of block {e.k} nonzero on the ring: a Bézier ordinate of its segment "
+                              f"patches has modulus >= {float(abs(big).lower()):.3g} (eigenvector normalised to 1)")
+        return False, f"no Bézier ordinate of the eigenfunctions of block {e.k} on the ring is certified nonzero"
+    finally:
+        ctx.prec = old
+
+
+def _exact_eigenspace(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
+    """Block k's size and a basis (as complex balls) of the kernel of B_k - mu I, computed exactly over
+    Q(zeta), zeta = exp(2 pi i/n) (w = zeta^k, C1 = (zeta + 1/zeta)/2; mu a polynomial in C1), with sympy's
+    DomainMatrix; None if an entry is not a rational polynomial in w and C1."""
+    from flint import acb, fmpq
+    from sympy.polys.matrices import DomainMatrix
+
+    from .blocks import _laurent, w
+
+    K = sp.QQ.algebraic_field(sp.exp(2 * sp.pi * sp.I / n))
+    zeta = K.from_sympy(sp.exp(2 * sp.pi * sp.I / n))
+    zinv = zeta ** (n - 1)
+    c1 = (zeta + zinv) * K.from_sympy(sp.Rational(1, 2))
+
+    def elem(expr: sp.Expr):
+        total = K.zero
+        for l_, co in _laurent(sp.expand(expr), w).items():
+            poly = sp.Poly(co, C1, domain="QQ")
+            val = K.zero
+            for (i,), q in poly.terms():
+                val += K.from_sympy(sp.Rational(q)) * c1 ** i
+            total += val * zeta ** ((l_ * k) % n)
+        return total
+
+    B = fourier_block(rules, k, n)
+    size = B.rows
+    try:
+        mu = elem(mu_c1)
+        rows = [[elem(B[i, j]) - (mu if i == j else K.zero) for j in range(size)] for i in range(size)]
+    except (sp.PolificationFailed, sp.CoercionFailed, sp.GeneratorsNeeded):
+        return None
+    kernel = DomainMatrix(rows, (size, size), K).nullspace().to_Matrix()
+    z = acb(fmpq(2, n)).exp_pi_i()
+    basis = []
+    for r in range(kernel.rows):
+        vec = []
+        for j in range(size):
+            x = K.from_sympy(kernel[r, j])
+            coeffs = [sp.Rational(q) for q in x.to_list()]
+            val = acb(0)
+            for q in coeffs:
+                val = val * z + acb(fmpq(int(q.p), int(q.q)))
+            vec.append(val)
+        basis.append(vec)
+    return size, basis

@@ -9,7 +9,8 @@ in lambda's isolating ball (so the formula *is* lambda there, not a float match)
 
 C^1: the eigen-conditions are necessary ingredients, not a proof. With them and a certified regular and
 injective characteristic map (:mod:`.charmap`: quad and triangle rules on the 2-ring) the verdict is
-certified C^1 (Reif 1995); without the characteristic map (rules on the 1-ring) it is
+certified C^1 for generic initial data (Reif 1995, a sufficient condition); a regular but not injective
+characteristic map is reported inconclusive (the sufficient condition fails); without the characteristic map (rules on the 1-ring) it is
 "inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
 (certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
 surface is not C^1.
@@ -19,7 +20,9 @@ Curvature (J. Peters, U. Reif, Shape characterization of subdivision surfaces â€
 studies, CAGD 21 (2004); Petersâ€“Reif, Subdivision Surfaces, 2008, ch. 7), for schemes whose regular part
 is C^2 and generic data: the second fundamental form near the vertex scales like (mu / lambda^2)^m on
 the m-th ring, so mu < lambda^2 gives curvature tending to zero at the vertex (a flat spot), mu =
-lambda^2 bounded curvature, mu > lambda^2 unbounded curvature.
+lambda^2 bounded curvature, mu > lambda^2 unbounded curvature. mu counts only eigenvalues whose
+eigenfunctions are nonzero on the ring, and mu = lambda^2 must be semisimple: :mod:`.spectrum` certifies
+both for the deciding eigenvalue (rules on the 2-ring) or leaves the verdict inconclusive with the reason.
 
 Examples
 --------
@@ -37,7 +40,7 @@ import sympy as sp
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
-from .spectrum import VertexAnalysis, analyse
+from .spectrum import VertexAnalysis, analyse, exact_rational
 
 #: the largest valence range the command accepts
 MAX_VALENCE = 200
@@ -78,7 +81,7 @@ def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
 
 
 def arb_value(expr: sp.Expr, n: int, prec: int = 128):
-    """An Arb ball for an expression in c = cos(2 pi/n) and n built from rationals, + * / and powers
+    """An Arb ball for an expression in c = cos(2 pi/n), n and cos(q pi) (q rational) built from rationals, + * / and powers
     with integer or half-integer exponents; None if it has anything else (or a square root of a
     ball that may be negative)."""
     from flint import arb, ctx, fmpq
@@ -95,6 +98,9 @@ def arb_value(expr: sp.Expr, n: int, prec: int = 128):
                 return cval
             if e == n_sym:
                 return arb(n)
+            if isinstance(e, sp.cos) and (e.args[0] / sp.pi).is_Rational:
+                q = e.args[0] / sp.pi
+                return arb.cos_pi_fmpq(fmpq(int(q.p), int(q.q)))
             if e.is_Add:
                 out = arb(0)
                 for a in e.args:
@@ -125,13 +131,16 @@ def arb_value(expr: sp.Expr, n: int, prec: int = 128):
 
 def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str]:
     """The C^1 verdict: certified only with the eigen-conditions *and* a certified regular, injective
-    characteristic map (Reif 1995)."""
+    characteristic map, and then for generic initial data (Reif 1995: a sufficient condition). A regular
+    map that is certified not injective makes Reif's sufficient condition fail; that is reported
+    inconclusive, not as a proof that the scheme is not C^1 (no necessity theorem is applied here)."""
     if a.reif_ok and charmap is not None:
         if charmap["status"] == CERTIFIED:
-            return CERTIFIED, "C^1 (eigen-conditions; characteristic map regular and injective)"
+            return CERTIFIED, ("C^1 for generic initial data (Reif 1995: eigen-conditions; characteristic map "
+                               "regular and injective)")
         if charmap["status"] == REFUTED:
-            return REFUTED, (f"not C^1 in Reif's sense: the characteristic map is regular but its boundary winds "
-                             f"{charmap['winding_number']} times (not injective)")
+            return INCONCLUSIVE, (f"inconclusive: the characteristic map is regular but not injective (its boundary "
+                                  f"winds {charmap['winding_number']} times), so Reif's sufficient condition fails")
         return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
                              f"{charmap['precision_bits']} bits"
     if a.reif_ok:
@@ -141,10 +150,7 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str
     return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
 
 
-def _q(x) -> sp.Rational:
-    """The exact rational value of an Arb endpoint (a binary floating-point number)."""
-    man, exp = x.mid().man_exp()
-    return sp.Integer(int(man)) * sp.Integer(2) ** int(exp)
+_q = exact_rational
 
 
 def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dict[str, Result]:
@@ -190,9 +196,10 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
                                   witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT["not applicable"],
                                            "notes": list(a.notes)}, provenance=prov)
     else:
-        out["curvature"] = Result(value=a.curvature, status=a.curvature_status,
-                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature],
-                                           "notes": list(a.notes)}, provenance=prov)
+        wit = {"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature], "notes": list(a.notes)}
+        if a.curvature_reason:
+            wit["reason"] = a.curvature_reason
+        out["curvature"] = Result(value=a.curvature, status=a.curvature_status, witness=wit, provenance=prov)
     cm = None
     if a.reif_ok and has_characteristic_map(rules):
         from .charmap import characteristic_map
