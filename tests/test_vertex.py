@@ -113,7 +113,8 @@ def test_characteristic_map_is_the_identity_at_the_regular_valence():
 def test_catmull_clark_characteristic_map_certified(n):
     from analysis.vertex.charmap import characteristic_map
 
-    r = characteristic_map(scheme_rules("catmull-clark", ring=2), n)
+    cc = scheme_rules("catmull-clark", ring=2)
+    r = characteristic_map(cc, n, analyse(cc, n).lam.ball.real)
     assert (r["status"], r["regular"], r["jacobian_sign"], r["winding_number"]) == ("certified", True, 1, 1)
 
 
@@ -206,7 +207,7 @@ def test_doo_sabin_characteristic_map_is_affine_at_the_regular_valence_and_certi
     for a, b in SEGMENT:
         assert all(x.overlaps(arb(1) / 2) and x.rad() < 1e-12 for row in _jacobian_bernstein_2(net.bezier_dual(a, b))
                    for x in row)
-    r = characteristic_map(rules, 3)
+    r = characteristic_map(rules, 3, analyse(rules, 3).lam.ball.real)
     assert (r["status"], r["regular"], r["winding_number"]) == ("certified", True, 1)
 
 
@@ -214,7 +215,8 @@ def test_doo_sabin_characteristic_map_is_affine_at_the_regular_valence_and_certi
 def test_loop_characteristic_map_certified(n):
     from analysis.vertex.charmap import characteristic_map
 
-    r = characteristic_map(scheme_rules("loop", ring=2, n=n), n)
+    loop = scheme_rules("loop", ring=2, n=n)
+    r = characteristic_map(loop, n, analyse(loop, n).lam.ball.real)
     assert (r["status"], r["regular"], r["winding_number"]) == ("certified", True, 1)
 
 

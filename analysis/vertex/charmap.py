@@ -23,7 +23,9 @@ proven to lie in an open cone of angle < pi (subdivided until it does).
 Examples
 --------
 >>> from analysis.vertex.rules import scheme_rules
->>> r = characteristic_map(scheme_rules("catmull-clark", ring=2), 5)
+>>> from analysis.vertex.spectrum import analyse
+>>> cc = scheme_rules("catmull-clark", ring=2)
+>>> r = characteristic_map(cc, 5, analyse(cc, 5).lam.ball.real)
 >>> r["status"], r["regular"], r["winding_number"]
 ('certified', True, 1)
 
@@ -266,7 +268,7 @@ def _verdict(regular: bool, sign: int, pieces: int, curve: list, n: int, prec: i
             "winding_number": winding, "injective": injective, "precision_bits": prec, "method": method}
 
 
-def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128) -> dict:
+def characteristic_map(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
     """Certified regularity (Jacobian of one sign on the segment) and injectivity (winding number of the
     outer boundary equal to that sign) of the characteristic map of quad or triangle rules on the 2-ring at
     valence n, at ``prec`` bits: status certified (regular and injective), refuted (regular, certified
@@ -274,18 +276,10 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball=None, prec: int = 128
     from flint import arb, ctx
 
     if rules.lattice == "dual quad":
-        if lam_ball is None:
-            from .spectrum import analyse
-
-            lam_ball = analyse(rules, n).lam.ball.real
         return characteristic_map_doo_sabin(rules, n, lam_ball, prec)
     if rules.lattice not in ("quad", "triangle") or rules.ring != 2:
         raise AnalysisError("the characteristic map is checked for quad (bicubic) and triangle (Loop box-spline) "
                             "rules on the 2-ring, and for Doo-Sabin")
-    if lam_ball is None:
-        from .spectrum import analyse
-
-        lam_ball = analyse(rules, n).lam.ball.real
     if rules.lattice == "triangle":
         return characteristic_map_triangle(rules, n, lam_ball, prec)
     old = ctx.prec

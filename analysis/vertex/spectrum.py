@@ -222,12 +222,11 @@ def _exact_root(F: sp.Poly, ball, n: int, k: int, siblings: list, prec: int = 12
 
     ``siblings`` are the isolating balls of all roots of F in block k (one root in each). A rational
     root is accepted only if ``ball`` contains it exactly. Any other root expression is evaluated in Arb
-    (:func:`.valence.arb_value`, refined up to 4 ``prec``) and accepted only if its enclosure meets
+    (:func:`arb_value`, refined up to 4 ``prec``) and accepted only if its enclosure meets
     ``ball`` and no other isolating ball: the root it denotes is then the one in ``ball``.
     """
     from flint import acb
 
-    from .valence import arb_value
 
     if F.degree(lam) > 2:
         return None
@@ -576,3 +575,52 @@ def _exact_eigenspace(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
             vec.append(val)
         basis.append(vec)
     return size, basis
+
+
+def arb_value(expr: sp.Expr, n: int, prec: int = 128):
+    """An Arb ball for an expression in c = cos(2 pi/n), n and cos(q pi) (q rational) built from rationals, + * / and powers
+    with integer or half-integer exponents; None if it has anything else (or a square root of a
+    ball that may be negative)."""
+    from flint import arb, ctx, fmpq
+
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        cval = arb.cos_pi_fmpq(fmpq(2, n))
+
+        def ev(e):
+            if e.is_Rational:
+                return arb(int(e.p)) / int(e.q)
+            if e == c or e == C1:
+                return cval
+            if e == n_sym:
+                return arb(n)
+            if isinstance(e, sp.cos) and (e.args[0] / sp.pi).is_Rational:
+                q = e.args[0] / sp.pi
+                return arb.cos_pi_fmpq(fmpq(int(q.p), int(q.q)))
+            if e.is_Add:
+                out = arb(0)
+                for a in e.args:
+                    out += ev(a)
+                return out
+            if e.is_Mul:
+                out = arb(1)
+                for a in e.args:
+                    out *= ev(a)
+                return out
+            if e.is_Pow:
+                b, x = ev(e.base), e.exp
+                if x.is_Integer:
+                    return b ** int(x)
+                if x == sp.Rational(1, 2) and b > 0:
+                    return b.sqrt()
+                if x == sp.Rational(-1, 2) and b > 0:
+                    return 1 / b.sqrt()
+            raise ValueError
+
+        try:
+            return ev(expr)
+        except (ValueError, ZeroDivisionError):
+            return None
+    finally:
+        ctx.prec = old

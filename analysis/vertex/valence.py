@@ -40,7 +40,7 @@ import sympy as sp
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
-from .spectrum import VertexAnalysis, analyse, exact_rational
+from .spectrum import VertexAnalysis, analyse, arb_value, exact_rational
 
 #: the largest valence range the command accepts
 MAX_VALENCE = 200
@@ -78,55 +78,6 @@ def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
     expr = sp.simplify(best[0]) if best else None
     return {"lambda": str(expr) if expr is not None else None, "expr": expr, "valid_from": N0,
             "factors": [str(g.as_expr()) for g, _ in fl if g.degree(lam) > 0]}
-
-
-def arb_value(expr: sp.Expr, n: int, prec: int = 128):
-    """An Arb ball for an expression in c = cos(2 pi/n), n and cos(q pi) (q rational) built from rationals, + * / and powers
-    with integer or half-integer exponents; None if it has anything else (or a square root of a
-    ball that may be negative)."""
-    from flint import arb, ctx, fmpq
-
-    old = ctx.prec
-    ctx.prec = prec
-    try:
-        cval = arb.cos_pi_fmpq(fmpq(2, n))
-
-        def ev(e):
-            if e.is_Rational:
-                return arb(int(e.p)) / int(e.q)
-            if e == c or e == C1:
-                return cval
-            if e == n_sym:
-                return arb(n)
-            if isinstance(e, sp.cos) and (e.args[0] / sp.pi).is_Rational:
-                q = e.args[0] / sp.pi
-                return arb.cos_pi_fmpq(fmpq(int(q.p), int(q.q)))
-            if e.is_Add:
-                out = arb(0)
-                for a in e.args:
-                    out += ev(a)
-                return out
-            if e.is_Mul:
-                out = arb(1)
-                for a in e.args:
-                    out *= ev(a)
-                return out
-            if e.is_Pow:
-                b, x = ev(e.base), e.exp
-                if x.is_Integer:
-                    return b ** int(x)
-                if x == sp.Rational(1, 2) and b > 0:
-                    return b.sqrt()
-                if x == sp.Rational(-1, 2) and b > 0:
-                    return 1 / b.sqrt()
-            raise ValueError
-
-        try:
-            return ev(expr)
-        except (ValueError, ZeroDivisionError):
-            return None
-    finally:
-        ctx.prec = old
 
 
 def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str]:
