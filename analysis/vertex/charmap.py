@@ -268,6 +268,30 @@ def _verdict(regular: bool, sign: int, pieces: int, curve: list, n: int, prec: i
             "winding_number": winding, "injective": injective, "precision_bits": prec, "method": method}
 
 
+def _segment_verdict(patches, jacobian, n: int, prec: int, kind: str) -> dict:
+    """Regularity and injectivity from the three tensor-product Bézier patches of the segment (square
+    patches of degree d): the Jacobian's Bernstein coefficients of one certified sign on every patch,
+    then the winding number of the outer boundary, oriented from level-1 (2,0) to (0,2)."""
+    from flint import arb
+
+    jac = [jacobian(P) for P in patches]
+    sign = 1 if jac[0][0][0] > 0 else (-1 if jac[0][0][0] < 0 else 0)
+    pieces, regular = 0, sign != 0
+    for J in jac:
+        if not regular:
+            break
+        ok, k = _sign_certified(J, sign)
+        pieces += k
+        regular = regular and ok
+    A, Bq, C = patches
+    d = len(A) - 1
+    curve = [[A[d][j] for j in range(d + 1)], [Bq[d][j] for j in range(d + 1)],
+             [Bq[d - i][d] for i in range(d + 1)], [C[d - i][d] for i in range(d + 1)]]
+    return _verdict(regular, sign, pieces, curve, n, prec, arb,
+                    f"{kind} Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
+                    "winding number of the outer boundary")
+
+
 def characteristic_map(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
     """Certified regularity (Jacobian of one sign on the segment) and injectivity (winding number of the
     outer boundary equal to that sign) of the characteristic map of quad or triangle rules on the 2-ring at
@@ -287,23 +311,7 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> 
     try:
         v = eigenvector(rules, n, lam_ball)
         net = _Net(rules, n, v, lam_ball)
-        patches = [net.bezier(a, b) for a, b in SEGMENT]
-        jac = [_jacobian_bernstein(P) for P in patches]
-        sign = 1 if jac[0][0][0] > 0 else (-1 if jac[0][0][0] < 0 else 0)
-        pieces, regular = 0, sign != 0
-        for J in jac:
-            if not regular:
-                break
-            ok, k = _sign_certified(J, sign)
-            pieces += k
-            regular = regular and ok
-        # outer boundary of the segment, oriented from level-1 (2,0) to (0,2)
-        A, Bq, C = patches
-        curve = [[A[3][j] for j in range(4)], [Bq[3][j] for j in range(4)],
-                 [Bq[3 - i][3] for i in range(4)], [C[3 - i][3] for i in range(4)]]
-        return _verdict(regular, sign, pieces, curve, n, prec, arb,
-                        "bicubic Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
-                        "winding number of the outer boundary")
+        return _segment_verdict([net.bezier(a, b) for a, b in SEGMENT], _jacobian_bernstein, n, prec, "bicubic")
     finally:
         ctx.prec = old
 
@@ -541,21 +549,7 @@ def characteristic_map_doo_sabin(rules: LocalRules, n: int, lam_ball, prec: int 
     try:
         v = eigenvector(rules, n, lam_ball)
         net = _DualNet(rules, n, v, lam_ball)
-        patches = [net.bezier_dual(a, b) for a, b in SEGMENT]
-        jac = [_jacobian_bernstein_2(P) for P in patches]
-        sign = 1 if jac[0][0][0] > 0 else (-1 if jac[0][0][0] < 0 else 0)
-        pieces, regular = 0, sign != 0
-        for J in jac:
-            if not regular:
-                break
-            ok, k = _sign_certified(J, sign)
-            pieces += k
-            regular = regular and ok
-        A, Bq, C = patches
-        curve = [[A[2][j] for j in range(3)], [Bq[2][j] for j in range(3)],
-                 [Bq[2 - i][2] for i in range(3)], [C[2 - i][2] for i in range(3)]]
-        return _verdict(regular, sign, pieces, curve, n, prec, arb,
-                        "biquadratic Bézier patches of the segment; Arb Bernstein bounds of the Jacobian; "
-                        "winding number of the outer boundary")
+        return _segment_verdict([net.bezier_dual(a, b) for a, b in SEGMENT], _jacobian_bernstein_2, n, prec,
+                                "biquadratic")
     finally:
         ctx.prec = old
