@@ -200,12 +200,12 @@ def test_loop_patch_bezier_form_has_linear_precision():
 def test_doo_sabin_characteristic_map_is_affine_at_the_regular_valence_and_certified_at_3():
     from flint import arb
 
-    from analysis.vertex.charmap import SEGMENT, _DualNet, _jacobian_bernstein_2, characteristic_map, eigenvector
+    from analysis.vertex.charmap import SEGMENT, _DualNet, _jacobian_bernstein, characteristic_map, eigenvector
 
     rules = scheme_rules("doo-sabin")
     net = _DualNet(rules, 4, eigenvector(rules, 4, arb(1) / 2), arb(1) / 2)
     for a, b in SEGMENT:
-        assert all(x.overlaps(arb(1) / 2) and x.rad() < 1e-12 for row in _jacobian_bernstein_2(net.bezier_dual(a, b))
+        assert all(x.overlaps(arb(1) / 2) and x.rad() < 1e-12 for row in _jacobian_bernstein(net.bezier_dual(a, b))
                    for x in row)
     r = characteristic_map(rules, 3, analyse(rules, 3).lam.ball.real)
     assert (r["status"], r["regular"], r["winding_number"]) == ("certified", True, 1)

@@ -163,21 +163,24 @@ class _Net:
 
 
 def _jacobian_bernstein(Bz: list[list]) -> list[list]:
-    """Bernstein coefficients (degree 5 x 5) of Im(conj(F_u) F_v) for the bicubic Bézier net Bz."""
-    Fu = [[3 * (Bz[i + 1][j] - Bz[i][j]) for j in range(4)] for i in range(3)]     # degree (2, 3)
-    Fv = [[3 * (Bz[i][j + 1] - Bz[i][j]) for j in range(3)] for i in range(4)]     # degree (3, 2)
-    out = [[None] * 6 for _ in range(6)]
-    for k in range(6):
-        for l_ in range(6):
+    """Bernstein coefficients (degree 2d-1 x 2d-1) of Im(conj(F_u) F_v) for a tensor Bézier net Bz of
+    degree d x d (bicubic: d = 3, biquadratic: d = 2)."""
+    d = len(Bz) - 1
+    Fu = [[d * (Bz[i + 1][j] - Bz[i][j]) for j in range(d + 1)] for i in range(d)]     # degree (d-1, d)
+    Fv = [[d * (Bz[i][j + 1] - Bz[i][j]) for j in range(d)] for i in range(d + 1)]     # degree (d, d-1)
+    e = 2 * d - 1
+    out = [[None] * (e + 1) for _ in range(e + 1)]
+    for k in range(e + 1):
+        for l_ in range(e + 1):
             s = None
-            for i in range(max(0, k - 3), min(2, k) + 1):
+            for i in range(max(0, k - d), min(d - 1, k) + 1):
                 ii = k - i
-                for j in range(max(0, l_ - 2), min(3, l_) + 1):
+                for j in range(max(0, l_ - d + 1), min(d, l_) + 1):
                     jj = l_ - j
-                    wgt = comb(2, i) * comb(3, ii) * comb(3, j) * comb(2, jj)
+                    wgt = comb(d - 1, i) * comb(d, ii) * comb(d, j) * comb(d - 1, jj)
                     t = (Fu[i][j].conjugate() * Fv[ii][jj]).imag * wgt
                     s = t if s is None else s + t
-            out[k][l_] = s / (comb(5, k) * comb(5, l_))
+            out[k][l_] = s / (comb(e, k) * comb(e, l_))
     return out
 
 
@@ -520,25 +523,6 @@ class _DualNet(_Net):
         return [[sum((rows[r][j] * T[s][j] for j in range(3)), 0 * Q[0][0]) / 2 for s in range(3)] for r in range(3)]
 
 
-def _jacobian_bernstein_2(Bz: list[list]) -> list[list]:
-    """Bernstein coefficients (degree 3 x 3) of Im(conj(F_u) F_v) for a biquadratic Bézier net."""
-    Fu = [[2 * (Bz[i + 1][j] - Bz[i][j]) for j in range(3)] for i in range(2)]     # degree (1, 2)
-    Fv = [[2 * (Bz[i][j + 1] - Bz[i][j]) for j in range(2)] for i in range(3)]     # degree (2, 1)
-    out = [[None] * 4 for _ in range(4)]
-    for k in range(4):
-        for l_ in range(4):
-            s = None
-            for i in range(max(0, k - 2), min(1, k) + 1):
-                ii = k - i
-                for j in range(max(0, l_ - 1), min(2, l_) + 1):
-                    jj = l_ - j
-                    wgt = comb(1, i) * comb(2, ii) * comb(2, j) * comb(1, jj)
-                    t = (Fu[i][j].conjugate() * Fv[ii][jj]).imag * wgt
-                    s = t if s is None else s + t
-            out[k][l_] = s / (comb(3, k) * comb(3, l_))
-    return out
-
-
 def characteristic_map_doo_sabin(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
     """As :func:`characteristic_map` for Doo–Sabin at an n-gon: the segment is the three level-1 squares
     [1,2]x[0,1], [1,2]x[1,2], [0,1]x[1,2] (primal lattice, sector 0), each a biquadratic patch."""
@@ -549,7 +533,7 @@ def characteristic_map_doo_sabin(rules: LocalRules, n: int, lam_ball, prec: int 
     try:
         v = eigenvector(rules, n, lam_ball)
         net = _DualNet(rules, n, v, lam_ball)
-        return _segment_verdict([net.bezier_dual(a, b) for a, b in SEGMENT], _jacobian_bernstein_2, n, prec,
+        return _segment_verdict([net.bezier_dual(a, b) for a, b in SEGMENT], _jacobian_bernstein, n, prec,
                                 "biquadratic")
     finally:
         ctx.prec = old
