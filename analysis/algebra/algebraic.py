@@ -163,6 +163,10 @@ def compare(x, y) -> int:
 # real algebraic numbers by isolating intervals
 # --------------------------------------------------------------------------------------------
 
+#: the variable of the linear polynomials of rational numbers (one symbol for all of them)
+_X = sp.Dummy("x")
+
+
 class RealAlgebraic:
     """A real root of a square-free polynomial over QQ, isolated in ``[a, b]`` (rationals).
 
@@ -180,8 +184,7 @@ class RealAlgebraic:
     @classmethod
     def rational(cls, q) -> "RealAlgebraic":
         q = sp.Rational(q)
-        x = sp.Dummy("x")
-        return cls(sp.Poly(x - q, x, domain=sp.QQ), q, q)
+        return cls(sp.Poly.from_list([1, -q], _X, domain=sp.QQ), q, q)
 
     @classmethod
     def roots_of(cls, poly: sp.Poly) -> list["RealAlgebraic"]:
@@ -276,7 +279,10 @@ class RealAlgebraic:
 
     def sign_of(self, p: sp.Poly) -> int:
         """The exact sign of the polynomial ``p`` (rational coefficients) at this number."""
-        p = sp.Poly(p.as_expr().subs(p.gen, self.poly.gen), self.poly.gen, domain=sp.QQ)
+        if len(p.gens) == 1 and p.domain in (sp.QQ, sp.ZZ):
+            p = sp.Poly.from_list(p.set_domain(sp.QQ).all_coeffs(), self.poly.gen, domain=sp.QQ)
+        else:
+            p = sp.Poly(p.as_expr().subs(p.gen, self.poly.gen), self.poly.gen, domain=sp.QQ)
         if p.is_zero:
             return 0
         if self.a == self.b:
@@ -298,6 +304,10 @@ class RealAlgebraic:
         """``sign(self - other)``, exactly."""
         if not isinstance(other, RealAlgebraic):
             other = RealAlgebraic.from_expr(other)
+        if other.a == other.b and self.a != self.b:
+            return self._compare_rational(other.a)
+        if self.a == self.b and other.a != other.b:
+            return -other._compare_rational(self.a)
         for _ in range(10_000):
             if self.b < other.a:
                 return -1
@@ -315,6 +325,29 @@ class RealAlgebraic:
             self.refine()
             other.refine()
         raise AnalysisError("could not separate two algebraic numbers")  # pragma: no cover
+
+    def _compare_rational(self, q) -> int:
+        """``sign(self - q)`` for a rational ``q``: the isolating interval holds one root of
+        ``self.poly``, so ``q`` inside it with ``poly(q) = 0`` is that root; otherwise halve the
+        interval (exactly as the general comparison does: until ``q`` is outside, then once more)."""
+        if q < self.a or self.b < q:
+            return 1 if q < self.a else -1
+        if self.poly.eval(q) == 0:
+            return 0
+        for _ in range(10_000):
+            if q < self.a or self.b < q:
+                break
+            if q == self.a or q == self.b:
+                # q is an end and not the root: the root lies strictly on the other side
+                s = 1 if q == self.a else -1
+                self.refine()
+                return s
+            self.refine()
+        else:  # pragma: no cover
+            raise AnalysisError("could not separate an algebraic number from a rational")
+        s = 1 if q < self.a else -1
+        self.refine()
+        return s
 
     def __lt__(self, other) -> bool:
         return self.compare(other) < 0

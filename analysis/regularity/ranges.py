@@ -113,25 +113,49 @@ def _single_parameter(a: LaurentSymbol, param) -> sp.Symbol:
     return p
 
 
+_TRANSITIONS: dict = {}
+
+
+def _domain_transitions(a: LaurentSymbol, K):
+    """``(N, (T_0, T_1))``: the smoothing order and the transition matrices of ``2^(N-1) a / (1+z)^N``
+    as ``DomainMatrix`` over the coefficient ring ``K`` (computed once per symbol)."""
+    key = (a, K)
+    if key not in _TRANSITIONS:
+        if len(_TRANSITIONS) > 64:
+            _TRANSITIONS.clear()
+        N = smoothing_factor(a, exceptional=False).value
+        c = factor_out(a, N) / 2
+        T = tuple(DomainMatrix([[K.from_sympy(sp.expand(e)) for e in row] for row in t.tolist()],
+                               t.shape, K) for t in transition_matrices(c))
+        _TRANSITIONS[key] = (N, T)
+    return _TRANSITIONS[key]
+
+
 def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int], lo, hi):
     """Exact parameter values in (lo, hi) where the product T_word(p) has eigenvalue +-2^{(k-j)L}."""
     if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ):
         return []           # algebraic coefficients: no exact crossing over QQ (bisection decides)
-    N = smoothing_factor(a, exceptional=False).value
-    c = factor_out(a, N) / 2
-    T = transition_matrices(c)
-    P = word_product(T, word)
+    K = a.domain
+    if tuple(K.symbols) != (p,):
+        return []           # other free symbols: no exact crossing in p alone (bisection decides)
+    T = _domain_transitions(a, K)
+    N = T[0]
     theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
+    P = T[1][word[0]]
+    for i in word[1:]:
+        P = P * T[1][i]
+    eye = DomainMatrix.eye(P.shape[0], K)
     out = []
     for sgn in (1, -1):
-        # the determinant over the polynomial ring (or field) of p: exact, and far faster than a
-        # symbolic Berkowitz determinant of expression entries
-        M = DomainMatrix.from_Matrix(P - sgn * theta * sp.eye(P.shape[0]))
+        # the determinant over the polynomial ring QQ[p] of the coefficients, products taken there:
+        # exact, and far faster than a symbolic Berkowitz determinant of expression entries
+        M = P - eye * K.from_sympy(sgn * theta)
         try:
-            num = sp.Poly(sp.fraction(sp.together(M.domain.to_sympy(M.det())))[0], p, domain=sp.QQ)
+            # the numerator with integer coefficients (as sp.fraction(sp.together(.)) gives it)
+            num = sp.Poly.from_dict(dict(M.det().items()), p, domain=sp.QQ).clear_denoms()[1]
         except (sp.polys.polyerrors.CoercionFailed, sp.PolynomialError):
             return out      # algebraic coefficients: no exact crossing over QQ (bisection decides)
-        if num.is_zero or num.degree() < 1:
+        if num.is_zero or num.degree() < 1 or num.count_roots(lo, hi) == 0:
             continue
         for r in RealAlgebraic.roots_of(num):
             if r.compare(RealAlgebraic.rational(lo)) >= 0 and r.compare(RealAlgebraic.rational(hi)) <= 0:
