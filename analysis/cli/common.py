@@ -312,7 +312,11 @@ def command_stdout():
 
 
 def _print(*objects, **kw) -> None:
-    """``print`` to :func:`command_stdout` — what every command uses for its own output."""
+    """``print`` to :func:`command_stdout` — what every command uses for its own output (the progress
+    line on a terminal, if shown, is erased first)."""
+    progress = sys.modules.get("analysis.progress")        # imported only by commands that show progress
+    if progress is not None:
+        progress.clear()
     print(*objects, file=command_stdout(), **kw)
 
 
