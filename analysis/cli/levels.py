@@ -376,8 +376,9 @@ def register(sub) -> None:
     """Add the sub-commands to the ``subdiv`` parser."""
     s = sub.add_parser("series", help="weighted series sum 2^(mn)||S_(a^n) - S_a||: verdict and enclosure")
     s.add_argument("--scheme", metavar="NAME", help="level-dependent scheme (schemes.level_dependent)")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
-    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
+                   help="a closed parameter box instead of a value (repeatable)")
     s.add_argument("--m", default="0,1,2", help="weights, e.g. 0,1,2")
     s.add_argument("--difference", type=int, default=0, help="k: use the k-th divided difference scheme")
     s.add_argument("--N", type=int, default=40, help="levels summed explicitly")
@@ -390,26 +391,26 @@ def register(sub) -> None:
                                                   "interval (exact norm set for the limit)")
     _add_inline(s)
     s.add_argument("--arity", metavar="M", help="m-ary level-dependent scheme, level through M^n")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_series)
 
     s = sub.add_parser("bound", help="prove/refute f(n,p) <= g(n,p) for n >= n0 over a parameter box")
-    s.add_argument("--claim", metavar="ID", help='a seed 003 lemma item, e.g. "003:Lemma3.2(ii)"')
-    s.add_argument("--lhs", metavar="EXPR")
-    s.add_argument("--rhs", metavar="EXPR")
+    s.add_argument("--claim", metavar="ID", help='a lemma item of the bundled paper 003, e.g. "003:Lemma3.2(ii)"')
+    s.add_argument("--lhs", metavar="EXPR", help="left side f(n, parameters), e.g. 1/2**n")
+    s.add_argument("--rhs", metavar="EXPR", help="right side g(n, parameters)")
     s.add_argument("--n0", type=int, default=0, help="first level n (>= 0)")
-    s.add_argument("--strict", action="store_true")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--strict", action="store_true", help="prove f < g (default: f <= g)")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH", help="a closed box; repeatable (several parameters)")
     s.add_argument("--depth", type=int, default=10,
                    help="adaptive subdivision: bisect an undecided box up to DEPTH times per level (default 10)")
     s.add_argument("--pieces", type=int, default=8, help="sub-boxes of each parameter box for the tail n >= N (default 8)")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_bound)
 
     s = sub.add_parser("reproduce", help="exponential generation/reproduction; distance to curves")
-    s.add_argument("--scheme", metavar="NAME")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--scheme", metavar="NAME", help="level-dependent scheme (schemes.level_dependent)")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
                    help="with --lambdas: decide on the whole closed box (repeatable)")
     s.add_argument("--depth", type=int, default=2,
@@ -422,5 +423,5 @@ def register(sub) -> None:
     s.add_argument("--frequencies", action="store_true",
                    help="the frequencies generated and reproduced at every level (exact)")
     _add_inline(s)
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_reproduce)

@@ -243,7 +243,7 @@ def cmd_claims(args) -> None:
 
 def register(subparsers) -> None:
     """Add ``subdiv nonuniform ...`` to the ``subdiv`` parser."""
-    p = subparsers.add_parser("nonuniform", help="non-uniform variable-parameter schemes (NVPS, seeds 000/001)")
+    p = subparsers.add_parser("nonuniform", help="non-uniform variable-parameter schemes (NVPS; the bundled papers 000, 001)")
     sub = p.add_subparsers(dest="nonuniform_command", parser_class=type(p))
     sub.required = True
 
@@ -262,7 +262,7 @@ def register(subparsers) -> None:
     s.add_argument("--rule", default="seed001", choices=("seed001", "seed000"))
     s.add_argument("--output", metavar="FILE")
 
-    s = add("compare-definitions", cmd_compare, "seed 000's S_d vs seed 001's (exact)")
+    s = add("compare-definitions", cmd_compare, "paper 000's S_d vs paper 001's (exact)")
     s.add_argument("--degree", default="3")
     s.add_argument("--levels", default="3")
     s.add_argument("--closed", action="store_true")
@@ -293,11 +293,25 @@ def register(subparsers) -> None:
     s.add_argument("--levels", default="8")
     s.add_argument("--figure", metavar="PNG", help="also write the blended-curve figure here")
 
-    s = add("chamfer", cmd_chamfer, "seed 001's chamfering example (Algorithm 2, Fig. 3)")
+    s = add("chamfer", cmd_chamfer, "paper 001's chamfering example (Algorithm 2, Fig. 3)")
     s.add_argument("--levels", default="8")
     s.add_argument("--degree", default="2")
     s.add_argument("--figure", metavar="PNG")
 
-    s = add("claims", cmd_claims, "evaluate the claims of seed 000 or 001")
+    s = add("claims", cmd_claims, "evaluate the claims of paper 000 or 001")
     s.add_argument("--seed", default="001", choices=("000", "001"))
     s.add_argument("--id", help="one claim id, e.g. 001:(17)")
+    for parser in sub.choices.values():                 # the options every sub-command shares
+        for action in parser._actions:
+            if action.help is None and action.dest in _HELP:
+                action.help = _HELP[action.dest] + (f" (default {action.default})" if action.default not in
+                                                    (None, False) else "")
+
+
+#: help of the options shared by the ``nonuniform`` sub-commands
+_HELP = {"degree": "degree d of the scheme", "points": "control points, one per ';'", "steps": "refinement steps",
+         "closed": "closed polygon (default: open)", "rule": "the rule of paper 001 or of paper 000",
+         "output": "write the points as CSV", "levels": "number of levels k", "u0": "the edge parameters at level 0, one per edge, e.g. 0.5,0.5",
+         "u0_range": "range of the initial parameter u0", "u_left": "parameter on the left of the junction",
+         "u_right": "parameter on the right of the junction", "kind": "the curve reproduced",
+         "figure": "also write the figure here", "seed": "the bundled paper: 000 or 001"}

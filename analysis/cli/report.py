@@ -116,14 +116,13 @@ def verdict_rows(results) -> list[list]:
     return rows
 
 
-def _write_table(path: str, all_results: dict, titles: dict, lines: list) -> None:
+def _write_table(path: str, all_results: dict, titles: dict) -> None:
     """``--table``: the verdicts of every evaluated claim as CSV or a LaTeX tabular."""
     from .tables import write_table
 
     rows = [row for pid in all_results for row in verdict_rows(all_results[pid])]
     caption = "subdiv: verdicts of " + "; ".join(f"paper {pid} ({titles.get(pid, '')})" for pid in all_results)
     write_table(path, TABLE_COLUMNS, rows, caption, spec=TABLE_SPEC)
-    lines.append(f"table written to {path}")
 
 
 def evaluate_paper(paper, **kwargs):
@@ -300,9 +299,8 @@ def _report_file(args, outdir: Path, write: bool) -> None:
             _print_details(results)
     _python_lines(results, path, args.json)
     if table:
-        said: list = []
-        _write_table(table, {paper.id: results}, {paper.id: paper.title}, said)
-        print(*said, file=sys.stderr)
+        _write_table(table, {paper.id: results}, {paper.id: paper.title})
+        print(f"wrote {table}", file=sys.stderr)
     if write:
         from ..report.index import render_index, siblings
         from ..report.render import render_paper
@@ -362,9 +360,8 @@ def cmd_report(args) -> None:
         if only is not None:
             _print_details(results)
     if table:
-        said: list = []
-        _write_table(table, all_results, {pid: get_paper(pid).title for pid in all_results}, said)
-        print(*said, file=sys.stderr)
+        _write_table(table, all_results, {pid: get_paper(pid).title for pid in all_results})
+        print(f"wrote {table}", file=sys.stderr)
     if write:
         from ..report.index import render_index, siblings
         from ..report.render import render_paper
@@ -476,10 +473,9 @@ def cmd_check(args) -> None:
     n = sum(len(v) for v in fresh_results.values())
     for pid, evs in fresh_results.items():
         _python_lines(evs, sources.get(pid), args.json)
-    said: list = []
     if args.table:
-        titles = {pid: (loaded[pid] if loaded else get_paper(pid)).title for pid in fresh_results}
-        _write_table(args.table, fresh_results, titles, said)
+        _write_table(args.table, fresh_results, {pid: (loaded[pid] if loaded else get_paper(pid)).title
+                                                  for pid in fresh_results})
     missing = [str(golden_file(sources[pid])) for pid in new]
     note = (f"no golden file {', '.join(missing)} yet: nothing to compare with; after reviewing the verdicts, create it "
             f"with `subdiv report {' '.join(sources[pid] for pid in new)} --update-golden` (then `subdiv check` "
@@ -492,8 +488,8 @@ def cmd_check(args) -> None:
         if diffs:
             raise SystemExit(1)
         return
-    for line in said:
-        _print(line)
+    if args.table:
+        _print(f"table written to {args.table}")
     for pid in new:
         _print(f"\n== {pid}: {loaded[pid].title}")
         _print(_table(fresh_results[pid]))

@@ -438,7 +438,7 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--points", metavar="X,Y;X,Y;...", help="control points, one per ';'")
     s.add_argument("--points-file", metavar="FILE", help="control points, one per line (whitespace or .csv)")
-    s.add_argument("--steps", default="1")
+    s.add_argument("--steps", default="1", help="refinement steps (default 1)")
     s.add_argument("--open", action="store_true", help="open polygon (default: closed)")
     s.add_argument("--end-rule", default="interior", choices=("interior", "extrapolate"),
                    help="open polygons: keep interior points only, or reflect ghost points 2P0 - Pm")
@@ -449,11 +449,11 @@ def register(sub) -> None:
     s = sub.add_parser("matrices", help="local subdivision matrix, its exact eigenvalues, support; transition matrices")
     _add_scheme_args(s)
     s.add_argument("--transition", action="store_true",
-                   help="also the two transition matrices of c = 2^k a/(1+z)^(k+1) (k+1 = all factors (1+z))")
+                   help="also the transition matrices of c = 2^k a/(1+z)^(k+1) (k+1 = all factors (1+z))")
     s.set_defaults(func=cmd_matrices)
 
     s = sub.add_parser("list", help="the catalogue of named schemes")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
     s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary)")
     s.set_defaults(func=cmd_list)
