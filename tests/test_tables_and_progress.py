@@ -142,7 +142,9 @@ class _Terminal(io.StringIO):
     (["jsr", "examples/jsr-golden-pair.json"], "subdiv jsr: work units"),
     (["derive", "--support", "7", "--interpolatory", "--symmetric", "primal", "--reproduce", "1", "--maximize",
       "holder", "--within=-1/8,0", "--gap", "1/10"], "subdiv derive: float search 103/103"),
-], ids=["vertex", "jsr", "derive-maximize"])
+    (["atlas", "--symbol", "(1+z)**2/(2*z)*(1 + s*(z-2+1/z) + t*(z**2-2+z**-2))", "--x", "s=0:1/8:2", "--y",
+      "t=0:0:1", "--j", "1", "--refine", "0", "--executor", "serial"], "subdiv atlas: atlas grid: points 2/2"),
+], ids=["vertex", "jsr", "derive-maximize", "atlas"])
 def test_progress_on_a_terminal_only(capsys, monkeypatch, argv, shown):
     assert main(argv) == 0
     plain = capsys.readouterr()
