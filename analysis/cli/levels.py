@@ -306,8 +306,8 @@ def cmd_reproduce(args) -> None:
             if res.status == "refuted" and res.witness.get("counterexample"):
                 w = res.witness["counterexample"]
                 pt = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in w["point"].items())
-                lines.append(f"  counterexample ({'generation' if res is g else 'reproduction'}): level n = {w['n']}, "
-                             f"{pt}: {res.witness['statement']} (value {w['value']})")
+                lines.append(f"  counterexample ({'generation' if res is g else 'reproduction'}): level n = {w['n']}"
+                             f"{', ' + pt if pt else ''}: {res.witness['statement']} (value {w['value']})")
                 break
     if args.curve:
         c = curve_deviation(s, args.curve, vals, points=args.points, steps=args.steps, plot=args.plot)

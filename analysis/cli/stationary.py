@@ -45,8 +45,9 @@ def cmd_symbol(args) -> None:
                  ("sum rules hold: a(1) = %d, a(eps) = 0 for eps^%d = 1, eps != 1" % (m, m)) if sr.value else
                  "sum rules FAIL: " + "; ".join(sr.witness["failures"])
                  + (f" (they hold for {sr.witness['solutions']})" if sr.witness.get("solutions") else ""),
-                 f"symmetric: {'yes' if sym.value else 'no'} (mask centre {sym.witness['centre']}, "
-                 f"limit function centre {sym.witness['limit_centre']})"]
+                 (f"symmetric: yes (mask centre {sym.witness['centre']}, limit function centre "
+                  f"{sym.witness['limit_centre']})" if sym.value else
+                  f"symmetric: no (about the centre {sym.witness['centre']} of the support)")]
         _emit(args, {"scheme": label, "arity": m, "start": a.start, "end": a.end, "mask": list(a.mask),
                      "sum_rules": sr.to_json(), "symmetry": sym.to_json()}, "\n".join(lines))
         return
@@ -73,7 +74,8 @@ def cmd_symbol(args) -> None:
              f"a(1) = {sp.sstr(sr.witness['a(1)'])}, a(-1) = {sp.sstr(sr.witness['a(-1)'])}"
              + ("   (sum rules hold)" if sr.value else "   (sum rules FAIL" +
                 (f"; they hold for {sr.witness.get('solutions')})" if sr.witness.get("solutions") else ")")),
-             f"symmetric: {'yes' if sym.value else 'no'} (centre {sym.witness['centre']}, {sym.witness['kind']})",
+             (f"symmetric: yes (centre {sym.witness['centre']}, {sym.witness['kind']})" if sym.value else
+              f"symmetric: no (about the centre {sym.witness['centre']} of the support)"),
              f"LaTeX:    {a.latex()}"]
     _emit(args, data, "\n".join(lines))
 
