@@ -422,9 +422,9 @@ def cmd_holder(args) -> None:
             _emit(args, data, "\n".join(lines))
             return
         if h.value is not None:
-            lines.append(f"Hoelder exponent alpha = {sp.sstr(h.value)}   [{h.status}]")
+            lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
         else:
-            lines.append(f"Hoelder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
+            lines.append(f"Hölder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
                          f"   [{h.status}]")
         lines.append(f"  alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1}), c = {h.witness['c'].pretty()}")
         _row(args, "alpha", h, witness=f"alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1})")

@@ -385,7 +385,7 @@ def cmd_matrices(args) -> None:
         T0, T1 = transition_matrices(c)
         data["transition"] = {"k": k - 1, "c": c, "T0": T0.tolist(), "T1": T1.tolist()}
         lines.append(f"transition matrices of c = 2^{k - 1} a/(1+z)^{k} = {c.pretty()} "
-                     f"(JSR gives the Hoelder exponent {k - 1} - log2 JSR):")
+                     f"(JSR gives the Hölder exponent {k - 1} - log2 JSR):")
         lines.append("  T0 = " + sp.sstr(T0.tolist()))
         lines.append("  T1 = " + sp.sstr(T1.tolist()))
     _emit(args, data, "\n".join(lines))
