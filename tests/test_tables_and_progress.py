@@ -97,12 +97,20 @@ def test_holder_table_enclosure_is_the_printed_one(tmp_path, capsys):
     assert alpha[2] == "certified" and f"alpha in {alpha[1]}   [certified]" in out
 
 
-def test_holder_table_refused_where_there_is_none(tmp_path, capsys):
+def test_holder_table_of_a_level_dependent_scheme(tmp_path, capsys):
     argv = ["holder", "--symbol", "(1+z)**2*(1+2*c*z+z**2)/(4*(1+c))/z**2", "--where", "c=cos(t/2**(n+1))",
-            "--param", "t=1", "--table", str(tmp_path / "x.csv")]
-    assert main(argv) == 2
-    assert "--table is available for stationary schemes" in capsys.readouterr().err
-    assert not (tmp_path / "x.csv").exists()
+            "--param", "t=1"]
+    assert main([*argv, "--table", str(tmp_path / "e.csv")]) == 0
+    out = capsys.readouterr().out
+    rows = list(csv.reader((tmp_path / "e.csv").open(newline="")))
+    assert rows[0] == ["", "verdict", "status", "theorem"]
+    for name, verdict, status, theorem in rows[1:]:          # the verdict lines the command printed
+        assert f"  {name}: {verdict} [{status}] — {theorem}" in out
+    assert [r[:2] for r in rows[1:]] == [["convergence (C^0)", "yes"], ["C^1", "yes"], ["C^2", "yes"], ["C^3", "no"]]
+    assert main(["holder", "--scheme", "exp-bspline-3-trig", "--box", "theta=1/10,1", "--table",
+                 str(tmp_path / "b.csv")]) == 2                # a box of sub-box verdicts: no table yet
+    assert "--table is not available for a level-dependent scheme on a --box" in capsys.readouterr().err
+    assert not (tmp_path / "b.csv").exists()
 
 
 def test_report_and_check_verdict_tables(tmp_path, capsys):

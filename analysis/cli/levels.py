@@ -351,8 +351,9 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
         lines = [f"scheme: {s.slug} (level-dependent, arity {arity}, h = {arity}^-n)",
                  f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(H, sp.Integer(arity) ** (-N)).subs(point)))}",
                  limit_line(r.witness["limit"])] + verdict_lines(r)
-        _emit(args, {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()},
-              "\n".join(lines))
+        data = {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()}
+        _level_table(args, s.slug, r, lines, data)
+        _emit(args, data, "\n".join(lines))
         return
     k_max = k_max_arg(args)
     r = level_smoothness(s, k_max=k_max)
@@ -360,7 +361,22 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
     lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n)",
              f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(sp.Symbol('h', positive=True), 2 ** (-sp.Symbol('n')))))}",
              limit_line(lim)] + verdict_lines(r)
-    _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
+    data = {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}
+    _level_table(args, s.slug, r, lines, data)
+    _emit(args, data, "\n".join(lines))
+
+
+def _level_table(args, label: str, r, lines: list, data: dict) -> None:
+    """``holder --table FILE`` of a level-dependent scheme: its C^k verdicts (:func:`verdict_rows`)."""
+    if not getattr(args, "table", None):
+        return
+    from .level_text import verdict_rows
+    from .tables import write_table
+
+    write_table(args.table, ["", "verdict", "status", "theorem"], verdict_rows(r),
+                f"subdiv holder: {label} (level-dependent)")
+    lines.append(f"table written to {args.table}")
+    data["table"] = args.table
 
 
 def holder_growing_support(args, message: str) -> None:

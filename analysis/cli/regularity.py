@@ -77,7 +77,7 @@ def _write_holder_table(args, label: str, lines: list, data: dict) -> None:
 
 def _no_table(args, what: str) -> None:
     if getattr(args, "table", None):
-        raise AnalysisError(f"--table is available for stationary schemes; {what} has no table yet (use --json)")
+        raise AnalysisError(f"--table is not available for {what} yet: use --json")
 
 
 def _part(name: str, compute, lines: list, data: dict, args=None) -> None:
@@ -402,7 +402,6 @@ def cmd_holder(args) -> None:
         if uses_level(args):                        # a level-dependent scheme of arity m
             from .levels import holder_level_dependent
 
-            _no_table(args, "a level-dependent scheme")
             return holder_level_dependent(args, None, arity=m)
         if getattr(args, "approx", False):
             raise AnalysisError("--approx is not available for m-ary schemes yet: give the mask exactly (fractions or radicals)")
@@ -449,14 +448,13 @@ def cmd_holder(args) -> None:
     try:
         level = level_scheme_from_args(args, _parse_params(args.param))
     except AnalysisError as exc:
-        _no_table(args, "a level-dependent scheme")
+        _no_table(args, "a level-dependent scheme whose level enters through n (or whose support grows)")
         if str(exc).startswith("the support of a^n grows"):
             return holder_growing_support(args, str(exc))
         from .levels_rational import fallback, holder_rational      # the level enters through n itself
 
         return holder_rational(args, fallback(args, _parse_params(args.param), exc))
     if level is not None and not is_stationary(level):
-        _no_table(args, "a level-dependent scheme")
         return holder_level_dependent(args, level)
     entry = _numeric_entry(args)
     if entry is not None:
@@ -669,8 +667,9 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
     s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
-    s.add_argument("--table", metavar="FILE", help="also write the results (alpha, stability, C^K, s_2: value, status, "
-                                                  "witness) as FILE.csv or FILE.tex (a LaTeX booktabs tabular)")
+    s.add_argument("--table", metavar="FILE", help="also write the results (alpha, stability, C^K, s_2; the C^k verdicts of a "
+                                                  "level-dependent scheme: value, status, witness) as FILE.csv or "
+                                                  "FILE.tex (a LaTeX booktabs tabular)")
     s.add_argument("--budget", default="20000", metavar="UNITS",
                    help=f"work budget of the joint spectral radius, in work units (default 20000; {WORK_HELP})")
     s.add_argument("--approx", action="store_true",
