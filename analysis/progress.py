@@ -110,7 +110,7 @@ def on_terminal(command: str, enabled: bool = True):
     def show(text: str) -> None:
         now, (head, _, count) = time.monotonic(), text.rpartition(" ")
         done, _, total = count.partition("/")
-        if now - last[0] < 0.1 and head == last[1] and done != total:      # a stage's last step is shown
+        if now - last[0] < 0.1 and head == last[1] and not (total and done == total):   # a last step is shown
             return
         last[:] = [now, head]
         line = f"subdiv {command}: {text}"[:100]

@@ -121,7 +121,8 @@ def _write_table(path: str, all_results: dict, titles: dict) -> None:
     from .tables import write_table
 
     rows = [row for pid in all_results for row in verdict_rows(all_results[pid])]
-    caption = "subdiv: verdicts of " + "; ".join(f"paper {pid} ({titles.get(pid, '')})" for pid in all_results)
+    caption = ("subdiv: verdicts of " + "; ".join(f"paper {pid} ({titles.get(pid, '')})" for pid in all_results)
+               + "\nneeds \\usepackage{booktabs,amsmath,amssymb}")
     write_table(path, TABLE_COLUMNS, rows, caption, spec=TABLE_SPEC)
 
 

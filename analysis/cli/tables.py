@@ -94,7 +94,8 @@ class Name(str):
     """A name in a table cell (a claim id): escaped, never typeset (``FourPoint.alpha`` stays a word)."""
 
 
-#: the control words a statement's formula may keep in the LaTeX table (standard LaTeX, amsmath, amssymb)
+#: the control words a statement's formula may keep in the LaTeX table (standard LaTeX, amsmath, amssymb;
+#: no text-mode commands such as ``\\text``, whose argument may hold characters that end math)
 _SAFE_COMMANDS = frozenset("""
 alpha beta gamma delta epsilon varepsilon zeta eta theta vartheta iota kappa lambda mu nu xi pi varpi rho varrho
 sigma varsigma tau upsilon phi varphi chi psi omega Gamma Delta Theta Lambda Xi Pi Sigma Upsilon Phi Psi Omega
@@ -104,7 +105,7 @@ supseteq in notin ni to mapsto rightarrow leftarrow Rightarrow Leftarrow Leftrig
 infty partial nabla forall exists emptyset varnothing setminus smallsetminus cup cap bigcup bigcap times cdot
 cdots ldots dots vdots ddots pm mp circ ast star oplus otimes sum prod int oint lim limsup liminf sup inf max min
 sin cos tan cot sec csc sinh cosh tanh coth log ln exp det deg arg dim ker gcd mod bmod pmod
-operatorname mathbb mathcal mathrm mathbf mathit mathsf text textrm textit textbf hat bar tilde vec dot ddot
+operatorname mathbb mathcal mathrm mathbf mathit mathsf hat bar tilde vec dot ddot
 overline underline widehat widetilde quad qquad langle rangle lfloor rfloor lceil rceil vert Vert mid
 prime ell hbar Re Im aleph colon
 """.split())
@@ -120,6 +121,9 @@ def _safe_formula(latex: str) -> bool:
         if depth < 0:
             return False
     if depth or any(c in latex for c in "$%#&") or not latex.strip():
+        return False
+    words = [m.group(1) for m in _CONTROL_WORD.finditer(latex)]
+    if words.count("left") != words.count("right"):
         return False
     for m in _CONTROL_WORD.finditer(latex):
         if m.group(1) is not None and m.group(1) not in _SAFE_COMMANDS:
