@@ -90,8 +90,10 @@ def test_holder_table_csv_and_latex(tmp_path, capsys):
     assert rows[1][:3] == [r"$\alpha$", "$2$", "certified"] and rows[3][:2] == ["$C^{1}$", "yes"]
 
 
-def test_holder_table_enclosure_is_the_printed_one(tmp_path, capsys):
-    assert main(["holder", "--scheme", "four-point", "--param", "w=1/10", "--table", str(tmp_path / "h.csv")]) == 0
+@pytest.mark.parametrize("scheme", [["four-point", "--param", "w=1/10"],
+                                    ["ternary-four-point", "--param", "mu=1/18"]], ids=["binary", "ternary"])
+def test_holder_table_enclosure_is_the_printed_one(tmp_path, capsys, scheme):
+    assert main(["holder", "--scheme", *scheme, "--table", str(tmp_path / "h.csv")]) == 0
     out = capsys.readouterr().out
     alpha = next(r for r in csv.reader((tmp_path / "h.csv").open(newline="")) if r[0] == "alpha")
     assert alpha[2] == "certified" and f"alpha in {alpha[1]}   [certified]" in out

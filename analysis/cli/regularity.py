@@ -48,16 +48,16 @@ def _numeric_entry(args):
     return entry if isinstance(entry, NumericSchemeEntry) else None
 
 
-def _row(args, quantity: str, r, value=None, witness: str = "") -> None:
+def _row(args, quantity: str, r, value=None, witness: str = "", digits: int = 10) -> None:
     """One row of the ``holder --table`` table: the quantity, its value (``r``'s exact value or certified
-    enclosure, outward-rounded as printed; or ``value``), ``r``'s status and how it was obtained."""
+    enclosure, outward-rounded to the ``digits`` printed; or ``value``), ``r``'s status and how it was obtained."""
     if value is None:
         if r.value is not None and not isinstance(r.value, bool):
             value = r.value
         elif r.lower is not None and r.upper is None:
-            value = f">= {_fmt(r.lower, 'lower')}"
+            value = f">= {_fmt(r.lower, 'lower', digits)}"
         elif r.lower is not None:
-            value = f"[{_fmt(r.lower, 'lower')}, {_fmt(r.upper, 'upper')}]"
+            value = f"[{_fmt(r.lower, 'lower', digits)}, {_fmt(r.upper, 'upper', digits)}]"
         else:
             value = "?"
     args.__dict__.setdefault("_table_rows", []).append([quantity, value, r.status, witness])
@@ -337,7 +337,8 @@ def _sobolev_lines(a, m: int, lines: list, data: dict, args=None) -> None:
     lines.append(head)
     w = s2.witness
     if args is not None:
-        _row(args, "$s_2$", s2, witness=f"s_2 = -(1/2) log_{m} lambda" if "lambda_lower" in w else w.get("reason") or "")
+        _row(args, "$s_2$", s2, witness=f"s_2 = -(1/2) log_{m} lambda" if "lambda_lower" in w else w.get("reason") or "",
+             digits=12)
     if "lambda_lower" in w:
         lines.append(f"  s_2 = -(1/2) log_{m} lambda, lambda = largest root of {sp.sstr(w['minimal_polynomial'])} "
                      f"(exact {m}-ary transfer-operator sequence, r = {w['r']})")
@@ -426,7 +427,7 @@ def cmd_holder(args) -> None:
             lines.append(f"Hölder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
                          f"   [{h.status}]")
         lines.append(f"  alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1}), c = {h.witness['c'].pretty()}")
-        _row(args, "alpha", h, witness=f"alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1})")
+        _row(args, "alpha", h, witness=f"alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1})", digits=12)
         data["alpha"] = {"value": h.value, "lower": h.lower, "upper": h.upper, "status": h.status, "k": h.witness["k"]}
         if args.C is not None:
             j = _int_arg(args.C, "--C")

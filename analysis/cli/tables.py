@@ -140,6 +140,8 @@ def _tex_quote(statement: str) -> str:
     $C^2$ for $0 < \\omega < \\frac{\\sqrt{6}-1}{80}.$
     >>> print(_tex_quote(r"x \\input{/etc/passwd} 100%"))
     x \\textbackslash{}input\\{/etc/passwd\\} 100\\%
+    >>> print(_tex_quote(r"for \\left( x < 1"))             # an unclosed \\left would not compile
+    for \\textbackslash{}left( x \\textless{} 1
     """
     from ..report.mathml import has_latex, quote_parts
 
