@@ -251,8 +251,11 @@ def cmd_bound(args) -> None:
         raise AnalysisError(f"--depth must be between 0 and 30, not {args.depth}")
     if not 1 <= args.pieces <= 64:
         raise AnalysisError(f"--pieces must be between 1 and 64, not {args.pieces}")
-    r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "", max_depth=args.depth,
-                         pieces=args.pieces)
+    from .. import progress
+
+    with progress.on_terminal("bound", enabled=not args.json):
+        r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "", max_depth=args.depth,
+                             pieces=args.pieces)
     text = f"{r.witness['statement']}: {r.status}"
     if "box" in r.provenance and any(isinstance(v, tuple) for v in r.provenance["box"].values()):
         text += " on " + ", ".join(f"{k} in [{sp.sstr(v[0])}, {sp.sstr(v[1])}]" if isinstance(v, tuple) else

@@ -224,18 +224,21 @@ def cmd_chamfer(args) -> None:
 def cmd_claims(args) -> None:
     import importlib
 
+    from .. import progress
+
     mod = importlib.import_module({"000": "papers.seed000", "001": "papers.seed001"}[args.seed])
     rows = []
-    for c in mod.CLAIMS:
-        if args.id and c["id"] != args.id:
-            continue
-        r = c["check"]()
-        if hasattr(r, "summary"):          # seed 001: a proof-check Verdict of its paper file
-            rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.summary,
-                         "result": {"label": r.label, "numbers": {n.name: n.to_json() for n in r.numbers}}})
-            continue
-        rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.value,
-                     "result": r.to_json()})
+    chosen = [c for c in mod.CLAIMS if not args.id or c["id"] == args.id]
+    with progress.on_terminal("nonuniform claims", enabled=not args.json):
+        for k, c in enumerate(chosen, start=1):
+            with progress.part(f"claim {k}/{len(chosen)} {c['id']}"):
+                r = c["check"]()
+            if hasattr(r, "summary"):          # seed 001: a proof-check Verdict of its paper file
+                rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.summary,
+                             "result": {"label": r.label, "numbers": {n.name: n.to_json() for n in r.numbers}}})
+                continue
+            rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.value,
+                         "result": r.to_json()})
     if args.id and not rows:
         raise AnalysisError(f"unknown claim {args.id!r}")
     _out(args, rows, "\n".join(f"{x['id']:<22} {x['status']:<12} {str(x['value'])[:90]}" for x in rows))
