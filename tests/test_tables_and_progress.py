@@ -191,3 +191,15 @@ def test_check_progress_names_the_claim_running(tmp_path, capsys, monkeypatch):
     term.truncate()
     assert main(["check", str(paper), "--quiet"]) == 0
     assert "subdiv check:" not in term.getvalue()              # --quiet: silent
+
+
+def test_series_announces_each_weight():
+    from types import SimpleNamespace
+
+    from analysis import progress
+    from analysis.cli.levels import _weights
+
+    seen: list = []
+    with progress.listening(seen.append):
+        assert list(_weights(SimpleNamespace(m="0,2", json=False))) == [0, 2]
+    assert seen == ["weight m = 0 (1/2)", "weight m = 2 (2/2)"]

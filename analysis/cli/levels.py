@@ -107,6 +107,17 @@ def _values_of(args, s) -> dict:
     return vals
 
 
+def _weights(args):
+    """The weights of ``--m``, each announced as the part running now (shown on a terminal, not with --json)."""
+    from .. import progress
+
+    ms = _ints(args.m, "--m")
+    with progress.on_terminal("series", enabled=not args.json):
+        for i, m in enumerate(ms, start=1):
+            with progress.part(f"weight m = {m} ({i}/{len(ms)})"):
+                yield m
+
+
 def cmd_series(args) -> None:
     from ..jsonable import fmt_lower, fmt_upper
 
@@ -134,7 +145,7 @@ def cmd_series(args) -> None:
 
             s = divided_difference(s, d)
         rows, lines = [], []
-        for k in _ints(args.m, "--m"):
+        for k in _weights(args):
             r = series_by_leading_term(s, vals, k, pieces=pieces, depth=depth, N=args.N)
             if not lines:
                 lines.append(f"scheme {s.slug} (arity {m}, h = {m}^-n"
@@ -176,7 +187,7 @@ def cmd_series(args) -> None:
     vals = _values(args)
     lead = leading_asymptotics(s)
     rows, lines = [], [f"scheme {s.slug}: ||S_(a^n) - S_a|| ~ {lead.witness['rate']} (exact)"]
-    for m in _ints(args.m, "--m"):
+    for m in _weights(args):
         r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces, depth=args.depth)
         rows.append({"m": m, **r.to_json()})
         lines.append(series_line(f"m = {m}", r, lambda v, r=r: (

@@ -166,6 +166,9 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
     want_json = "--json" in argv[:argv.index("--")] if "--" in argv else "--json" in argv
 
     def fail(message: str, kind: str, code: int) -> int:
+        progress = sys.modules.get("analysis.progress")    # a progress line still shown is erased first
+        if progress is not None:
+            progress.clear()
         message = " ".join(str(message).split())           # one line, whatever the source said
         if len(message) > 600:                               # a message never repeats a huge input
             message = message[:400] + " ... " + message[-150:]
