@@ -668,9 +668,9 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
     s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
-    s.add_argument("--table", metavar="FILE", help="also write the results (alpha, stability, C^K, s_2; the C^k verdicts of a "
-                                                  "level-dependent scheme: value, status, witness) as FILE.csv or "
-                                                  "FILE.tex (a LaTeX booktabs tabular)")
+    s.add_argument("--table", metavar="FILE", help="also write the results as FILE.csv or FILE.tex (a LaTeX booktabs tabular): "
+                                                  "alpha, stability, C^K, s_2 (of a level-dependent scheme: its C^k "
+                                                  "verdicts), each with its value, status and witness")
     s.add_argument("--budget", default="20000", metavar="UNITS",
                    help=f"work budget of the joint spectral radius, in work units (default 20000; {WORK_HELP})")
     s.add_argument("--approx", action="store_true",
