@@ -172,6 +172,34 @@ def test_unknown_name_in_a_mask_is_an_error_naming_it(capsys):
     assert code == 2 and "'l6'" in err and "--param l6=" in err
 
 
+def test_table_paths_that_leave_their_place_are_refused(capsys, tmp_path):
+    """``--table``: a report's table is a name inside its output folder (``..``, an absolute path or a
+    symbolic link leading out are refused); another command's table is the named file, never a
+    symbolic link (which would write through to its target). Refused before any computation."""
+    paper = tmp_path / "p.toml"
+    paper.write_text('[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n[schemes.chaikin]\n'
+                     'mask = ["1/4", "3/4", "3/4", "1/4"]\nstart = -2\n[[claims]]\nid = "a"\nstatement = "s"\n'
+                     'kind = "interpolatory"\nscheme = "chaikin"\n')
+    out, elsewhere = tmp_path / "out", tmp_path / "elsewhere"
+    out.mkdir()
+    elsewhere.mkdir()
+    (out / "link").symlink_to(elsewhere, target_is_directory=True)
+    target = tmp_path / "precious.txt"
+    target.write_text("keep")
+    (tmp_path / "t.csv").symlink_to(target)
+    cases = [["report", str(paper), "--output", str(out), "--table", name]
+             for name in ("../escape.tex", str(tmp_path / "abs.csv"), "link/x.csv", "../../x.csv")]
+    cases += [["holder", "--scheme", "chaikin", "--table", str(tmp_path / "t.csv")],
+              ["check", str(paper), "--table", str(tmp_path / "t.csv")],
+              ["holder", "--scheme", "chaikin", "--table", str(tmp_path / "x.exe")]]
+    for argv in cases:
+        code, stdout, err, dt = _run(capsys, [*argv, "--json"])
+        _assert_clean_error(argv, code, stdout, err, dt)
+        assert "refusing to write --table" in err or "end the name in .csv" in err, err
+    assert sorted(os.listdir(tmp_path)) == ["elsewhere", "out", "p.toml", "precious.txt", "t.csv"]
+    assert os.listdir(elsewhere) == [] and os.listdir(out) == ["link"] and target.read_text() == "keep"
+
+
 def test_marker_never_created():
     assert not MARK.exists()
     assert os.listdir(MARK_DIR) == []

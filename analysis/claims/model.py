@@ -410,12 +410,16 @@ def evaluate_claim(claim: Claim) -> Evaluated:
 
 def evaluate_paper(paper: Paper, progress: Callable[[int, int, Evaluated], None] | None = None,
                    only: Iterable[str] | None = None) -> list[Evaluated]:
-    """Evaluate the claims of ``paper`` in order (``only``: a subset of claim ids)."""
+    """Evaluate the claims of ``paper`` in order (``only``: a subset of claim ids); the claim running now
+    is announced to :mod:`analysis.progress` (shown on a terminal by the command line)."""
+    from .. import progress as announce
+
     wanted = None if only is None else set(only)
     claims = [c for c in paper.claims if wanted is None or c.id in wanted]
     out = []
     for k, c in enumerate(claims, start=1):
-        ev = evaluate_claim(c)
+        with announce.part(f"claim {k}/{len(claims)} {c.id}"):
+            ev = evaluate_claim(c)
         out.append(ev)
         if progress is not None:
             progress(k, len(claims), ev)

@@ -86,9 +86,12 @@ def cmd_atlas(args) -> None:
     if not js:
         raise AnalysisError("--j needs a list of integers, e.g. 1,2,3")
     executor = None if args.executor == "serial" else args.executor
-    r = holder_atlas(a, xn, (xlo, xhi), yn, (ylo, yhi), n1=xN, n2=yN, j_levels=js, refine_levels=refine,
-                     executor=executor, workers=workers, budget=budget,
-                     progress=not args.no_progress, **({"arity": m} if m != 2 else {}))
+    from .. import progress
+
+    with progress.on_terminal("atlas", enabled=not (args.no_progress or args.json)):
+        r = holder_atlas(a, xn, (xlo, xhi), yn, (ylo, yhi), n1=xN, n2=yN, j_levels=js, refine_levels=refine,
+                         executor=executor, workers=workers, budget=budget,
+                         progress=not args.no_progress, **({"arity": m} if m != 2 else {}))
     try:
         figure = plot_atlas(r, args.figure) if args.figure else None
     except OSError as exc:
@@ -152,7 +155,8 @@ def cmd_atlas(args) -> None:
         from .common import parse_coefficient
         from .maximize import maximize_part
 
-        maximize_part(a, {xn: (xlo, xhi), yn: (ylo, yhi)}, m, parse_coefficient(args.gap), 120_000, lines, data)
+        with progress.on_terminal("atlas", enabled=not (args.no_progress or args.json)):
+            maximize_part(a, {xn: (xlo, xhi), yn: (ylo, yhi)}, m, parse_coefficient(args.gap), 120_000, lines, data)
     _emit(args, data, "\n".join(lines))
 
 
@@ -173,7 +177,7 @@ def register(subparsers) -> None:
     s.add_argument("--budget", default="2000", metavar="UNITS",
                    help=f"work budget of the joint spectral radius per point, in work units (default 2000; {WORK_HELP})")
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")
-    s.add_argument("--no-progress", action="store_true", help="no progress bar")
+    s.add_argument("--no-progress", action="store_true", help="no progress line on a terminal")
     s.add_argument("--table", metavar="FILE", help="also write the table of points as FILE.csv or FILE.tex "
                                                   "(a LaTeX booktabs tabular)")
     s.add_argument("--family", metavar="FILE.json", help="a family written by subdiv derive --output (replaces --mask)")

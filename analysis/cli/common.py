@@ -285,8 +285,8 @@ def _add_scheme_args(p: argparse.ArgumentParser) -> None:
     g.add_argument("--even", metavar="LIST", help="even stencil: coefficients of f[i+first], f[i+first+1], ...")
     g.add_argument("--odd", metavar="LIST", help="odd stencil (same offsets as --even unless --odd-first)")
     g.add_argument("--first", default="0", metavar="P", help="offset of the first stencil coefficient (default 0)")
-    g.add_argument("--even-first", metavar="P")
-    g.add_argument("--odd-first", metavar="P")
+    g.add_argument("--even-first", metavar="P", help="offset of the even stencil (default: --first)")
+    g.add_argument("--odd-first", metavar="P", help="offset of the odd stencil (default: --first)")
     g.add_argument("--symbol", metavar="EXPR", help='a Laurent polynomial in z, e.g. "(1+z)**4/(8*z**2)"')
     p.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     p.add_argument("--arity", metavar="M", help="m-ary scheme: (S_a f)_i = sum_j a_{i-Mj} f_j (default 2, "
@@ -312,7 +312,11 @@ def command_stdout():
 
 
 def _print(*objects, **kw) -> None:
-    """``print`` to :func:`command_stdout` — what every command uses for its own output."""
+    """``print`` to :func:`command_stdout` — what every command uses for its own output (the progress
+    line on a terminal, if shown, is erased first)."""
+    progress = sys.modules.get("analysis.progress")        # imported only by commands that show progress
+    if progress is not None:
+        progress.clear()
     print(*objects, file=command_stdout(), **kw)
 
 

@@ -132,7 +132,10 @@ def cmd_derive(args) -> None:
     if args.C is not None:
         _ck_part(args, r, arity, lines, data)
     if args.maximize and (arity != 2 or len(w["parameters"]) != 1 or args.box):
-        _maximize_box(args, r, arity, lines, data)
+        from .. import progress
+
+        with progress.on_terminal("derive", enabled=not args.json):
+            _maximize_box(args, r, arity, lines, data)
     elif args.maximize:
         from ..regularity.maximize import maximize_holder
 
@@ -146,7 +149,10 @@ def cmd_derive(args) -> None:
         from .common import parse_coefficient, work_arg
 
         budget = work_arg(args.budget, "--budget")
-        m = maximize_holder(r.value, within=(lo, hi), gap=parse_coefficient(args.gap), budget=budget)
+        from .. import progress
+
+        with progress.on_terminal("derive", enabled=not args.json):
+            m = maximize_holder(r.value, within=(lo, hi), gap=parse_coefficient(args.gap), budget=budget)
         data["maximize"] = {"status": m.status, "maximiser": m.value, "alpha_lower_at_maximiser": m.lower,
                             "alpha_upper_on_box": m.upper, "gap": m.witness.get("gap"),
                             "intervals": m.witness.get("intervals"), "work": m.provenance.get("work"),

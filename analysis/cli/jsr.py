@@ -159,7 +159,11 @@ def cmd_jsr(args) -> None:
     if not 0 < gap < 1:
         raise AnalysisError("--gap must be between 0 and 1 (a relative gap upper/lower - 1)")
     mats = read_family(args.file)
-    r = jsr_bounds(mats, budget=budget, rel_gap=gap)
+    from .. import progress
+
+    with progress.on_terminal("jsr", enabled=not args.json):
+        progress.stage("work units", budget)
+        r = jsr_bounds(mats, budget=budget, rel_gap=gap, on_work=progress.step)
     w = r.witness
     word = tuple(w["product"])
     L = len(word)

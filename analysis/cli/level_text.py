@@ -39,6 +39,20 @@ def limit_line(lim: dict) -> str:
             + (f", not C^{lim['not_C^k']} certified" if lim["not_C^k"] is not None else ""))
 
 
+def verdict_rows(r) -> list[list]:
+    """The rows ``[C^k, yes/no/undecided, status, theorem or reason]`` of a level-dependent C^k result (the
+    ``holder --table`` of a level-dependent scheme; the same verdicts as :func:`verdict_lines`)."""
+    rows = []
+    for v in r.witness["verdicts"]:
+        name = "convergence (C^0)" if v["k"] == 0 else f"C^{v['k']}"
+        if v["status"] == "certified":
+            rows.append([name, "no" if v.get("holds") is False else "yes", "certified", v["route"]])
+        else:
+            rows.append([name, "undecided", v["status"], v.get("reason") or "; ".join(
+                f"{t['route']}: failed {', '.join(t['failed'])}" for t in v.get("tried", []))])
+    return rows
+
+
 def verdict_lines(r, *, why: bool = False) -> list[str]:
     """The lines ``  C^k: yes/no/undecided [status] — theorem`` of a level-dependent C^k result and the
     conclusion ``  => ...``; ``why``: each failed route also says why (its ``"why"``)."""

@@ -107,6 +107,17 @@ def _values_of(args, s) -> dict:
     return vals
 
 
+def _weights(args):
+    """The weights of ``--m``, each announced as the part running now (shown on a terminal, not with --json)."""
+    from .. import progress
+
+    ms = _ints(args.m, "--m")
+    with progress.on_terminal("series", enabled=not args.json):
+        for i, m in enumerate(ms, start=1):
+            with progress.part(f"weight m = {m} ({i}/{len(ms)})"):
+                yield m
+
+
 def cmd_series(args) -> None:
     from ..jsonable import fmt_lower, fmt_upper
 
@@ -134,7 +145,7 @@ def cmd_series(args) -> None:
 
             s = divided_difference(s, d)
         rows, lines = [], []
-        for k in _ints(args.m, "--m"):
+        for k in _weights(args):
             r = series_by_leading_term(s, vals, k, pieces=pieces, depth=depth, N=args.N)
             if not lines:
                 lines.append(f"scheme {s.slug} (arity {m}, h = {m}^-n"
@@ -176,7 +187,7 @@ def cmd_series(args) -> None:
     vals = _values(args)
     lead = leading_asymptotics(s)
     rows, lines = [], [f"scheme {s.slug}: ||S_(a^n) - S_a|| ~ {lead.witness['rate']} (exact)"]
-    for m in _ints(args.m, "--m"):
+    for m in _weights(args):
         r = weighted_series(s, vals, m, N=args.N, pieces=args.pieces, depth=args.depth)
         rows.append({"m": m, **r.to_json()})
         lines.append(series_line(f"m = {m}", r, lambda v, r=r: (
@@ -251,8 +262,11 @@ def cmd_bound(args) -> None:
         raise AnalysisError(f"--depth must be between 0 and 30, not {args.depth}")
     if not 1 <= args.pieces <= 64:
         raise AnalysisError(f"--pieces must be between 1 and 64, not {args.pieces}")
-    r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "", max_depth=args.depth,
-                         pieces=args.pieces)
+    from .. import progress
+
+    with progress.on_terminal("bound", enabled=not args.json):
+        r = check_inequality(lhs, rhs, n0, vals, strict=strict, claim=args.claim or "", max_depth=args.depth,
+                             pieces=args.pieces)
     text = f"{r.witness['statement']}: {r.status}"
     if "box" in r.provenance and any(isinstance(v, tuple) for v in r.provenance["box"].values()):
         text += " on " + ", ".join(f"{k} in [{sp.sstr(v[0])}, {sp.sstr(v[1])}]" if isinstance(v, tuple) else
@@ -306,8 +320,8 @@ def cmd_reproduce(args) -> None:
             if res.status == "refuted" and res.witness.get("counterexample"):
                 w = res.witness["counterexample"]
                 pt = ", ".join(f"{k} = {sp.sstr(v)}" for k, v in w["point"].items())
-                lines.append(f"  counterexample ({'generation' if res is g else 'reproduction'}): level n = {w['n']}, "
-                             f"{pt}: {res.witness['statement']} (value {w['value']})")
+                lines.append(f"  counterexample ({'generation' if res is g else 'reproduction'}): level n = {w['n']}"
+                             f"{', ' + pt if pt else ''}: {res.witness['statement']} (value {w['value']})")
                 break
     if args.curve:
         c = curve_deviation(s, args.curve, vals, points=args.points, steps=args.steps, plot=args.plot)
@@ -351,8 +365,9 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
         lines = [f"scheme: {s.slug} (level-dependent, arity {arity}, h = {arity}^-n)",
                  f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(H, sp.Integer(arity) ** (-N)).subs(point)))}",
                  limit_line(r.witness["limit"])] + verdict_lines(r)
-        _emit(args, {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()},
-              "\n".join(lines))
+        data = {"scheme": s.slug, "arity": arity, "level_dependent": True, "smoothness": r.to_json()}
+        _level_table(args, s.slug, r, lines, data)
+        _emit(args, data, "\n".join(lines))
         return
     k_max = k_max_arg(args)
     r = level_smoothness(s, k_max=k_max)
@@ -360,7 +375,22 @@ def holder_level_dependent(args, s, arity: int = 2) -> None:
     lines = [f"scheme: {s.slug} (level-dependent, h = 2^-n)",
              f"  a^n(z) = {sp.sstr(sp.factor(s.symbol_expr().subs(sp.Symbol('h', positive=True), 2 ** (-sp.Symbol('n')))))}",
              limit_line(lim)] + verdict_lines(r)
-    _emit(args, {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}, "\n".join(lines))
+    data = {"scheme": s.slug, "level_dependent": True, "smoothness": r.to_json()}
+    _level_table(args, s.slug, r, lines, data)
+    _emit(args, data, "\n".join(lines))
+
+
+def _level_table(args, label: str, r, lines: list, data: dict) -> None:
+    """``holder --table FILE`` of a level-dependent scheme: its C^k verdicts (:func:`verdict_rows`)."""
+    if not getattr(args, "table", None):
+        return
+    from .level_text import verdict_rows
+    from .tables import write_table
+
+    write_table(args.table, ["", "verdict", "status", "theorem"], verdict_rows(r),
+                f"subdiv holder: {label} (level-dependent)")
+    lines.append(f"table written to {args.table}")
+    data["table"] = args.table
 
 
 def holder_growing_support(args, message: str) -> None:
@@ -376,8 +406,9 @@ def register(sub) -> None:
     """Add the sub-commands to the ``subdiv`` parser."""
     s = sub.add_parser("series", help="weighted series sum 2^(mn)||S_(a^n) - S_a||: verdict and enclosure")
     s.add_argument("--scheme", metavar="NAME", help="level-dependent scheme (schemes.level_dependent)")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
-    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
+    s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
+                   help="a closed parameter box instead of a value (repeatable)")
     s.add_argument("--m", default="0,1,2", help="weights, e.g. 0,1,2")
     s.add_argument("--difference", type=int, default=0, help="k: use the k-th divided difference scheme")
     s.add_argument("--N", type=int, default=40, help="levels summed explicitly")
@@ -390,26 +421,26 @@ def register(sub) -> None:
                                                   "interval (exact norm set for the limit)")
     _add_inline(s)
     s.add_argument("--arity", metavar="M", help="m-ary level-dependent scheme, level through M^n")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_series)
 
     s = sub.add_parser("bound", help="prove/refute f(n,p) <= g(n,p) for n >= n0 over a parameter box")
-    s.add_argument("--claim", metavar="ID", help='a seed 003 lemma item, e.g. "003:Lemma3.2(ii)"')
-    s.add_argument("--lhs", metavar="EXPR")
-    s.add_argument("--rhs", metavar="EXPR")
+    s.add_argument("--claim", metavar="ID", help='a lemma item of the bundled paper 003, e.g. "003:Lemma3.2(ii)"')
+    s.add_argument("--lhs", metavar="EXPR", help="left side f(n, parameters), e.g. 1/2**n")
+    s.add_argument("--rhs", metavar="EXPR", help="right side g(n, parameters)")
     s.add_argument("--n0", type=int, default=0, help="first level n (>= 0)")
-    s.add_argument("--strict", action="store_true")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--strict", action="store_true", help="prove f < g (default: f <= g)")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH", help="a closed box; repeatable (several parameters)")
     s.add_argument("--depth", type=int, default=10,
                    help="adaptive subdivision: bisect an undecided box up to DEPTH times per level (default 10)")
     s.add_argument("--pieces", type=int, default=8, help="sub-boxes of each parameter box for the tail n >= N (default 8)")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_bound)
 
     s = sub.add_parser("reproduce", help="exponential generation/reproduction; distance to curves")
-    s.add_argument("--scheme", metavar="NAME")
-    s.add_argument("--param", action="append", metavar="NAME=VALUE")
+    s.add_argument("--scheme", metavar="NAME", help="level-dependent scheme (schemes.level_dependent)")
+    s.add_argument("--param", action="append", metavar="NAME=VALUE", help="parameter value (repeatable)")
     s.add_argument("--box", action="append", metavar="NAME=LOW,HIGH",
                    help="with --lambdas: decide on the whole closed box (repeatable)")
     s.add_argument("--depth", type=int, default=2,
@@ -422,5 +453,5 @@ def register(sub) -> None:
     s.add_argument("--frequencies", action="store_true",
                    help="the frequencies generated and reproduced at every level (exact)")
     _add_inline(s)
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_reproduce)

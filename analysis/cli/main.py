@@ -71,7 +71,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "list": ("subdiv list", "subdiv list --mary --numeric"),
     "holder": ('subdiv holder --mask "-1/16,0,9/16,1,9/16,0,-1/16" --start -3 --C 2 --sobolev',
                'subdiv holder --symbol "(1+z)**2*(1+2*c*z+z**2)/(4*(1+c))/z**2" --where "c=cos(t/2**(n+1))" '
-               '--param t=1'),
+               '--param t=1',
+               "subdiv holder --scheme four-point --param w=1/16 --C 1 --table alpha.tex"),
     "range": ("subdiv range --scheme four-point --C 1 --within=-1/8,1/4",
               "subdiv range --scheme ternary-four-point --C 2 --within=-1,1"),
     "atlas": ("subdiv atlas --scheme seed004-design-control --param omega=0 --x mu=-1/5:1/5:9 --y nu=0:2:9 "
@@ -81,8 +82,10 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     "bound": ("subdiv bound --claim '003:Lemma3.1(iii)-upper' --box alpha=1/100,pi/3",),
     "reproduce": ("subdiv reproduce --scheme exp-cubic-trig --frequencies",),
     "nonuniform": ("subdiv nonuniform compare-definitions", "subdiv nonuniform claims --seed 001"),
-    "report": ("subdiv report all", "subdiv report examples/four-point.toml --output r --quiet"),
-    "check": ("subdiv check", "subdiv check examples/first-paper.toml"),
+    "report": ("subdiv report all", "subdiv report examples/four-point.toml --output r --quiet",
+               "subdiv report examples/four-point.toml --output r --table verdicts.tex"),
+    "check": ("subdiv check", "subdiv check examples/first-paper.toml",
+              "subdiv check examples/four-point.toml --table verdicts.csv"),
     "new-paper": ("subdiv new-paper mine.toml",),
     "derive": ("subdiv derive --support 7 --interpolatory --symmetric primal --reproduce 1",
                "subdiv derive --arity 3 --support 11 --interpolatory --symmetric primal --reproduce 2 "
@@ -163,6 +166,9 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
     want_json = "--json" in argv[:argv.index("--")] if "--" in argv else "--json" in argv
 
     def fail(message: str, kind: str, code: int) -> int:
+        progress = sys.modules.get("analysis.progress")    # a progress line still shown is erased first
+        if progress is not None:
+            progress.clear()
         message = " ".join(str(message).split())           # one line, whatever the source said
         if len(message) > 600:                               # a message never repeats a huge input
             message = message[:400] + " ... " + message[-150:]

@@ -224,18 +224,21 @@ def cmd_chamfer(args) -> None:
 def cmd_claims(args) -> None:
     import importlib
 
+    from .. import progress
+
     mod = importlib.import_module({"000": "papers.seed000", "001": "papers.seed001"}[args.seed])
     rows = []
-    for c in mod.CLAIMS:
-        if args.id and c["id"] != args.id:
-            continue
-        r = c["check"]()
-        if hasattr(r, "summary"):          # seed 001: a proof-check Verdict of its paper file
-            rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.summary,
-                         "result": {"label": r.label, "numbers": {n.name: n.to_json() for n in r.numbers}}})
-            continue
-        rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.value,
-                     "result": r.to_json()})
+    chosen = [c for c in mod.CLAIMS if not args.id or c["id"] == args.id]
+    with progress.on_terminal("nonuniform claims", enabled=not args.json):
+        for k, c in enumerate(chosen, start=1):
+            with progress.part(f"claim {k}/{len(chosen)} {c['id']}"):
+                r = c["check"]()
+            if hasattr(r, "summary"):          # seed 001: a proof-check Verdict of its paper file
+                rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.summary,
+                             "result": {"label": r.label, "numbers": {n.name: n.to_json() for n in r.numbers}}})
+                continue
+            rows.append({"id": c["id"], "statement": c["statement"], "status": r.status, "value": r.value,
+                         "result": r.to_json()})
     if args.id and not rows:
         raise AnalysisError(f"unknown claim {args.id!r}")
     _out(args, rows, "\n".join(f"{x['id']:<22} {x['status']:<12} {str(x['value'])[:90]}" for x in rows))
@@ -243,7 +246,7 @@ def cmd_claims(args) -> None:
 
 def register(subparsers) -> None:
     """Add ``subdiv nonuniform ...`` to the ``subdiv`` parser."""
-    p = subparsers.add_parser("nonuniform", help="non-uniform variable-parameter schemes (NVPS, seeds 000/001)")
+    p = subparsers.add_parser("nonuniform", help="non-uniform variable-parameter schemes (NVPS; the bundled papers 000, 001)")
     sub = p.add_subparsers(dest="nonuniform_command", parser_class=type(p))
     sub.required = True
 
@@ -262,7 +265,7 @@ def register(subparsers) -> None:
     s.add_argument("--rule", default="seed001", choices=("seed001", "seed000"))
     s.add_argument("--output", metavar="FILE")
 
-    s = add("compare-definitions", cmd_compare, "seed 000's S_d vs seed 001's (exact)")
+    s = add("compare-definitions", cmd_compare, "paper 000's S_d vs paper 001's (exact)")
     s.add_argument("--degree", default="3")
     s.add_argument("--levels", default="3")
     s.add_argument("--closed", action="store_true")
@@ -293,11 +296,25 @@ def register(subparsers) -> None:
     s.add_argument("--levels", default="8")
     s.add_argument("--figure", metavar="PNG", help="also write the blended-curve figure here")
 
-    s = add("chamfer", cmd_chamfer, "seed 001's chamfering example (Algorithm 2, Fig. 3)")
+    s = add("chamfer", cmd_chamfer, "paper 001's chamfering example (Algorithm 2, Fig. 3)")
     s.add_argument("--levels", default="8")
     s.add_argument("--degree", default="2")
     s.add_argument("--figure", metavar="PNG")
 
-    s = add("claims", cmd_claims, "evaluate the claims of seed 000 or 001")
+    s = add("claims", cmd_claims, "evaluate the claims of paper 000 or 001")
     s.add_argument("--seed", default="001", choices=("000", "001"))
     s.add_argument("--id", help="one claim id, e.g. 001:(17)")
+    for parser in sub.choices.values():                 # the options every sub-command shares
+        for action in parser._actions:
+            if action.help is None and action.dest in _HELP:
+                action.help = _HELP[action.dest] + (f" (default {action.default})" if action.default not in
+                                                    (None, False) else "")
+
+
+#: help of the options shared by the ``nonuniform`` sub-commands
+_HELP = {"degree": "degree d of the scheme", "points": "control points, one per ';'", "steps": "refinement steps",
+         "closed": "closed polygon (default: open)", "rule": "the rule of paper 001 or of paper 000",
+         "output": "write the points as CSV", "levels": "number of levels k", "u0": "the edge parameters at level 0, one per edge, e.g. 0.5,0.5",
+         "u0_range": "range of the initial parameter u0", "u_left": "parameter on the left of the junction",
+         "u_right": "parameter on the right of the junction", "kind": "the curve reproduced",
+         "figure": "also write the figure here", "seed": "the bundled paper: 000 or 001"}

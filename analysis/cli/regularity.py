@@ -48,7 +48,39 @@ def _numeric_entry(args):
     return entry if isinstance(entry, NumericSchemeEntry) else None
 
 
-def _part(name: str, compute, lines: list, data: dict) -> None:
+def _row(args, quantity: str, r, value=None, witness: str = "", digits: int = 10) -> None:
+    """One row of the ``holder --table`` table: the quantity, its value (``r``'s exact value or certified
+    enclosure, outward-rounded to the ``digits`` printed; or ``value``), ``r``'s status and how it was obtained."""
+    if value is None:
+        if r.value is not None and not isinstance(r.value, bool):
+            value = r.value
+        elif r.lower is not None and r.upper is None:
+            value = f">= {_fmt(r.lower, 'lower', digits)}"
+        elif r.lower is not None:
+            value = f"[{_fmt(r.lower, 'lower', digits)}, {_fmt(r.upper, 'upper', digits)}]"
+        else:
+            value = "?"
+    args.__dict__.setdefault("_table_rows", []).append([quantity, value, r.status, witness])
+
+
+def _write_holder_table(args, label: str, lines: list, data: dict) -> None:
+    """``holder --table FILE``: the rows of :func:`_row` (alpha, stability, C^k, Sobolev) as CSV or LaTeX."""
+    if not args.table:
+        return
+    from .tables import write_table
+
+    write_table(args.table, ["", "value", "status", "witness"], args.__dict__.get("_table_rows", []),
+                f"subdiv holder: {label}")
+    lines.append(f"table written to {args.table}")
+    data["table"] = args.table
+
+
+def _no_table(args, what: str) -> None:
+    if getattr(args, "table", None):
+        raise AnalysisError(f"--table is not available for {what} yet: use --json")
+
+
+def _part(name: str, compute, lines: list, data: dict, args=None) -> None:
     """Run one part of ``subdiv holder`` (alpha, C^k, Sobolev): each reports its own result, or its
     own inconclusive with the reason, so that one failing part never hides the others."""
     try:
@@ -56,6 +88,8 @@ def _part(name: str, compute, lines: list, data: dict) -> None:
     except AnalysisError as exc:
         lines.append(f"{name}: inconclusive — {exc}")
         data[name] = {"status": "inconclusive", "reason": str(exc)}
+        if args is not None:
+            args.__dict__.setdefault("_table_rows", []).append([name, "?", "inconclusive", str(exc)])
         return
     lines.extend(part_lines)
     data[name] = part_data
@@ -79,6 +113,7 @@ def _alpha_part(args, a, budget):
         if hint:
             lines.append(f"  {hint}")
         r = exc.result()
+        _row(args, "convergent", r, "no", exc.reason)
         data = {**r.to_json(), "convergent": False, "reason": exc.reason}
         if hint:
             data["hint"] = hint
@@ -92,6 +127,10 @@ def _alpha_part(args, a, budget):
         lines.append(f"Hölder exponent alpha in [{_fmt(h.lower, 'lower')}, {_fmt(h.upper, 'upper')}]   [{h.status}]")
     w = h.witness
     prod = w.get("product")
+    _row(args, "alpha", h, witness=(f"k = {w['k']}, spectrum-maximizing product T_{''.join(map(str, prod))}"
+                                    + (f"; alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None
+                                       and h.value is None else "")
+                                    if prod and w.get("k") is not None else h.provenance.get("method", "")))
     if prod and w.get("k") is not None:
         lines.append(f"  c(z) = 2^{w['k']} a(z)/(1+z)^{w['k'] + 1};  spectrum-maximizing product T_{''.join(map(str, prod))}"
                      + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
@@ -137,6 +176,7 @@ def _smoothness_part(args, a, budget):
     else:
         s = smoothness(a, j, budget=budget)
     verdict = {True: f"C^{j}: yes", False: f"C^{j}: no", None: f"C^{j}: undecided"}[s.value]
+    _row(args, f"C^{j}", s, {True: "yes", False: "no", None: "undecided"}[s.value], s.witness.get("reason") or "")
     return ([f"{verdict}   [{s.status}] — {s.witness.get('reason')}"],
             {"j": j, "value": s.value, "status": s.status, "reason": s.witness.get("reason"),
              **({"convergent": False} if s.witness.get("convergent") is False else {})})
@@ -192,6 +232,7 @@ def _sobolev_part(args, a, budget):
         head = f"L2-Sobolev exponent s_2 in [{_fmt(s2.lower, 'lower')}, {_fmt(s2.upper, 'upper')}]   [{s2.status}]"
     else:
         head = f"L2-Sobolev exponent s_2: [{s2.status}]"
+    _row(args, "$s_2$", s2, witness=s2.witness.get("reason") or str(s2.witness.get("method") or ""))
     lines = [head]
     if s2.witness.get("reason"):
         lines.append(f"  {s2.witness['reason']}")
@@ -234,6 +275,8 @@ def _stability_part(args, a, budget):
 
     st = stable_shifts(a)
     w = st.witness
+    _row(args, "shifts of phi", st, {True: "stable", False: "unstable", None: "undecided"}[st.value],
+         w.get("reason") or "")
     if st.value is True:
         line = (f"basic limit function: shifts stable [{st.status}] ({w['reason']}): "
                 "alpha (when the scheme converges) is also the Hölder exponent of phi")
@@ -276,7 +319,7 @@ def _fmt_set(S) -> str:
     return " U ".join(out)
 
 
-def _sobolev_lines(a, m: int, lines: list, data: dict) -> None:
+def _sobolev_lines(a, m: int, lines: list, data: dict, args=None) -> None:
     """``holder --sobolev`` for a scheme of arity ``m > 2``: ``s_2 = -(1/2) log_m lambda``."""
     import sympy as sp
 
@@ -293,6 +336,9 @@ def _sobolev_lines(a, m: int, lines: list, data: dict) -> None:
         head = f"L2-Sobolev exponent s_2: [{s2.status}]"
     lines.append(head)
     w = s2.witness
+    if args is not None:
+        _row(args, "$s_2$", s2, witness=f"s_2 = -(1/2) log_{m} lambda" if "lambda_lower" in w else w.get("reason") or "",
+             digits=12)
     if "lambda_lower" in w:
         lines.append(f"  s_2 = -(1/2) log_{m} lambda, lambda = largest root of {sp.sstr(w['minimal_polynomial'])} "
                      f"(exact {m}-ary transfer-operator sequence, r = {w['r']})")
@@ -335,7 +381,13 @@ def cmd_holder(args) -> None:
         j = _int_arg(args.C, "--C")
         if not 0 <= j <= 30:
             raise AnalysisError(f"--C must be between 0 and 30, not {j}")
+    if args.table:
+        from .tables import check_table
+
+        check_table(args.table)
+    args._table_rows = []
     if getattr(args, "box", None):                   # C^k on a parameter box, level-dependent (issue 13)
+        _no_table(args, "a level-dependent scheme on a --box")
         return holder_box(args)
     refuse_box_options(args)
     if (arity := scheme_arity(args)) != 2:          # arity m > 2: the m-ary lines (residue sums, q_m, log_m)
@@ -365,23 +417,28 @@ def cmd_holder(args) -> None:
             r = exc.result()
             lines.append(f"{r.witness['reason']}   [{r.status}]")
             data["alpha"] = r.to_json()
+            _row(args, "convergent", r, "no", r.witness["reason"])
+            _write_holder_table(args, label, lines, data)
             _emit(args, data, "\n".join(lines))
             return
         if h.value is not None:
-            lines.append(f"Hoelder exponent alpha = {sp.sstr(h.value)}   [{h.status}]")
+            lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
         else:
-            lines.append(f"Hoelder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
+            lines.append(f"Hölder exponent alpha in [{fmt_bound(h.lower, 'lower', 12)}, {fmt_bound(h.upper, 'upper', 12)}]"
                          f"   [{h.status}]")
         lines.append(f"  alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1}), c = {h.witness['c'].pretty()}")
+        _row(args, "alpha", h, witness=f"alpha = {h.witness['k']} - log_{m} JSR(T_0..T_{m - 1})", digits=12)
         data["alpha"] = {"value": h.value, "lower": h.lower, "upper": h.upper, "status": h.status, "k": h.witness["k"]}
         if args.C is not None:
             j = _int_arg(args.C, "--C")
             s = smoothness(a, j, budget=budget, arity=m)
             verdict = {True: f"C^{j}", False: f"not C^{j}", None: "undecided"}[s.value]
             lines.append(f"{verdict}: {s.witness['reason']}   [{s.status}]")
+            _row(args, f"C^{j}", s, {True: "yes", False: "no", None: "undecided"}[s.value], s.witness["reason"])
             data["smoothness"] = {"j": j, "value": s.value, "status": s.status, "reason": s.witness["reason"]}
         if getattr(args, "sobolev", False):
-            _sobolev_lines(a, m, lines, data)
+            _sobolev_lines(a, m, lines, data, args)
+        _write_holder_table(args, label, lines, data)
         _emit(args, data, "\n".join(lines))
         return
     budget = work_arg(args.budget, "--budget")
@@ -392,6 +449,7 @@ def cmd_holder(args) -> None:
     try:
         level = level_scheme_from_args(args, _parse_params(args.param))
     except AnalysisError as exc:
+        _no_table(args, "a level-dependent scheme whose level enters through n (or whose support grows)")
         if str(exc).startswith("the support of a^n grows"):
             return holder_growing_support(args, str(exc))
         from .levels_rational import fallback, holder_rational      # the level enters through n itself
@@ -417,12 +475,13 @@ def cmd_holder(args) -> None:
         require_values(a, label, "holder")
         lines = [f"scheme: {label}   (domain {a.domain})"]
     data: dict = {"scheme": label}
-    _part("alpha", lambda: _alpha_part(args, a, budget), lines, data)
-    _part("stability", lambda: _stability_part(args, a, budget), lines, data)
+    _part("alpha", lambda: _alpha_part(args, a, budget), lines, data, args)
+    _part("stability", lambda: _stability_part(args, a, budget), lines, data, args)
     if args.C is not None:
-        _part("smoothness", lambda: _smoothness_part(args, a, budget), lines, data)
+        _part("smoothness", lambda: _smoothness_part(args, a, budget), lines, data, args)
     if args.sobolev:
-        _part("sobolev", lambda: _sobolev_part(args, a, budget), lines, data)
+        _part("sobolev", lambda: _sobolev_part(args, a, budget), lines, data, args)
+    _write_holder_table(args, label, lines, data)
     _emit(args, data, "\n".join(lines))
 
 
@@ -537,7 +596,7 @@ def cmd_range(args) -> None:
     budget = work_arg(args.budget, "--budget")
     from .. import progress
 
-    with progress.on_terminal("range"):
+    with progress.on_terminal("range", enabled=not args.json):
         r = ck_parameter_set(a, j, args.param_name, within=within, grid=grid, tol=tol,
                              budget=budget, interior_L_max=12, strip_budget=strip_budget)
     p = r.witness["parameter"]
@@ -589,7 +648,8 @@ def cmd_range(args) -> None:
         from .common import parse_coefficient
         from .maximize import maximize_part
 
-        maximize_part(a, {p: within}, 2, parse_coefficient(args.gap), 60_000, lines, data)
+        with progress.on_terminal("range", enabled=not args.json):
+            maximize_part(a, {p: within}, 2, parse_coefficient(args.gap), 60_000, lines, data)
     if args.figure:
         curve = alpha_curve(a, p, within=within, samples=max(grid, 8), budget=budget)
         from ..report.plots import plot_alpha_curve
@@ -608,6 +668,9 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--C", metavar="K", help="also decide whether the scheme is C^K")
     s.add_argument("--sobolev", action="store_true", help="also the L2-Sobolev exponent (transition operator)")
+    s.add_argument("--table", metavar="FILE", help="also write the results as FILE.csv or FILE.tex (a LaTeX booktabs tabular): "
+                                                  "alpha, stability, C^K, s_2 (of a level-dependent scheme: its C^k "
+                                                  "verdicts), each with its value, status and witness")
     s.add_argument("--budget", default="20000", metavar="UNITS",
                    help=f"work budget of the joint spectral radius, in work units (default 20000; {WORK_HELP})")
     s.add_argument("--approx", action="store_true",

@@ -65,8 +65,11 @@ def _select(paper, patterns):
 
 
 def _progress(quiet: bool):
+    from .. import progress
+
     def show(k, n, ev):
         if not quiet:
+            progress.clear()
             print(f"  [{k:>2}/{n}] {ev.claim.id:<34} {ev.verdict.label:<15} {ev.seconds:6.2f} s",
                   file=sys.stderr, flush=True)
     return show
@@ -81,6 +84,46 @@ def _table(results) -> str:
         s = summ if len(summ) <= 110 else summ[:107] + "..."
         out.append(f"{cid:<{w0}}  {lab:<{w1}}  {s}")
     return "\n".join(out)
+
+
+def _evaluate(paper, args, only):
+    """Evaluate the claims (``only``: ids, or None for all) with the per-claim lines on stderr (unless
+    ``--quiet``) and, on a terminal, the claim and stage running now (not with ``--quiet`` or ``--json``)."""
+    from .. import progress
+
+    with progress.on_terminal(args.func.__name__.removeprefix("cmd_"), enabled=not (args.quiet or args.json)):
+        return evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+
+
+#: the columns of the verdict table written by ``--table``
+TABLE_COLUMNS = ("claim", "paper's statement", "verdict", "computed", "witness")
+#: its LaTeX column specification (the text columns wrap)
+TABLE_SPEC = r"lp{0.3\linewidth}lp{0.3\linewidth}p{0.15\linewidth}"
+
+
+def verdict_rows(results) -> list[list]:
+    """One row per evaluated claim: id, the paper's statement, the verdict, what was computed (the
+    verdict's summary, and the corrected statement of a refuted claim) and the witness (each piece of
+    evidence that is a computed result, with its status; ``none`` when no result backs the verdict)."""
+    from .tables import Name, Quote
+
+    rows = []
+    for ev in results:
+        v = ev.verdict
+        computed = v.summary + (f"; corrected: {v.corrected}" if v.corrected else "")
+        witness = "; ".join(f"{e.title} [{e.result.status}]" for e in v.evidence if e.result is not None)
+        rows.append([Name(ev.claim.id), Quote(ev.claim.statement), v.label, computed, witness or "none"])
+    return rows
+
+
+def _write_table(path: str, all_results: dict, titles: dict) -> None:
+    """``--table``: the verdicts of every evaluated claim as CSV or a LaTeX tabular."""
+    from .tables import write_table
+
+    rows = [row for pid in all_results for row in verdict_rows(all_results[pid])]
+    caption = ("subdiv: verdicts of " + "; ".join(f"paper {pid} ({titles.get(pid, '')})" for pid in all_results)
+               + "\nneeds \\usepackage{booktabs,amsmath,amssymb}")
+    write_table(path, TABLE_COLUMNS, rows, caption, spec=TABLE_SPEC)
 
 
 def evaluate_paper(paper, **kwargs):
@@ -207,6 +250,16 @@ def _targets(outdir: Path, pids) -> None:
         inside(outdir, *parts)
 
 
+def _table_target(args, outdir) -> str | None:
+    """The file of ``--table NAME`` (a name inside the output folder, which exists), checked before any
+    computation; None without ``--table``."""
+    if not args.table:
+        return None
+    from .tables import check_table
+
+    return check_table(args.table, folder=outdir)
+
+
 def _prune(outdir: Path, started: float) -> None:
     from ..report.files import remove_orphans
 
@@ -229,13 +282,14 @@ def _report_file(args, outdir: Path, write: bool) -> None:
     only = _select(paper, args.claim)
     if only is not None and not only:
         raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
-    if write:
+    if write or args.table:
         outdir = output_folder(outdir)
-        _targets(outdir, [paper.id])
+        _targets(outdir, [paper.id] if write else [])
+    table = _table_target(args, outdir)
     t0 = time.perf_counter()
     print(f"paper {paper.id} ({path}): {paper.title} ({len(only) if only is not None else len(paper.claims)} claims)",
           file=sys.stderr, flush=True)
-    results = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+    results = _evaluate(paper, args, only)
     data = verdicts_json({paper.id: results}, titles={paper.id: paper.title})
     if args.json:
         _print(json.dumps(data, indent=1, ensure_ascii=False))
@@ -245,6 +299,9 @@ def _report_file(args, outdir: Path, write: bool) -> None:
         if only is not None:
             _print_details(results)
     _python_lines(results, path, args.json)
+    if table:
+        _write_table(table, {paper.id: results}, {paper.id: paper.title})
+        print(f"wrote {table}", file=sys.stderr)
     if write:
         from ..report.index import render_index, siblings
         from ..report.render import render_paper
@@ -277,9 +334,10 @@ def cmd_report(args) -> None:
         return _report_file(args, outdir, write)
     started = time.time()
     selected = _papers_arg(args.paper)
-    if write:
+    if write or args.table:
         outdir = output_folder(outdir)
-        _targets(outdir, [p.id for p in selected])
+        _targets(outdir, [p.id for p in selected] if write else [])
+    table = _table_target(args, outdir)
     if args.update_golden:
         for paper in selected:
             g = golden_path(paper)
@@ -294,7 +352,7 @@ def cmd_report(args) -> None:
             raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
         print(f"paper {paper.id}: {paper.title} ({len(only) if only is not None else len(paper.claims)} claims)",
               file=sys.stderr, flush=True)
-        results = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+        results = _evaluate(paper, args, only)
         all_results[paper.id] = results
         if args.json:
             continue
@@ -302,6 +360,9 @@ def cmd_report(args) -> None:
         _print(_table(results))
         if only is not None:
             _print_details(results)
+    if table:
+        _write_table(table, all_results, {pid: get_paper(pid).title for pid in all_results})
+        print(f"wrote {table}", file=sys.stderr)
     if write:
         from ..report.index import render_index, siblings
         from ..report.render import render_paper
@@ -360,6 +421,10 @@ def cmd_check(args) -> None:
     from ..claims.paperfile import golden_file
 
     args.paper = [bundled_id(p) for p in (args.paper or [])] or args.paper
+    if args.table:                              # before any computation
+        from .tables import check_table
+
+        check_table(args.table)
 
     files = [p for p in (args.paper or []) if is_paper_file(p)]
     if files and len(files) != len(args.paper):
@@ -398,7 +463,7 @@ def cmd_check(args) -> None:
         if only is not None and not only:
             raise AnalysisError(f"no claim of paper {paper.id} matches {args.claim}")
         print(f"checking paper {paper.id} ...", file=sys.stderr, flush=True)
-        fresh_results[paper.id] = evaluate_paper(paper, progress=_progress(args.quiet), only=only)
+        fresh_results[paper.id] = _evaluate(paper, args, only)
     fresh = verdicts_json(fresh_results, titles={k: p.title for k, p in loaded.items()} if loaded else None)
     compared = [pid for pid in fresh_results if pid not in new]
     if args.claim:   # compare only the selected claims
@@ -409,6 +474,9 @@ def cmd_check(args) -> None:
     n = sum(len(v) for v in fresh_results.values())
     for pid, evs in fresh_results.items():
         _python_lines(evs, sources.get(pid), args.json)
+    if args.table:
+        _write_table(args.table, fresh_results, {pid: (loaded[pid] if loaded else get_paper(pid)).title
+                                                  for pid in fresh_results})
     missing = [str(golden_file(sources[pid])) for pid in new]
     note = (f"no golden file {', '.join(missing)} yet: nothing to compare with; after reviewing the verdicts, create it "
             f"with `subdiv report {' '.join(sources[pid] for pid in new)} --update-golden` (then `subdiv check` "
@@ -416,10 +484,13 @@ def cmd_check(args) -> None:
     if args.json:
         _print(json.dumps({"golden": where or None, "claims": n, "agree": (not diffs) if compared else None,
                            "differences": [str(d) for d in diffs], "verdicts": fresh,
-                           **({"missing_golden": missing, "note": note} if new else {})}, indent=1, ensure_ascii=False))
+                           **({"missing_golden": missing, "note": note} if new else {}),
+                           **({"table": args.table} if args.table else {})}, indent=1, ensure_ascii=False))
         if diffs:
             raise SystemExit(1)
         return
+    if args.table:
+        _print(f"table written to {args.table}")
     for pid in new:
         _print(f"\n== {pid}: {loaded[pid].title}")
         _print(_table(fresh_results[pid]))
@@ -453,6 +524,8 @@ def register(subparsers) -> None:
                         "beside a paper file) for review")
     s.add_argument("--no-figures", action="store_true", help="skip figures and formula images")
     s.add_argument("--allow-python", action="store_true", help=ALLOW_PYTHON_HELP)
+    s.add_argument("--table", metavar="NAME", help="also write the verdict table (claim, paper's statement, verdict, "
+                   "computed, witness) as NAME.csv or NAME.tex (a LaTeX booktabs tabular) in the output folder")
     s.add_argument("--quiet", action="store_true", help="no per-claim progress")
     s.add_argument("--json", action="store_true", help="print the verdicts as JSON")
     s.set_defaults(func=cmd_report)
@@ -463,6 +536,8 @@ def register(subparsers) -> None:
                    help="golden file to compare with (default: each paper's papers/<paper>/verdicts.json)")
     c.add_argument("--claim", action="append", metavar="ID", help="only these claims (shell patterns)")
     c.add_argument("--allow-python", action="store_true", help=ALLOW_PYTHON_HELP)
-    c.add_argument("--quiet", action="store_true")
+    c.add_argument("--table", metavar="FILE", help="also write the verdict table (claim, paper's statement, verdict, "
+                   "computed, witness) as FILE.csv or FILE.tex (a LaTeX booktabs tabular)")
+    c.add_argument("--quiet", action="store_true", help="no per-claim progress")
     c.add_argument("--json", action="store_true", help="print the comparison (and the fresh verdicts) as JSON")
     c.set_defaults(func=cmd_check)

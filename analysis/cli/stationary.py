@@ -45,8 +45,9 @@ def cmd_symbol(args) -> None:
                  ("sum rules hold: a(1) = %d, a(eps) = 0 for eps^%d = 1, eps != 1" % (m, m)) if sr.value else
                  "sum rules FAIL: " + "; ".join(sr.witness["failures"])
                  + (f" (they hold for {sr.witness['solutions']})" if sr.witness.get("solutions") else ""),
-                 f"symmetric: {'yes' if sym.value else 'no'} (mask centre {sym.witness['centre']}, "
-                 f"limit function centre {sym.witness['limit_centre']})"]
+                 (f"symmetric: yes (mask centre {sym.witness['centre']}, limit function centre "
+                  f"{sym.witness['limit_centre']})" if sym.value else
+                  f"symmetric: no (about the centre {sym.witness['centre']} of the support)")]
         _emit(args, {"scheme": label, "arity": m, "start": a.start, "end": a.end, "mask": list(a.mask),
                      "sum_rules": sr.to_json(), "symmetry": sym.to_json()}, "\n".join(lines))
         return
@@ -73,7 +74,8 @@ def cmd_symbol(args) -> None:
              f"a(1) = {sp.sstr(sr.witness['a(1)'])}, a(-1) = {sp.sstr(sr.witness['a(-1)'])}"
              + ("   (sum rules hold)" if sr.value else "   (sum rules FAIL" +
                 (f"; they hold for {sr.witness.get('solutions')})" if sr.witness.get("solutions") else ")")),
-             f"symmetric: {'yes' if sym.value else 'no'} (centre {sym.witness['centre']}, {sym.witness['kind']})",
+             (f"symmetric: yes (centre {sym.witness['centre']}, {sym.witness['kind']})" if sym.value else
+              f"symmetric: no (about the centre {sym.witness['centre']} of the support)"),
              f"LaTeX:    {a.latex()}"]
     _emit(args, data, "\n".join(lines))
 
@@ -383,7 +385,7 @@ def cmd_matrices(args) -> None:
         T0, T1 = transition_matrices(c)
         data["transition"] = {"k": k - 1, "c": c, "T0": T0.tolist(), "T1": T1.tolist()}
         lines.append(f"transition matrices of c = 2^{k - 1} a/(1+z)^{k} = {c.pretty()} "
-                     f"(JSR gives the Hoelder exponent {k - 1} - log2 JSR):")
+                     f"(JSR gives the Hölder exponent {k - 1} - log2 JSR):")
         lines.append("  T0 = " + sp.sstr(T0.tolist()))
         lines.append("  T1 = " + sp.sstr(T1.tolist()))
     _emit(args, data, "\n".join(lines))
@@ -438,7 +440,7 @@ def register(sub) -> None:
     _add_scheme_args(s)
     s.add_argument("--points", metavar="X,Y;X,Y;...", help="control points, one per ';'")
     s.add_argument("--points-file", metavar="FILE", help="control points, one per line (whitespace or .csv)")
-    s.add_argument("--steps", default="1")
+    s.add_argument("--steps", default="1", help="refinement steps (default 1)")
     s.add_argument("--open", action="store_true", help="open polygon (default: closed)")
     s.add_argument("--end-rule", default="interior", choices=("interior", "extrapolate"),
                    help="open polygons: keep interior points only, or reflect ghost points 2P0 - Pm")
@@ -449,11 +451,11 @@ def register(sub) -> None:
     s = sub.add_parser("matrices", help="local subdivision matrix, its exact eigenvalues, support; transition matrices")
     _add_scheme_args(s)
     s.add_argument("--transition", action="store_true",
-                   help="also the two transition matrices of c = 2^k a/(1+z)^(k+1) (k+1 = all factors (1+z))")
+                   help="also the transition matrices of c = 2^k a/(1+z)^(k+1) (k+1 = all factors (1+z))")
     s.set_defaults(func=cmd_matrices)
 
     s = sub.add_parser("list", help="the catalogue of named schemes")
-    s.add_argument("--json", action="store_true")
+    s.add_argument("--json", action="store_true", help="machine-readable output")
     s.add_argument("--numeric", action="store_true", help="also schemes known only by certified enclosures (Daubechies)")
     s.add_argument("--mary", action="store_true", help="also the m-ary schemes (ternary, quaternary)")
     s.set_defaults(func=cmd_list)

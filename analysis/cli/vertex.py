@@ -135,15 +135,19 @@ def cmd_vertex(args) -> None:
         check_figure(args.figure, "--figure")
     base = _rules(args, None)
     closed = closed_form_lambda(base)
+    from .. import progress
+
     entries = []
-    for n in valences:
-        rules = _rules(args, n)
-        rules.check_valence(n)
-        t0 = time.perf_counter()
-        entries.append(valence_entry(rules, n, closed))
-        entries[-1]["timing"] = {"seconds": round(time.perf_counter() - t0, 3)}
-        if not args.json:
-            _print(_line(entries[-1]))
+    with progress.on_terminal("vertex", enabled=not args.json):
+        for k, n in enumerate(valences, start=1):
+            rules = _rules(args, n)
+            rules.check_valence(n)
+            t0 = time.perf_counter()
+            with progress.part(f"valence {n} ({k}/{len(valences)})"):
+                entries.append(valence_entry(rules, n, closed))
+            entries[-1]["timing"] = {"seconds": round(time.perf_counter() - t0, 3)}
+            if not args.json:
+                _print(_line(entries[-1]))
     name = base.name if base.name != "user" else "user rules"
     doc = {"scheme": name, "rules": base.source, "ring": base.ring, "matrix_size": base.size,
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,

@@ -539,7 +539,7 @@ def _q(x: Fraction | None) -> sp.Rational | None:
 
 def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUDGET,
                method: str = "auto", rel_gap: float = 1e-6, floats_exact: bool = False,
-               max_vertices: int = 1500) -> Result:
+               max_vertices: int = 1500, on_work=None) -> Result:
     """Rigorous bounds ``lower <= JSR(A_0, ..., A_{k-1}) <= upper`` (see the module docstring).
 
     Parameters
@@ -581,6 +581,9 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         *certified* is then possible for float input; provenance says so).
     max_vertices
         Vertex budget of the invariant polytope.
+    on_work
+        Called with the units of every charge to the budget (``subdiv jsr`` shows them as progress on a
+        terminal); it observes, it decides nothing.
 
     Returns
     -------
@@ -621,7 +624,7 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
     if isinstance(budget, bool) or not isinstance(budget, (int, float)) or not 0 < budget < float("inf"):
         raise AnalysisError(f"budget must be a positive number of work units, not {budget!r}")
     t0 = time.perf_counter()            # reported under provenance["timing"], decides nothing
-    work = Work(max(int(budget), 1))
+    work = Work(max(int(budget), 1), listener=on_work)
     F = parse_family(matrices)
     # exact duplicates
     members: list[int] = []

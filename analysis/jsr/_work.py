@@ -34,22 +34,28 @@ class Work:
     share counts against its parent, so the parent's ``left`` shrinks as the phase works.
     """
 
-    __slots__ = ("total", "spent", "_parent")
+    __slots__ = ("total", "spent", "_parent", "_listener")
 
-    def __init__(self, total: float, parent: "Work | None" = None):
+    def __init__(self, total: float, parent: "Work | None" = None, listener=None):
         if not (isinstance(total, (int, float)) and math.isfinite(total) and total >= 0):
             raise ValueError(f"a work budget must be a finite number >= 0, not {total!r}")
         self.total = int(total)
         self.spent = 0
         self._parent = parent
+        self._listener = listener          # called with the units charged (progress display; decides nothing)
 
     def charge(self, units: int = 1) -> None:
-        """Spend ``units`` (a non-negative integer) here and in every parent."""
+        """Spend ``units`` (a non-negative integer) here and in every parent (and tell the listener of
+        the outermost budget, if it has one)."""
         units = int(units)
-        w: Work | None = self
-        while w is not None:
+        w: Work = self
+        while True:
             w.spent += units
+            if w._parent is None:
+                break
             w = w._parent
+        if w._listener is not None:
+            w._listener(units)
 
     @property
     def left(self) -> int:

@@ -49,6 +49,7 @@ import sympy as sp
 
 from .level_dependent import (H, LevelDependentScheme, _ball, _to_ball, ball_to_interval, entire_form,
                      taylor_models, to_h, workprec)
+from .. import progress
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .divided import _exact_zero  # noqa: F401 - re-exported: the exact zero test lives in .divided
 from ..algebra.reader import as_expr
@@ -118,6 +119,7 @@ def _check_D(D: sp.Expr, box: dict, n0: int, strict: bool, N: int, max_depth: in
 def _levels(D, box, n_from, n_to, strict, max_depth) -> dict:
     worst = None
     unproven = []
+    progress.stage(f"levels {n_from}..{n_to - 1}: level", n_to - n_from)
     for n in range(n_from, n_to):
         prec = 64 + 2 * n + 32
         stack = [(box, 0)]
@@ -139,6 +141,7 @@ def _levels(D, box, n_from, n_to, strict, max_depth) -> dict:
             else:
                 unproven.append({"n": n, "box": b})
                 break
+        progress.step()
     return {"verdict": "levels", "worst": worst, "unproven": unproven}
 
 
@@ -160,8 +163,10 @@ def _tail(D: sp.Expr, box: dict, N: int, strict: bool, pieces: int) -> dict:
 
         subs = _split(box, pieces)
     stack = [(b, 0) for b in subs]
+    progress.stage(f"tail n >= {N}: boxes")
     while stack:
         b, depth = stack.pop()
+        progress.step()
         with workprec(128):
             hN = flint.arb(2) ** (-N)
             env = {k: _to_ball(v, False) for k, v in b.items()}

@@ -67,7 +67,6 @@ from __future__ import annotations
 
 import functools
 import os
-import sys
 import time
 from typing import Any, Iterable, Mapping, Sequence
 
@@ -303,35 +302,33 @@ class _Runner:
         if self._client is not None:
             self._client.close()
 
-    def _bar(self, total: int, desc: str):
-        from tqdm import tqdm
-
-        enabled = self.progress and total > 0 and hasattr(sys.stderr, "isatty") and sys.stderr.isatty()
-        return tqdm(total=total, desc=desc, file=sys.stderr, disable=not enabled, unit="pt", leave=False)
-
     def run(self, tasks: list[tuple], desc: str) -> list[dict]:
+        from .. import progress as announce
+
+        step = announce.step if self.progress else (lambda n=1: None)
+        if self.progress:
+            announce.stage(f"{desc}: points", len(tasks))
         results: list[dict | None] = [None] * len(tasks)
-        with self._bar(len(tasks), desc) as bar:
-            if self.kind == "serial" or not tasks:
-                for i, t in enumerate(tasks):
-                    results[i] = _evaluate_task(t)
-                    bar.update(1)
-            elif self.kind in ("local", "object"):
-                from concurrent.futures import as_completed
+        if self.kind == "serial" or not tasks:
+            for i, t in enumerate(tasks):
+                results[i] = _evaluate_task(t)
+                step()
+        elif self.kind in ("local", "object"):
+            from concurrent.futures import as_completed
 
-                pool = self._pool if self.kind == "local" else self.executor
-                futures = {pool.submit(_evaluate_task, t): i for i, t in enumerate(tasks)}
-                for fut in as_completed(futures):
-                    results[futures[fut]] = fut.result()
-                    bar.update(1)
-            else:
-                from distributed import as_completed
+            pool = self._pool if self.kind == "local" else self.executor
+            futures = {pool.submit(_evaluate_task, t): i for i, t in enumerate(tasks)}
+            for fut in as_completed(futures):
+                results[futures[fut]] = fut.result()
+                step()
+        else:
+            from distributed import as_completed
 
-                futures = self._client.map(_evaluate_task, tasks, pure=False)
-                index = {f.key: i for i, f in enumerate(futures)}
-                for fut in as_completed(futures, loop=self._client.loop):
-                    results[index[fut.key]] = fut.result()
-                    bar.update(1)
+            futures = self._client.map(_evaluate_task, tasks, pure=False)
+            index = {f.key: i for i, f in enumerate(futures)}
+            for fut in as_completed(futures, loop=self._client.loop):
+                results[index[fut.key]] = fut.result()
+                step()
         return results  # type: ignore[return-value]
 
 
@@ -397,7 +394,8 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
         does not depend on the machine, its load or the executor); a point that runs out is
         *inconclusive* but keeps a rigorous (wider) enclosure.
     progress
-        Show a tqdm bar on stderr (only when stderr is a terminal).
+        Announce the points done to :mod:`analysis.progress` (``subdiv atlas`` shows them on a terminal);
+        False: silent even when someone listens.
     arity
         ``m`` of an m-ary family (factors ``1+...+z^{m-1}``, ``alpha = k - log_m JSR``); default 2.
 

@@ -62,6 +62,7 @@ import sympy as sp
 
 from ..algebra.factorization import factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
+from .. import progress
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.reader import as_expr
@@ -345,6 +346,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
 
     def float_alpha(x):
         work.charge(FLOAT_ALPHA_UNITS)
+        progress.step()
         return _float_alpha(F, x, max_length)
 
     def certified_alpha(sym, units):
@@ -353,6 +355,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
         return r
 
     # 1. float search
+    progress.stage("float search", grid + 1 + 62)
     xs = np.linspace(float(lo), float(hi), grid + 1)
     vals = [float_alpha(float(x)) for x in xs]
     words = {w for _v, w in vals}
@@ -378,6 +381,7 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
         tstar_f = float(xs[i])
     tstar = _rational_near(tstar_f, lo, hi)
     # 2. certified alpha at t*
+    progress.stage(f"certified alpha at {p} = {tstar}")
     h = certified_alpha(a.subs({p: tstar}), min(20_000, budget // 2))
     # exceptional parameters (more factors (1+z)): exact Hölder exponent there; the maximum is often
     # attained at one of them (a kink of alpha), so they are candidates for t* as well
@@ -399,8 +403,11 @@ def maximize_holder(a: LaurentSymbol, param=None, *, within=(-1, 1), gap=sp.Rati
     # 3. branch and bound over the box, best first (the interval with the largest bound is refined)
     import heapq
 
+    progress.stage("upper bound on the box: sub-intervals")
+
     def bound(I0, I1):
         work.charge(BOUND_UNITS_PER_WORD * len(words))
+        progress.step()
         b = _ball_bound(F, I0, I1, words)
         return sp.Rational(b[0].numerator, b[0].denominator) if b else None
 

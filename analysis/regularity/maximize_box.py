@@ -56,6 +56,7 @@ import sympy as sp
 
 from ..algebra.factorization import factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
+from .. import progress
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..stationary.transition import transition_matrices
@@ -222,8 +223,10 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
     # 1. float search
     axes = [np.linspace(float(lo), float(hi), G + 1) for lo, hi in B]
     best, words = (-math.inf, None), set()
+    progress.stage("float search: grid points", (G + 1) ** d)
     for t in itertools.product(*axes):
         work.charge(FLOAT_ALPHA_UNITS)
+        progress.step()
         v, w = _float_alpha(F, t, L)
         words.add(w)
         if v > best[0]:
@@ -232,9 +235,12 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
 
     lo_f, hi_f = np.array([float(x) for x, _ in B]), np.array([float(y) for _, y in B])
 
+    progress.stage("float search: Nelder-Mead", 150 * d)
+
     def neg(t):
         t = np.clip(t, lo_f, hi_f)
         work.charge(FLOAT_ALPHA_UNITS)
+        progress.step()
         v, w = _float_alpha(F, t, L)
         words.add(w)
         return -v
@@ -262,14 +268,18 @@ def maximize_holder_box(a: LaurentSymbol, box: dict, *, arity: int = 2, gap=sp.R
         # an exceptional member beats every generic one the float search saw: no need to certify t*
         alpha_lo, tstar, h = sub_best[0], [sub_best[1][p.name] for p in params], None
     else:
+        progress.stage("certified alpha at t*")
         h = _certified_alpha(a.subs(dict(zip(params, tstar))), arity, min(20_000, budget // 4), work)
         alpha_lo = sp.Rational(h.lower) if h.lower is not None else None
         if sub_best is not None and (alpha_lo is None or sub_best[0] > alpha_lo):
             alpha_lo, tstar, h = sub_best[0], [sub_best[1][p.name] for p in params], None
     target = (alpha_lo if alpha_lo is not None else sp.Integer(F.k)) + gap
     # 3. branch and bound on the generic formula
+    progress.stage("upper bound on the box: sub-boxes")
+
     def bound(bx):
         work.charge(BOUND_UNITS_PER_WORD * len(words))
+        progress.step()
         b = _ball_bound(F, bx, words)
         return sp.Rational(b.numerator, b.denominator) if b is not None else None
 

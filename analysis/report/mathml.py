@@ -40,7 +40,7 @@ import html as _html
 import re
 from typing import Any
 
-__all__ = ["latex_mathml", "sympy_mathml", "quote_html", "pretty_text", "sanitise", "has_latex"]
+__all__ = ["latex_mathml", "sympy_mathml", "quote_html", "quote_parts", "pretty_text", "sanitise", "has_latex"]
 
 #: MathML elements a report may contain
 ELEMENTS = frozenset("""math mrow mi mn mo ms mtext mspace msub msup msubsup mfrac msqrt mroot mover munder
@@ -154,45 +154,59 @@ def _is_text_word(tok: str) -> bool:
     return bool(_WORD.match(tok)) and len(core) >= 2 and core not in _MATHY_WORDS and "\\" not in tok
 
 
-def quote_html(statement: str) -> str | None:
-    """A quoted statement with its LaTeX typeset: words stay text (escaped), the runs of other tokens
-    between them become MathML. None when a run does not convert (then show the source)."""
-    if not has_latex(statement) or len(statement) > 4 * MAX_LATEX:
-        return None
-    tokens = statement.split()
-    parts, run, words = [], [], []
+def quote_parts(statement: str) -> list[tuple[bool, str]]:
+    """A quoted statement cut into words and formulas: ``(False, words)`` and ``(True, latex)`` in order
+    (bare Greek names in a formula get their backslash). The one reading of a quote, for the HTML
+    report (:func:`quote_html`) and the LaTeX verdict table (:mod:`analysis.cli.tables`).
 
-    def flush_math() -> bool:
+    >>> quote_parts(r"and C^2 for 0 < omega < \\frac{1}{80}.")
+    [(False, 'and'), (True, 'C^2'), (False, 'for'), (True, '0 < \\\\omega < \\\\frac{1}{80}.')]
+    """
+    parts: list[tuple[bool, str]] = []
+    run: list[str] = []
+    words: list[str] = []
+
+    def flush_math() -> None:
         if run:
-            latex = _BARE_GREEK.sub(r"\\\1", " ".join(run)).replace("\\setminus", "\\smallsetminus")
-            m = latex_mathml(latex)
-            if m is None:
-                return False
-            parts.append(m)
+            parts.append((True, _BARE_GREEK.sub(r"\\\1", " ".join(run))))
             run.clear()
-        return True
 
-    def flush_words():
+    def flush_words() -> None:
         if words:
-            parts.append(_html.escape(" ".join(words)))
+            parts.append((False, " ".join(words)))
             words.clear()
 
-    for tok in tokens:
+    for tok in statement.split():
         if _is_text_word(tok) and tok.count("{") == tok.count("}"):
             # a word inside an open brace group belongs to the formula
             if run and " ".join(run).count("{") != " ".join(run).count("}"):
                 run.append(tok)
                 continue
-            if not flush_math():
-                return None
+            flush_math()
             words.append(tok)
         else:
             flush_words()
             run.append(tok)
     flush_words()
-    if not flush_math():
+    flush_math()
+    return parts
+
+
+def quote_html(statement: str) -> str | None:
+    """A quoted statement with its LaTeX typeset: words stay text (escaped), the runs of other tokens
+    between them become MathML. None when a run does not convert (then show the source)."""
+    if not has_latex(statement) or len(statement) > 4 * MAX_LATEX:
         return None
-    return " ".join(parts)
+    out = []
+    for is_math, text in quote_parts(statement):
+        if not is_math:
+            out.append(_html.escape(text))
+            continue
+        m = latex_mathml(text.replace("\\setminus", "\\smallsetminus"))
+        if m is None:
+            return None
+        out.append(m)
+    return " ".join(out)
 
 
 _POWER = re.compile(r"\*\*(\(-?[\w/]+\)|-?[\w.]+)")
