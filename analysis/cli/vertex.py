@@ -6,6 +6,9 @@ Examples
 
     subdiv vertex --scheme loop --valence 3..12
     subdiv vertex --scheme catmull-clark --valence 3..50 --json
+    subdiv vertex --scheme butterfly --valence 3..12
+    subdiv vertex --scheme modified-butterfly --valence 3..20
+    subdiv vertex --scheme sqrt3 --valence 3..12
     subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..8
     subdiv vertex --lattice triangle --centre "3/(8*n)" --edge "3/8; (5/8 + cos(2*pi*j/n))/n" --valence 3..8
 
@@ -18,7 +21,9 @@ from __future__ import annotations
 
 from ..result import AnalysisError
 
-SCHEME_NAMES = ("loop", "loop-warren", "catmull-clark", "doo-sabin")
+SCHEME_NAMES = ("loop", "loop-warren", "catmull-clark", "doo-sabin", "butterfly", "modified-butterfly", "sqrt3")
+#: the default --ring of schemes that do not take the 2-ring
+DEFAULT_RING = {"butterfly": 3, "modified-butterfly": 3, "sqrt3": 1}
 
 
 def register(subparsers) -> None:
@@ -36,8 +41,11 @@ def register(subparsers) -> None:
                         "neighbour e_j (and face f_j), an expression in n and cos(2*pi*l*j/n)")
     s.add_argument("--valence", default="3..12", metavar="N|LO..HI",
                    help="valences (default 3..12; at most 200)")
-    s.add_argument("--ring", default="2", choices=("1", "2"),
-                   help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1")
+    s.add_argument("--ring", choices=("1", "2", "3"),
+                   help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1; "
+                        "the butterfly schemes take 3 (default) or 2, sqrt3 its 1-ring")
+    s.add_argument("--tension", metavar="W",
+                   help="the butterfly schemes' tension w, a rational number (default 1/16)")
     s.add_argument("--figure", metavar="FILE.png",
                    help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
@@ -47,17 +55,31 @@ def register(subparsers) -> None:
 def _rules(args, n: int | None):
     from ..vertex.rules import scheme_rules, user_rules
 
-    ring = int(args.ring)
+    ring = int(args.ring) if args.ring else DEFAULT_RING.get(args.scheme, 2)
     if args.scheme and (args.lattice or args.centre or args.edge):
         raise AnalysisError("give either --scheme NAME or user rules (--lattice, --centre, --edge), not both")
     if args.scheme:
         if args.scheme not in SCHEME_NAMES:
             raise AnalysisError(f"unknown scheme {args.scheme!r}: use one of {', '.join(SCHEME_NAMES)}, "
                                 "or user rules with --lattice and --centre")
-        return scheme_rules(args.scheme, ring, n)
+        return scheme_rules(args.scheme, ring, n, _tension(args.tension))
+    if args.tension:
+        raise AnalysisError("--tension applies to --scheme butterfly or modified-butterfly only")
     if args.lattice and args.centre:
         return user_rules(args.lattice, args.centre, args.edge, ring=ring)
     raise AnalysisError('give --scheme NAME (e.g. --scheme loop) or user rules: --lattice triangle --centre "3/(8*n)"')
+
+
+def _tension(text: str | None):
+    """The butterfly's tension, a rational number read as data."""
+    if text is None:
+        return None
+    from ..algebra.reader import read_expression
+
+    w = read_expression(text, names={}, free=False, what="--tension", hint="give a rational number, e.g. --tension 1/16")
+    if not w.is_Rational:
+        raise AnalysisError(f"--tension must be a rational number (e.g. 1/16), not {text[:40]!r}")
+    return w
 
 
 def _line(e: dict) -> str:
@@ -83,7 +105,7 @@ def _line(e: dict) -> str:
     return "  ".join(parts)
 
 
-def _summary(name: str, closed: dict, entries: list[dict]) -> str:
+def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") -> str:
     ns = [e["n"] for e in entries]
     ok = [e["n"] for e in entries if e["reif"]["value"]]
     lines = []
@@ -108,8 +130,11 @@ def _summary(name: str, closed: dict, entries: list[dict]) -> str:
     elif any("characteristic_map" in e for e in entries):
         lines.append("C^1: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in c1.items()))
     else:
+        from ..vertex.valence import NO_CHARACTERISTIC_MAP
+
+        why = NO_CHARACTERISTIC_MAP.get(lattice)
         lines.append("C^1: inconclusive at every valence (eigen-conditions only; the characteristic map is not "
-                     "checked for these rules)")
+                     "checked for these rules" + (f": {why})" if why else ")"))
     return f"{name}:\n  " + "\n  ".join(lines)
 
 
@@ -156,6 +181,6 @@ def cmd_vertex(args) -> None:
     if args.json:
         _emit(args, doc, "")
     else:
-        _print(_summary(name, closed, entries))
+        _print(_summary(name, closed, entries, base.lattice))
         if args.figure:
             _print(f"figure: {args.figure}")

@@ -76,6 +76,8 @@ class LocalRules:
     min_valence: int = 3
     #: lattice coordinates (x, y) of the sector points in sector 0 (x >= 1, y >= 0), when on a lattice
     coords: tuple = ()
+    #: the smallest valence at which the rules with n symbolic (``n=None``) are the rules at n
+    generic_from: int = 1
 
     @property
     def size(self) -> str:
@@ -229,16 +231,33 @@ SCHEMES: dict[str, tuple[str, str]] = {
     "loop-warren": ("triangle", "Warren, Weimer 2002: beta = 3/(8n) (n > 3), 3/16 (n = 3)"),
     "catmull-clark": ("quad", "Catmull, Clark, CAD 10 (1978): alpha = 1 - 7/(4n), beta = 3/(2n^2), gamma = 1/(4n^2)"),
     "doo-sabin": ("dual quad", "Doo, Sabin, CAD 10 (1978)"),
+    "butterfly": ("triangle, interpolating", "Dyn, Gregory, Levin 1990"),
+    "modified-butterfly": ("triangle, interpolating", "Zorin, Schroeder, Sweldens 1996"),
+    "sqrt3": ("sqrt3", "Kobbelt 2000"),
 }
 
 
-def scheme_rules(name: str, ring: int = 2, n: int | None = None) -> LocalRules:
+def scheme_rules(name: str, ring: int = 2, n: int | None = None, tension: sp.Expr | None = None) -> LocalRules:
     """The local rules of a catalogue scheme on ``ring`` rings (1: the 1-ring, enough for the leading
     eigenvalues of Loop and Catmull–Clark; 2: the 2-ring, the support of the patches of the first
-    ring, which the characteristic map needs). ``n`` matters only for rules piecewise in n (Warren's
-    beta at n = 3)."""
+    ring, which the characteristic map needs; the butterfly schemes take 2 or 3, sqrt(3) its 1-ring).
+    ``n`` matters only for rules piecewise in n (Warren's beta at n = 3, the modified butterfly at
+    n = 3, 4); ``tension`` is the butterfly's w (default 1/16)."""
     if name not in SCHEMES:
         raise AnalysisError(f"unknown scheme {name!r} for `subdiv vertex`: use one of {', '.join(SCHEMES)}")
+    if name in ("butterfly", "modified-butterfly", "sqrt3"):
+        from . import butterfly as bf
+
+        w = bf.DEFAULT_TENSION if tension is None else tension
+        if name == "butterfly":
+            return bf.butterfly_rules(ring, w)
+        if name == "modified-butterfly":
+            return bf.modified_butterfly_rules(ring, n, w)
+        if ring != 1:
+            raise AnalysisError("sqrt3 is analysed on its 1-ring (two steps): give --ring 1")
+        return bf.sqrt3_rules()
+    if tension is not None:
+        raise AnalysisError("--tension applies to the butterfly schemes only")
     if ring not in (1, 2):
         raise AnalysisError(f"--ring must be 1 or 2, not {ring}")
     lattice, src = SCHEMES[name]
