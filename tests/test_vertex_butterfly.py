@@ -25,8 +25,7 @@ import sympy as sp
 
 from analysis.result import AnalysisError
 from analysis.vertex.blocks import c, local_matrix
-from analysis.vertex.butterfly import butterfly_stencil, sqrt3_rules
-from analysis.vertex.rules import scheme_rules
+from analysis.vertex.rules import butterfly_stencil, scheme_rules, sqrt3_rules
 from analysis.vertex.spectrum import analyse
 from analysis.vertex.valence import closed_form_lambda, valence_entry
 
@@ -242,3 +241,51 @@ def test_cli_butterfly_json_tension_and_errors(capsys):
 def test_unknown_ring_for_butterfly_is_refused():
     with pytest.raises(AnalysisError, match="--ring 2 or 3"):
         scheme_rules("butterfly", 1)
+
+
+# --------------------------------------------------------------------------------------------------
+# tuning a free weight of the centre's rule
+
+def test_tuning_loops_beta_gives_the_exact_interval():
+    """Loop's block 0 has the eigenvalue 5/8 - n beta besides 1: the conditions hold iff |5/8 - n beta| < lambda
+    = 3/8 + cos(2 pi/n)/4, i.e. beta in ((1 - c)/(4n), (1 + c/4)/n) (derived by hand from the 1-ring block)."""
+    from analysis.vertex.tuning import tune_centre
+
+    n = 5
+    r = tune_centre("triangle", "b", "b", n, ring=1)
+    held = [i for i in r["intervals"] if i["holds"]]
+    assert r["status"] == "certified" and len(held) == 1
+    cn = sp.cos(2 * sp.pi / n)
+    assert sp.simplify(held[0]["lower"] - (1 - cn) / (4 * n)) == 0
+    assert sp.simplify(held[0]["upper"] - (1 + cn / 4) / n) == 0
+    beta = (sp.Rational(5, 8) - (sp.Rational(3, 8) + cn / 4) ** 2) / n              # Loop's beta_n inside
+    assert held[0]["lower"] < beta < held[0]["upper"] and held[0]["lower"] < sp.Rational(3, 8 * n) < held[0]["upper"]
+
+
+def test_tuning_decides_rational_endpoints_warren_at_three():
+    """On the 2-ring at n = 3 the set is (1/8, 7/24), both ends failing exactly: Warren's 3/(8n) = 1/8 is the
+    left end (an eigenvalue of block 0 equals lambda = 1/4), and 3/16 is inside."""
+    from analysis.vertex.tuning import tune_centre
+
+    r = tune_centre("triangle", "b", "b", 3, ring=2)
+    held = [i for i in r["intervals"] if i["holds"]]
+    assert [(i["lower"], i["upper"]) for i in held] == [(sp.Rational(1, 8), sp.Rational(7, 24))]
+    assert [(p["value"], p["holds"]) for p in r["critical"]] == [(sp.Rational(1, 8), False), (sp.Rational(7, 24), False)]
+
+
+def test_cli_tune(capsys):
+    from analysis.cli.main import main
+
+    assert main(["vertex", "--lattice", "quad", "--centre", "3/(2*n**2), f", "--tune", "f", "--valence", "3",
+                 "--ring", "1", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    v = doc["valences"][0]
+    assert v["factors"] == ["12*f + 4*lam - 1"]
+    assert [(i["lower"], i["upper"]) for i in v["intervals"] if i["holds"]] == [("-sqrt(17)/96 - 1/96",
+                                                                                  "sqrt(17)/96 + 17/96")]
+    for argv, needle in ((["--scheme", "loop", "--tune", "b"], "works on user rules"),
+                         (["--lattice", "triangle", "--centre", "3/(8*n)", "--tune", "b"], "does not appear"),
+                         (["--lattice", "triangle", "--centre", "n", "--tune", "n"], "takes a name")):
+        assert main(["vertex", *argv, "--valence", "4"]) == 2
+        err = capsys.readouterr().err
+        assert err.count("\n") == 1 and needle in err

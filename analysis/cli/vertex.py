@@ -9,6 +9,7 @@ Examples
     subdiv vertex --scheme butterfly --valence 3..12
     subdiv vertex --scheme modified-butterfly --valence 3..20
     subdiv vertex --scheme sqrt3 --valence 3..12
+    subdiv vertex --lattice triangle --centre b --tune b --valence 3..8
     subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..8
     subdiv vertex --lattice triangle --centre "3/(8*n)" --edge "3/8; (5/8 + cos(2*pi*j/n))/n" --valence 3..8
 
@@ -46,6 +47,9 @@ def register(subparsers) -> None:
                         "the butterfly schemes take 3 (default) or 2, sqrt3 its 1-ring")
     s.add_argument("--tension", metavar="W",
                    help="the butterfly schemes' tension w, a rational number (default 1/16)")
+    s.add_argument("--tune", metavar="NAME",
+                   help="user rules: NAME is a free weight in --centre; print the exact set of its values for "
+                        "which Reif's eigen-conditions hold at each valence")
     s.add_argument("--figure", metavar="FILE.png",
                    help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
@@ -156,6 +160,8 @@ def cmd_vertex(args) -> None:
     from .common import _emit, _print, check_figure
 
     valences = parse_valences(args.valence)
+    if args.tune:
+        return _cmd_tune(args, valences)
     if args.figure:
         check_figure(args.figure, "--figure")
     base = _rules(args, None)
@@ -184,3 +190,59 @@ def cmd_vertex(args) -> None:
         _print(_summary(name, closed, entries, base.lattice))
         if args.figure:
             _print(f"figure: {args.figure}")
+
+
+def _cmd_tune(args, valences: list[int]) -> None:
+    """``--tune NAME``: the values of a free centre weight for which the eigen-conditions hold, per valence."""
+    import re
+
+    from ..vertex.tuning import tune_centre
+    from .common import _emit, _print
+
+    if args.scheme or not (args.lattice and args.centre):
+        raise AnalysisError('--tune works on user rules: give --lattice and --centre with the free weight, '
+                            'e.g. --lattice triangle --centre b --tune b')
+    if args.edge or args.figure or args.tension:
+        raise AnalysisError("--tune takes --lattice, --centre, --ring and --valence only")
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,15}", args.tune) or args.tune in ("n", "c", "j"):
+        raise AnalysisError(f"--tune takes a name (letters, digits, _; not n, c or j), not {args.tune[:20]!r}")
+    ring = int(args.ring) if args.ring else 2
+    out = []
+    for n in valences:
+        r = tune_centre(args.lattice, args.centre, args.tune, n, ring=ring)
+        out.append(_tune_json(r))
+        if not args.json:
+            _print(_tune_line(out[-1], args.tune))
+    doc = {"parameter": args.tune, "lattice": args.lattice, "centre": args.centre, "ring": ring, "valences": out,
+           "note": "the eigen-conditions only (not C^1): open intervals decided at a rational sample, no critical "
+                   "value inside; endpoints decided only when rational"}
+    if args.json:
+        _emit(args, doc, "")
+
+
+def _tune_json(r: dict) -> dict:
+    def show(v):
+        return v if isinstance(v, str) else str(v)
+
+    return {"n": r["n"], "status": r["status"], "reason": r.get("reason", ""),
+            "lambda_ball": r.get("lambda_ball"),
+            "factors": [f.replace(f"free_{r.get('parameter')}", str(r.get("parameter"))) for f in r.get("factors", [])],
+            "critical": [{"value": show(p["value"]), "holds": p["holds"]} for p in r.get("critical", [])],
+            "intervals": [{"lower": show(i["lower"]), "upper": show(i["upper"]), "holds": i["holds"],
+                           "sample": str(i["sample"]), "status": i["status"], "reason": i["reason"]}
+                          for i in r["intervals"]]}
+
+
+def _tune_line(e: dict, name: str) -> str:
+    if e["status"] != "certified" and not e["intervals"]:
+        return f"n={e['n']:<3d} not decided: {e['reason']} [inconclusive]"
+    good = [f"({i['lower']}, {i['upper']})" for i in e["intervals"] if i["holds"]]
+    points = [p for p in e["critical"] if p["holds"] is not None]
+    extra = [f"{name} = {p['value']}" for p in points if p["holds"]]
+    where = " U ".join(good + extra) if (good or extra) else "no value"
+    ends = ""
+    if points:
+        ends = "; at " + ", ".join(f"{name} = {p['value']}: {'holds' if p['holds'] else 'fails'}" for p in points)
+    undecided = [i for i in e["intervals"] if i["holds"] is None]
+    tail = f"; {len(undecided)} interval(s) undecided" if undecided else ""
+    return f"n={e['n']:<3d} eigen-conditions hold for {name} in {where}{ends}{tail} [{e['status']}]"

@@ -287,9 +287,10 @@ def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n
     return True if meets == [mu] else None
 
 
-def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis:
+def analyse(rules: LocalRules, n: int, *, max_prec: int = 512, curvature: bool = True) -> VertexAnalysis:
     """The certified eigen-structure at valence n (see the module docstring), at the first precision of
-    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided."""
+    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided (``curvature=False``: the
+    eigen-conditions only, the curvature left undecided)."""
     eig, res = None, None
     for prec in PRECISIONS:
         if prec > max_prec:
@@ -297,8 +298,9 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
         eig = spectrum(rules, n, prec)
         if eig is None:
             continue
-        res = _check(rules, n, eig, prec)
-        if res.reif_status != "inconclusive" and (res.curvature_status != "inconclusive" or res.curvature_final):
+        res = _check(rules, n, eig, prec, curvature)
+        if res.reif_status != "inconclusive" and (not curvature or res.curvature_status != "inconclusive"
+                                                  or res.curvature_final):
             return res
     if res is None:
         a = VertexAnalysis(n, rules.name, [], None, None, None, prec=max_prec)
@@ -307,7 +309,7 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
     return res
 
 
-def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> VertexAnalysis:
+def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int, curvature: bool = True) -> VertexAnalysis:
     from flint import arb
 
     a = VertexAnalysis(n, rules.name, eig, None, None, None, prec=prec)
@@ -364,7 +366,8 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
         else:
             a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
     a.lam_exact = _exact_root(top.factor, top.ball, n, 1, _siblings(eig, top))
-    _curvature(rules, a, others, n)
+    if curvature:
+        _curvature(rules, a, others, n)
     return a
 
 
