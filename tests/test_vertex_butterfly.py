@@ -170,6 +170,23 @@ def test_butterfly_c1_is_never_certified_and_says_why():
     assert bad["c1"]["status"] == "inconclusive" and "eigen-condition fails" in bad["c1"]["witness"]["verdict"]
 
 
+def test_sampled_characteristic_net_is_numerical_evidence_only():
+    """The net sampled on 16 rings: the regular lattice at n = 6 (all discrete Jacobians equal), regular and
+    winding once for the modified butterfly at n = 3; the block-1 eigenvector of another eigenvalue (1/8) is
+    not regular. The result is 'numerical' and C^1 stays inconclusive."""
+    from analysis.vertex.netmap import numerical_characteristic_map
+
+    six = numerical_characteristic_map(scheme_rules("modified-butterfly", 3, 6), 6, 0.5)
+    assert six["injective"] and abs(six["min_jacobian_ratio"] - 1) < 1e-9
+    three = numerical_characteristic_map(scheme_rules("modified-butterfly", 3, 3), 3, 0.5)
+    assert three["status"] == "numerical" and three["regular"] and three["winding_number"] == 1
+    other = numerical_characteristic_map(scheme_rules("modified-butterfly", 3, 5), 5, 0.125)
+    assert abs(other["eigenvalue_used"] - 0.125) < 1e-9 and not other["regular"] and not other["injective"]
+    e = valence_entry(scheme_rules("modified-butterfly", 3, 7), 7)
+    assert e["characteristic_map_numerical"]["status"] == "numerical" and e["characteristic_map_numerical"]["value"]
+    assert e["c1"]["status"] == "inconclusive" and "not a proof" in e["c1"]["witness"]["numerical_evidence"]
+
+
 def test_two_rings_and_three_rings_agree_on_the_leading_eigenvalues():
     """The 3-ring adds the outer block (eigenvalues 0 and -w) and nothing above it."""
     for n in (4, 8):

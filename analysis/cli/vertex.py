@@ -136,9 +136,13 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
     else:
         from ..vertex.valence import NO_CHARACTERISTIC_MAP
 
-        why = NO_CHARACTERISTIC_MAP.get(lattice)
-        lines.append("C^1: inconclusive at every valence (eigen-conditions only; the characteristic map is not "
-                     "checked for these rules" + (f": {why})" if why else ")"))
+        why = NO_CHARACTERISTIC_MAP.get(lattice, "the characteristic map is not checked for these rules")
+        lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
+        sampled = [e for e in entries if e.get("characteristic_map_numerical", {}).get("value")]
+        if sampled:
+            rings = sampled[0]["characteristic_map_numerical"]["witness"]["resolution"]
+            lines.append(f"numerically (floats, not a proof): the characteristic net sampled on {rings} rings is "
+                         f"regular and winds once at n = {_ranges([e['n'] for e in sampled])}")
     return f"{name}:\n  " + "\n  ".join(lines)
 
 
@@ -179,7 +183,8 @@ def cmd_vertex(args) -> None:
     doc = {"scheme": name, "rules": base.source, "ring": base.ring, "matrix_size": base.size,
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
-                      "(checked for quad rules on the 2-ring); otherwise the verdict is inconclusive"}
+                      "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
+                      "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
     if args.figure:
         from ..report.vertex_plots import plot_vertex_spectrum
 

@@ -91,6 +91,8 @@ class LocalRules:
     coords: tuple = ()
     #: the smallest valence at which the rules with n symbolic (``n=None``) are the rules at n
     generic_from: int = 1
+    #: the butterfly family's tension w (None for other rules)
+    tension: object = None
 
     @property
     def size(self) -> str:
@@ -260,6 +262,8 @@ def scheme_rules(name: str, ring: int = 2, n: int | None = None, tension: sp.Exp
         raise AnalysisError(f"unknown scheme {name!r} for `subdiv vertex`: use one of {', '.join(SCHEMES)}")
     if name in ("butterfly", "modified-butterfly", "sqrt3"):
         w = DEFAULT_TENSION if tension is None else tension
+        if name != "sqrt3" and ring not in BUTTERFLY_RINGS:
+            raise AnalysisError(f"the butterfly schemes take --ring 2 or 3, not {ring}")
         if name == "butterfly":
             return butterfly_rules(ring, w)
         if name == "modified-butterfly":
@@ -316,6 +320,8 @@ def scheme_rules(name: str, ring: int = 2, n: int | None = None, tension: sp.Exp
 DEFAULT_TENSION = sp.Rational(1, 16)
 #: rings of the butterfly's local matrix: 2 is the smallest closed set, 3 adds the outer block
 BUTTERFLY_RINGS = (2, 3)
+#: larger rings (every ring is closed under the rules) serve the numerical characteristic map only
+MAX_BUTTERFLY_RING = 32
 
 
 def triangle_sector(ring: int) -> list[tuple[int, int]]:
@@ -354,7 +360,7 @@ def butterfly_stencil(X: int, Y: int, tension: sp.Expr = DEFAULT_TENSION) -> lis
 
 def _lattice_rules(name: str, ring: int, centre_rule, overrides: dict, tension, source: str,
                    generic_from: int = 1) -> LocalRules:
-    if ring not in BUTTERFLY_RINGS:
+    if not 2 <= ring <= MAX_BUTTERFLY_RING:
         raise AnalysisError(f"the butterfly schemes take --ring 2 or 3, not {ring}")
     sector = triangle_sector(ring)
     coords = {p: i for i, p in enumerate(sector)}
@@ -364,8 +370,9 @@ def _lattice_rules(name: str, ring: int, centre_rule, overrides: dict, tension, 
             rules.append(overrides[(X, Y)])
         else:
             rules.append(_stencil_terms(butterfly_stencil(X, Y, tension), coords, _tri_home, centre_rule))
-    return LocalRules(name, True, tuple(f"p{x}{y}" for x, y in sector), tuple(rules), "triangle, interpolating",
-                      ring, source, coords=tuple(sector), generic_from=generic_from)
+    return LocalRules(name, True, tuple(f"p{x}_{y}" if ring > 9 else f"p{x}{y}" for x, y in sector), tuple(rules),
+                      "triangle, interpolating", ring, source, coords=tuple(sector), generic_from=generic_from,
+                      tension=tension)
 
 
 def butterfly_rules(ring: int = 3, tension: sp.Expr = DEFAULT_TENSION) -> LocalRules:

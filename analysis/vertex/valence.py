@@ -37,7 +37,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
+from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
 from .spectrum import VertexAnalysis, analyse, arb_value, exact_rational
@@ -57,9 +57,10 @@ CURVATURE_TEXT = {
 
 #: why the characteristic map is not checked, by lattice (short, per valence; the long form in the docs)
 NO_CHARACTERISTIC_MAP = {
-    "triangle, interpolating": "the butterfly's regular basis functions are not piecewise polynomial: no Bernstein-form "
-                               "Jacobian certificate",
-    "sqrt3": "no patch form of the regular sqrt(3) limit functions here; rules on the 1-ring of two steps",
+    "triangle, interpolating": "characteristic map not certified (the butterfly's regular basis functions are not "
+                               "piecewise polynomial: no Bernstein-form Jacobian certificate)",
+    "sqrt3": "characteristic map not checked (no patch form of the regular sqrt(3) limit functions here; rules on "
+             "the 1-ring of two steps)",
 }
 
 
@@ -104,9 +105,8 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = ""
         return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
                              f"{charmap['precision_bits']} bits"
     if a.reif_ok:
-        why = NO_CHARACTERISTIC_MAP.get(lattice)
-        return INCONCLUSIVE, ("inconclusive: eigen-conditions hold, characteristic map not checked"
-                              + (f" ({why})" if why else ""))
+        why = NO_CHARACTERISTIC_MAP.get(lattice, "characteristic map not checked")
+        return INCONCLUSIVE, f"inconclusive: eigen-conditions hold, {why}"
     if a.reif_status == CERTIFIED:
         return INCONCLUSIVE, f"inconclusive: an eigen-condition fails ({a.reif_reason}); the standard C^1 test does not apply"
     return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
@@ -175,8 +175,21 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
                                            witness={k: v for k, v in cm.items() if k not in ("status", "method")},
                                            provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
     status, verdict = c1_verdict(a, cm, rules.lattice)
+    c1_witness = {"verdict": verdict}
+    if a.reif_ok and rules.lattice == "triangle, interpolating":
+        from .netmap import numerical_characteristic_map
+
+        nm = numerical_characteristic_map(rules, n, float(ball.mid()))
+        out["characteristic_map_numerical"] = Result(
+            value=nm["injective"], status=NUMERICAL,
+            witness={k: v for k, v in nm.items() if k not in ("status", "method")},
+            provenance={"method": nm["method"]})
+        c1_witness["numerical_evidence"] = (
+            f"the characteristic net sampled on {nm['resolution']} rings is "
+            + ("regular and winds once (floats): evidence, not a proof" if nm["injective"]
+               else f"{'regular' if nm['regular'] else 'not regular'}, winding number {nm['winding_number']} (floats)"))
     out["c1"] = Result(value={CERTIFIED: True, REFUTED: False}.get(status), status=status,
-                       witness={"verdict": verdict}, provenance=prov)
+                       witness=c1_witness, provenance=prov)
     return out
 
 
