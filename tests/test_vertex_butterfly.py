@@ -249,7 +249,8 @@ def test_cli_butterfly_json_tension_and_errors(capsys):
     assert "w = 1/32" in doc["rules"] and doc["valences"][0]["lambda"]["value"] == "1/2"
     for argv, needle in ((["--scheme", "loop", "--tension", "1/16"], "butterfly schemes only"),
                          (["--scheme", "butterfly", "--tension", "sqrt(2)"], "rational number"),
-                         (["--scheme", "sqrt3", "--ring", "2"], "give --ring 1")):
+                         (["--scheme", "sqrt3", "--ring", "2"], "give --ring 1"),
+                         (["--lattice", "triangle", "--centre", "3/(8*n)", "--ring", "3"], "--ring must be 1 or 2")):
         assert main(["vertex", *argv, "--valence", "5"]) == 2
         err = capsys.readouterr().err
         assert err.count("\n") == 1 and needle in err

@@ -493,6 +493,8 @@ def user_rules(lattice: str, centre: str, edge: str | None = None, *, ring: int 
     """
     if lattice not in ("triangle", "quad"):
         raise AnalysisError(f"--lattice must be triangle or quad, not {lattice!r}")
+    if ring not in (1, 2):
+        raise AnalysisError(f"--ring must be 1 or 2 for user rules, not {ring}")
     parts = [p for p in centre.split(",")]
     want = 1 if lattice == "triangle" else 2
     if len(parts) != want:
