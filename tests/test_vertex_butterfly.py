@@ -222,12 +222,29 @@ def test_sqrt3_two_steps_compose_the_one_step_rules():
 
 @pytest.mark.parametrize("n", [3, 5, 7, 12])
 def test_sqrt3_lambda_and_kobbelts_alpha(n):
-    a = analyse(scheme_rules("sqrt3", 1, n), n)
+    a = analyse(scheme_rules("sqrt3", 1, n), n, curvature=False)
     assert a.reif_ok and a.reif_status == "certified"
     lam = (2 + 2 * sp.cos(2 * sp.pi / n)) / 9
     assert abs(float(a.lam_exact) - float(lam)) < 1e-15
     block0 = [e for e in a.eigenvalues if e.k == 0 and not e.ball.real.contains(1)][0]
     assert block0.ball.overlaps(a.lam.ball ** 2)                           # (2/3 - alpha_n)^2 = lambda^2
+
+
+def test_sqrt3_two_ring_composition():
+    """The 2-ring rules of two steps: the 1-ring rows are the closed forms; at the regular valence they map the
+    lattice positions to the positions of the level-2 lattice (linear precision, scale 1/3, no turn); the
+    2-ring adds eigenvalues below lambda (at n = 3 one of 0.041 > 3 lambda^2 = 3/81)."""
+    r1, r2 = scheme_rules("sqrt3", 1), scheme_rules("sqrt3", 2)
+    for i in (0, 1):
+        assert {t.source: t.weight for t in r2.rules[i]} == {t.source: t.weight for t in r1.rules[i]}
+    S = np.array(local_matrix(r2, 6).evalf(), dtype=float)
+    w6 = np.exp(1j * np.pi / 3)
+    pos = np.array([0j] + [w6 ** j * (x + y * w6) for j in range(6) for x, y in r2.coords])
+    assert np.allclose(S @ pos, pos / 3, atol=1e-14)
+    a = analyse(r2, 3, curvature=False)
+    assert a.reif_ok and a.lam_exact == sp.Rational(1, 9)
+    others = [e for e in a.eigenvalues if e is not a.lam and not (e.k == 0 and e.ball.real.contains(1))]
+    assert any(e.modulus > 3 / 81 for e in others)
 
 
 def test_sqrt3_closed_form():
@@ -249,7 +266,7 @@ def test_cli_butterfly_json_tension_and_errors(capsys):
     assert "w = 1/32" in doc["rules"] and doc["valences"][0]["lambda"]["value"] == "1/2"
     for argv, needle in ((["--scheme", "loop", "--tension", "1/16"], "butterfly schemes only"),
                          (["--scheme", "butterfly", "--tension", "sqrt(2)"], "rational number"),
-                         (["--scheme", "sqrt3", "--ring", "2"], "give --ring 1"),
+                         (["--scheme", "sqrt3", "--ring", "3"], "give --ring 1 or 2"),
                          (["--lattice", "triangle", "--centre", "3/(8*n)", "--ring", "3"], "--ring must be 1 or 2")):
         assert main(["vertex", *argv, "--valence", "5"]) == 2
         err = capsys.readouterr().err

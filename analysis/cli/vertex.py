@@ -24,7 +24,7 @@ from ..result import AnalysisError
 
 SCHEME_NAMES = ("loop", "loop-warren", "catmull-clark", "doo-sabin", "butterfly", "modified-butterfly", "sqrt3")
 #: the default --ring of schemes that do not take the 2-ring
-DEFAULT_RING = {"butterfly": 3, "modified-butterfly": 3, "sqrt3": 1}
+DEFAULT_RING = {"butterfly": 3, "modified-butterfly": 3}
 
 
 def register(subparsers) -> None:
@@ -44,7 +44,7 @@ def register(subparsers) -> None:
                    help="valences (default 3..12; at most 200)")
     s.add_argument("--ring", choices=("1", "2", "3"),
                    help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1; "
-                        "the butterfly schemes take 3 (default) or 2, sqrt3 its 1-ring")
+                        "the butterfly schemes take 3 (default) or 2; sqrt3 counts two steps")
     s.add_argument("--tension", metavar="W",
                    help="the butterfly schemes' tension w, a rational number (default 1/16)")
     s.add_argument("--tune", metavar="NAME",

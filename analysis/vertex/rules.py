@@ -255,7 +255,7 @@ SCHEMES: dict[str, tuple[str, str]] = {
 def scheme_rules(name: str, ring: int = 2, n: int | None = None, tension: sp.Expr | None = None) -> LocalRules:
     """The local rules of a catalogue scheme on ``ring`` rings (1: the 1-ring, enough for the leading
     eigenvalues of Loop and Catmull–Clark; 2: the 2-ring, the support of the patches of the first
-    ring, which the characteristic map needs; the butterfly schemes take 2 or 3, sqrt(3) its 1-ring).
+    ring, which the characteristic map needs; the butterfly schemes take 2 or 3, sqrt(3) (two steps) 1 or 2).
     ``n`` matters only for rules piecewise in n (Warren's beta at n = 3, the modified butterfly at
     n = 3, 4); ``tension`` is the butterfly's w (default 1/16)."""
     if name not in SCHEMES:
@@ -268,9 +268,9 @@ def scheme_rules(name: str, ring: int = 2, n: int | None = None, tension: sp.Exp
             return butterfly_rules(ring, w)
         if name == "modified-butterfly":
             return modified_butterfly_rules(ring, n, w)
-        if ring != 1:
-            raise AnalysisError("sqrt3 is analysed on its 1-ring (two steps): give --ring 1")
-        return sqrt3_rules()
+        if ring not in (1, 2):
+            raise AnalysisError(f"sqrt3 is analysed on its 1-ring or 2-ring (two steps): give --ring 1 or 2, not {ring}")
+        return sqrt3_rules(ring=ring)
     if tension is not None:
         raise AnalysisError("--tension applies to the butterfly schemes only")
     if ring not in (1, 2):
@@ -412,14 +412,95 @@ def modified_butterfly_rules(ring: int = 3, n: int | None = None, tension: sp.Ex
 SQRT3_ALPHA = (4 - 2 * C1) / 9
 
 
-def sqrt3_rules(alpha: sp.Expr = SQRT3_ALPHA) -> LocalRules:
+#: the six directions of the level-1 (turned) lattice in thirds of level-0 lattice coordinates, in cyclic order
+_SQRT3_DIRS = ((1, 1), (-1, 2), (-2, 1), (-1, -1), (1, -2), (2, -1))
+
+
+def sqrt3_rules(alpha: sp.Expr = SQRT3_ALPHA, ring: int = 1) -> LocalRules:
+    """Two steps of Kobbelt's sqrt(3) scheme on ``ring`` rings (1: :func:`sqrt3_rules_1ring`, closed form; 2:
+    composed on the lattice by :func:`_sqrt3_lattice_rules`)."""
+    if ring == 1:
+        return sqrt3_rules_1ring(alpha)
+    if ring != 2:
+        raise AnalysisError(f"sqrt3 takes --ring 1 or 2, not {ring}")
+    return _sqrt3_lattice_rules(sp.sympify(alpha), ring)
+
+
+def _sqrt3_lattice_rules(a: sp.Expr, ring: int) -> LocalRules:
+    """Two sqrt(3) steps on the lattice, points in thirds of level-0 coordinates (``X = 3x``): the level-1
+    points are the old vertices (X, Y = 0 mod 3) and the face centroids (X = Y mod 3), the level-2 points all
+    integer (X, Y). Old vertices other than the centre have valence 6 (alpha_6 = 1/3: 2/3 and 1/18 on the
+    six neighbours); the centre is relaxed with alpha_n in both steps; a level-1 point is relaxed over its six
+    level-1 neighbours ``P + d`` (:data:`_SQRT3_DIRS`); a new level-2 point is the centroid of its level-1
+    triangle."""
+    sector = triangle_sector(ring)
+    coords = {p: i for i, p in enumerate(sector)}
+    third = sp.Rational(1, 3)
+
+    def add(acc: dict, terms: dict, wgt) -> None:
+        for k, v in terms.items():
+            acc[k] = acc.get(k, sp.S.Zero) + wgt * v
+
+    def level0(x: int, y: int) -> dict:
+        d, hx, hy = _tri_home(x, y)
+        if (hx, hy) == (0, 0):
+            return {(CENTRE,): sp.S.One}
+        if (hx, hy) not in coords:
+            raise AnalysisError(f"the rings are not closed under two sqrt(3) steps: point {(hx, hy)} is needed")
+        return {(coords[(hx, hy)], d): sp.S.One}
+
+    centre1 = {(CENTRE,): 1 - a, (coords[(1, 0)], ALL): a / n_sym}     # p' = (1 - a) p + (a/n) sum e_j
+
+    def level1(X: int, Y: int) -> dict:
+        if (X, Y) == (0, 0):
+            return dict(centre1)
+        if X % 3 == 0 and Y % 3 == 0:                                  # an old vertex of valence 6
+            x, y = X // 3, Y // 3
+            out = {}
+            add(out, level0(x, y), sp.Rational(2, 3))
+            for dx, dy in _TRI_DIRS:
+                add(out, level0(x + dx, y + dy), sp.Rational(1, 18))
+            return out
+        x, y = (X - 1) // 3, (Y - 1) // 3
+        tri = ((x, y), (x + 1, y), (x, y + 1)) if (X - 1) % 3 == 0 else ((x + 1, y), (x + 1, y + 1), (x, y + 1))
+        out = {}
+        for px, py in tri:
+            add(out, level0(px, py), third)
+        return out
+
+    def level2(X: int, Y: int) -> dict:
+        out = {}
+        if (X - Y) % 3 == 0:                                           # a level-1 point, relaxed
+            if (X, Y) == (0, 0):
+                raise AnalysisError("the centre's two-step rule is the closed form of sqrt3_rules_1ring")
+            add(out, level1(X, Y), sp.Rational(2, 3))
+            for dx, dy in _SQRT3_DIRS:
+                add(out, level1(X + dx, Y + dy), sp.Rational(1, 18))
+            return out
+        offsets = ((0, -1), (1, 0), (-1, 1)) if (X - Y + 1) % 3 == 0 else ((1, -1), (0, 1), (-1, 0))
+        for dx, dy in offsets:
+            add(out, level1(X + dx, Y + dy), third)
+        return out
+
+    one = sqrt3_rules_1ring(a)
+    rules = [one.rules[0]]
+    for X, Y in sector:
+        terms = level2(X, Y)
+        rules.append(tuple(Term(sp.expand(v), k) for k, v in terms.items() if sp.expand(v) != 0))
+    src = ("Kobbelt 2000: sqrt(3), alpha_n = (4 - 2 cos(2 pi/n))/9; two steps (the refinement turns the ring by "
+           f"pi/n per step), {ring}-ring")
+    return LocalRules("sqrt3", True, tuple(f"q{x}{y}" for x, y in sector), tuple(rules), "sqrt3", ring, src,
+                      coords=tuple(sector))
+
+
+def sqrt3_rules_1ring(alpha: sp.Expr = SQRT3_ALPHA) -> LocalRules:
     """Two steps of Kobbelt's sqrt(3) scheme on the 1-ring (centre p, neighbours e_j), composed exactly:
 
     ``p'' = ((1 - a)^2 + a/3) p + (a/n)(5/3 - a) sum e_j`` and
     ``e_j'' = ((1 - a)/3 + 2/9) p + a/(3n) sum e_l + (e_(j-1) + 2 e_j + e_(j+1))/9`` (a = alpha_n),
     from ``p' = (1 - a) p + (a/n) sum e_j``, ``f_j = (p + e_j + e_(j+1))/3`` and ``e_j'' = (p' + f_(j-1) + f_j)/3``.
 
-    >>> [str(t.weight) for t in sqrt3_rules(sp.Rational(1, 3)).rules[1]]
+    >>> [str(t.weight) for t in sqrt3_rules_1ring(sp.Rational(1, 3)).rules[1]]
     ['4/9', '1/(9*n)', '1/9', '2/9', '1/9']
     """
     a = sp.sympify(alpha)

@@ -490,7 +490,7 @@ RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for Loop- a
 def _ring_not_evaluated(rules: LocalRules) -> str:
     """Why eigenfunctions on the ring are not evaluated for these rules."""
     if rules.lattice == "sqrt3":
-        return "eigenfunctions on the ring are not evaluated for sqrt(3) (no patch form; rules on the 1-ring)"
+        return "eigenfunctions on the ring are not evaluated for sqrt(3) (no patch form)"
     return RING_NOT_EVALUATED
 
 

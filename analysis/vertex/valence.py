@@ -59,8 +59,7 @@ CURVATURE_TEXT = {
 NO_CHARACTERISTIC_MAP = {
     "triangle, interpolating": "characteristic map not certified (the butterfly's regular basis functions are not "
                                "piecewise polynomial: no Bernstein-form Jacobian certificate)",
-    "sqrt3": "characteristic map not checked (no patch form of the regular sqrt(3) limit functions here; rules on "
-             "the 1-ring of two steps)",
+    "sqrt3": "characteristic map not checked (no patch form of the regular sqrt(3) limit functions here)",
 }
 
 
