@@ -164,6 +164,9 @@ def tune_centre(lattice: str, centre: str, name: str, n: int, *, ring: int = 2, 
         R = sp.resultant(Gz.as_expr(), mirror, z) if d > 1 else sp.expand(mirror.subs(z, sp.solve(Gz.as_expr(), z)[0]))
         num, _ = sp.fraction(sp.together(sp.expand(R)))
         num = sp.expand(num)
+        if num == 0:
+            return {"n": n, "status": "inconclusive", "intervals": [],
+                    "reason": f"factor {sp.sstr(G)} has two roots with product lambda^2 for every value"}
         sq = sp.Poly(num, t).sqf_part().as_expr() if num.has(t) else num
         poly = _arb_poly_in_t(sq, t, x, lam_ball, n, prec)
         roots = _real_roots(poly, prec)
@@ -194,13 +197,13 @@ def tune_centre(lattice: str, centre: str, name: str, n: int, *, ring: int = 2, 
         else:
             q = _sample_between(lo[1], hi[0])
         a = analyse(substitute(rules, t, q), n, curvature=False)
-        intervals.append({"lower": _endpoint(critical[i - 1], closed, n) if lo is not None else "-oo",
-                          "upper": _endpoint(critical[i], closed, n) if hi is not None else "oo",
+        intervals.append({"lower": _endpoint(critical[i - 1], critical, closed, n) if lo is not None else "-oo",
+                          "upper": _endpoint(critical[i], critical, closed, n) if hi is not None else "oo",
                           "sample": q, "holds": a.reif_ok if a.reif_status == "certified" else None,
                           "status": a.reif_status, "reason": a.reif_reason})
     points = []
     for b in critical:
-        e = _endpoint(b, closed, n)
+        e = _endpoint(b, critical, closed, n)
         at = None
         if isinstance(e, sp.Basic) and e.is_Rational:
             a = analyse(substitute(rules, t, e), n, curvature=False)
@@ -211,13 +214,15 @@ def tune_centre(lattice: str, centre: str, name: str, n: int, *, ring: int = 2, 
             "critical": points, "intervals": intervals}
 
 
-def _endpoint(ball, closed: list, n: int):
-    """The closed form among ``closed`` whose Arb value lies in ``ball`` and whose ball meets no other, or the ball."""
+def _endpoint(ball, critical: list, closed: list, n: int):
+    """The closed form among ``closed`` (roots of the same polynomial) that lies in ``ball`` and in no other
+    critical ball (a rational: exactly; otherwise its Arb value), or the ball itself."""
     for r in closed:
-        v = arb_value(r, n, 256) if not r.is_Rational else None
         if r.is_Rational:
             if exact_rational(ball.lower()) <= r <= exact_rational(ball.upper()):
                 return r
-        elif v is not None and v.overlaps(ball) and v.rad() < ball.rad() + 1e-30:
+            continue
+        v = arb_value(r, n, 256)
+        if v is not None and v.overlaps(ball) and not any(v.overlaps(b) for b in critical if b is not ball):
             return r
     return ball
