@@ -47,7 +47,7 @@ import sympy as sp
 
 from ..result import AnalysisError
 from .blocks import block_charpoly, c, fourier_block, lam
-from .rules import C1, CENTRE, LocalRules, Term, free_weight, user_rules
+from .rules import C1, LocalRules, Term, free_weight, user_rules
 from .spectrum import analyse, arb_value, exact_rational
 
 #: at most this many critical values per valence
