@@ -324,6 +324,19 @@ BUTTERFLY_RINGS = (2, 3)
 MAX_BUTTERFLY_RING = 32
 
 
+def _number(x) -> sp.Expr:
+    """A weight given as a sympy expression or a Python int or Fraction (never text)."""
+    if isinstance(x, sp.Basic):
+        return x
+    if isinstance(x, int):
+        return sp.Integer(x)
+    from fractions import Fraction
+
+    if isinstance(x, Fraction):
+        return sp.Rational(x.numerator, x.denominator)
+    raise AnalysisError(f"a weight must be a number or an expression, not {type(x).__name__}")
+
+
 def triangle_sector(ring: int) -> list[tuple[int, int]]:
     """The lattice points of sector 0 (x >= 1, y >= 0) within ``ring`` rings, ring by ring.
 
@@ -353,7 +366,7 @@ def butterfly_stencil(X: int, Y: int, tension: sp.Expr = DEFAULT_TENSION) -> lis
 
     p = ((X - d(i)[0]) // 2, (Y - d(i)[1]) // 2)
     q = add(p, d(i))
-    half, w = sp.Rational(1, 2), sp.sympify(tension)
+    half, w = sp.Rational(1, 2), _number(tension)
     return ([(half, p), (half, q), (2 * w, add(p, d(i + 1))), (2 * w, add(p, d(i - 1)))]
             + [(-w, add(p, d(i + 2))), (-w, add(q, d(i + 1))), (-w, add(p, d(i - 2))), (-w, add(q, d(i - 1)))])
 
@@ -377,7 +390,7 @@ def _lattice_rules(name: str, ring: int, centre_rule, overrides: dict, tension, 
 
 def butterfly_rules(ring: int = 3, tension: sp.Expr = DEFAULT_TENSION) -> LocalRules:
     """The original butterfly scheme at a vertex of valence n, on ``ring`` (2 or 3) rings."""
-    w = sp.sympify(tension)
+    w = _number(tension)
     src = f"Dyn, Gregory, Levin 1990: butterfly, tension w = {w}, the regular stencil at every edge"
     return _lattice_rules("butterfly", ring, (Term(sp.S.One, (CENTRE,)),), {}, w, src)
 
@@ -400,7 +413,7 @@ def modified_butterfly_rules(ring: int = 3, n: int | None = None, tension: sp.Ex
     """The modified butterfly (Zorin–Schröder–Sweldens 1996) at a vertex of valence n: the regular
     butterfly everywhere except the new points on the edges at the vertex (``3/4`` on the vertex, ``s_j``
     on its neighbours e_j). ``n`` selects the special weights of n = 3, 4 (None: the formula, n >= 5)."""
-    w = sp.sympify(tension)
+    w = _number(tension)
     edge = (Term(sp.Rational(3, 4), (CENTRE,)), Term(modified_butterfly_weights(n), (0, ALL)))
     src = ("Zorin, Schroeder, Sweldens 1996: 3/4 and s_j = (1/4 + cos(2 pi j/n) + cos(4 pi j/n)/2)/n (n >= 5; "
            f"n = 3: 5/12, -1/12, -1/12; n = 4: 3/8, 0, -1/8, 0); butterfly tension w = {w} elsewhere")
@@ -423,7 +436,7 @@ def sqrt3_rules(alpha: sp.Expr = SQRT3_ALPHA, ring: int = 1) -> LocalRules:
         return sqrt3_rules_1ring(alpha)
     if ring != 2:
         raise AnalysisError(f"sqrt3 takes --ring 1 or 2, not {ring}")
-    return _sqrt3_lattice_rules(sp.sympify(alpha), ring)
+    return _sqrt3_lattice_rules(_number(alpha), ring)
 
 
 def _sqrt3_lattice_rules(a: sp.Expr, ring: int) -> LocalRules:
@@ -503,7 +516,7 @@ def sqrt3_rules_1ring(alpha: sp.Expr = SQRT3_ALPHA) -> LocalRules:
     >>> [str(t.weight) for t in sqrt3_rules_1ring(sp.Rational(1, 3)).rules[1]]
     ['4/9', '1/(9*n)', '1/9', '2/9', '1/9']
     """
-    a = sp.sympify(alpha)
+    a = _number(alpha)
     third, ninth = sp.Rational(1, 3), sp.Rational(1, 9)
     centre = (Term(sp.expand((1 - a) ** 2 + a / 3), (CENTRE,)), Term(sp.expand(a / n_sym * (1 - a + 2 * third)), (0, ALL)))
     ring = (Term(sp.expand((1 - a) / 3 + 2 * ninth), (CENTRE,)), Term(sp.expand(a / (3 * n_sym)), (0, ALL)),
