@@ -6,6 +6,10 @@ Examples
 
     subdiv vertex --scheme loop --valence 3..12
     subdiv vertex --scheme catmull-clark --valence 3..50 --json
+    subdiv vertex --scheme butterfly --valence 3..12
+    subdiv vertex --scheme modified-butterfly --valence 3..20
+    subdiv vertex --scheme sqrt3 --valence 3..12
+    subdiv vertex --lattice triangle --centre b --tune b --valence 3..8
     subdiv vertex --lattice triangle --centre "3/(8*n)" --valence 3..8
     subdiv vertex --lattice triangle --centre "3/(8*n)" --edge "3/8; (5/8 + cos(2*pi*j/n))/n" --valence 3..8
 
@@ -18,7 +22,9 @@ from __future__ import annotations
 
 from ..result import AnalysisError
 
-SCHEME_NAMES = ("loop", "loop-warren", "catmull-clark", "doo-sabin")
+SCHEME_NAMES = ("loop", "loop-warren", "catmull-clark", "doo-sabin", "butterfly", "modified-butterfly", "sqrt3")
+#: the default --ring of schemes that do not take the 2-ring
+DEFAULT_RING = {"butterfly": 3, "modified-butterfly": 3}
 
 
 def register(subparsers) -> None:
@@ -36,8 +42,14 @@ def register(subparsers) -> None:
                         "neighbour e_j (and face f_j), an expression in n and cos(2*pi*l*j/n)")
     s.add_argument("--valence", default="3..12", metavar="N|LO..HI",
                    help="valences (default 3..12; at most 200)")
-    s.add_argument("--ring", default="2", choices=("1", "2"),
-                   help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1")
+    s.add_argument("--ring", choices=("1", "2", "3"),
+                   help="rings of the local matrix: 2 (default; the support of the first ring's patches) or 1; "
+                        "the butterfly schemes take 3 (default) or 2; sqrt3 counts two steps")
+    s.add_argument("--tension", metavar="W",
+                   help="the butterfly schemes' tension w, a rational number (default 1/16)")
+    s.add_argument("--tune", metavar="NAME",
+                   help="user rules: NAME is a free weight in --centre; print the exact set of its values for "
+                        "which Reif's eigen-conditions hold at each valence")
     s.add_argument("--figure", metavar="FILE.png",
                    help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
@@ -47,17 +59,31 @@ def register(subparsers) -> None:
 def _rules(args, n: int | None):
     from ..vertex.rules import scheme_rules, user_rules
 
-    ring = int(args.ring)
+    ring = int(args.ring) if args.ring else DEFAULT_RING.get(args.scheme, 2)
     if args.scheme and (args.lattice or args.centre or args.edge):
         raise AnalysisError("give either --scheme NAME or user rules (--lattice, --centre, --edge), not both")
     if args.scheme:
         if args.scheme not in SCHEME_NAMES:
             raise AnalysisError(f"unknown scheme {args.scheme!r}: use one of {', '.join(SCHEME_NAMES)}, "
                                 "or user rules with --lattice and --centre")
-        return scheme_rules(args.scheme, ring, n)
+        return scheme_rules(args.scheme, ring, n, _tension(args.tension))
+    if args.tension:
+        raise AnalysisError("--tension applies to --scheme butterfly or modified-butterfly only")
     if args.lattice and args.centre:
         return user_rules(args.lattice, args.centre, args.edge, ring=ring)
     raise AnalysisError('give --scheme NAME (e.g. --scheme loop) or user rules: --lattice triangle --centre "3/(8*n)"')
+
+
+def _tension(text: str | None):
+    """The butterfly's tension, a rational number read as data."""
+    if text is None:
+        return None
+    from ..algebra.reader import read_expression
+
+    w = read_expression(text, names={}, free=False, what="--tension", hint="give a rational number, e.g. --tension 1/16")
+    if not w.is_Rational:
+        raise AnalysisError(f"--tension must be a rational number (e.g. 1/16), not {text[:40]!r}")
+    return w
 
 
 def _line(e: dict) -> str:
@@ -83,7 +109,7 @@ def _line(e: dict) -> str:
     return "  ".join(parts)
 
 
-def _summary(name: str, closed: dict, entries: list[dict]) -> str:
+def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") -> str:
     ns = [e["n"] for e in entries]
     ok = [e["n"] for e in entries if e["reif"]["value"]]
     lines = []
@@ -108,8 +134,15 @@ def _summary(name: str, closed: dict, entries: list[dict]) -> str:
     elif any("characteristic_map" in e for e in entries):
         lines.append("C^1: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in c1.items()))
     else:
-        lines.append("C^1: inconclusive at every valence (eigen-conditions only; the characteristic map is not "
-                     "checked for these rules)")
+        from ..vertex.valence import NO_CHARACTERISTIC_MAP
+
+        why = NO_CHARACTERISTIC_MAP.get(lattice, "the characteristic map is not checked for these rules")
+        lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
+        sampled = [e for e in entries if e.get("characteristic_map_numerical", {}).get("value")]
+        if sampled:
+            rings = sampled[0]["characteristic_map_numerical"]["witness"]["resolution"]
+            lines.append(f"numerically (floats, not a proof): the characteristic net sampled on {rings} rings is "
+                         f"regular and winds once at n = {_ranges([e['n'] for e in sampled])}")
     return f"{name}:\n  " + "\n  ".join(lines)
 
 
@@ -131,6 +164,8 @@ def cmd_vertex(args) -> None:
     from .common import _emit, _print, check_figure
 
     valences = parse_valences(args.valence)
+    if args.tune:
+        return _cmd_tune(args, valences)
     if args.figure:
         check_figure(args.figure, "--figure")
     base = _rules(args, None)
@@ -152,7 +187,8 @@ def cmd_vertex(args) -> None:
     doc = {"scheme": name, "rules": base.source, "ring": base.ring, "matrix_size": base.size,
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
-                      "(checked for quad rules on the 2-ring); otherwise the verdict is inconclusive"}
+                      "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
+                      "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
     if args.figure:
         from ..report.vertex_plots import plot_vertex_spectrum
 
@@ -160,6 +196,62 @@ def cmd_vertex(args) -> None:
     if args.json:
         _emit(args, doc, "")
     else:
-        _print(_summary(name, closed, entries))
+        _print(_summary(name, closed, entries, base.lattice))
         if args.figure:
             _print(f"figure: {args.figure}")
+
+
+def _cmd_tune(args, valences: list[int]) -> None:
+    """``--tune NAME``: the values of a free centre weight for which the eigen-conditions hold, per valence."""
+    import re
+
+    from ..vertex.tuning import tune_centre
+    from .common import _emit, _print
+
+    if args.scheme or not (args.lattice and args.centre):
+        raise AnalysisError('--tune works on user rules: give --lattice and --centre with the free weight, '
+                            'e.g. --lattice triangle --centre b --tune b')
+    if args.edge or args.figure or args.tension:
+        raise AnalysisError("--tune takes --lattice, --centre, --ring and --valence only")
+    if not re.fullmatch(r"[A-Za-z][A-Za-z0-9_]{0,15}", args.tune) or args.tune in ("n", "c", "j"):
+        raise AnalysisError(f"--tune takes a name (letters, digits, _; not n, c or j), not {args.tune[:20]!r}")
+    ring = int(args.ring) if args.ring else 2
+    out = []
+    for n in valences:
+        r = tune_centre(args.lattice, args.centre, args.tune, n, ring=ring)
+        out.append(_tune_json(r))
+        if not args.json:
+            _print(_tune_line(out[-1], args.tune))
+    doc = {"parameter": args.tune, "lattice": args.lattice, "centre": args.centre, "ring": ring, "valences": out,
+           "note": "the eigen-conditions only (not C^1): open intervals decided at a rational sample, no critical "
+                   "value inside; endpoints decided only when rational"}
+    if args.json:
+        _emit(args, doc, "")
+
+
+def _tune_json(r: dict) -> dict:
+    def show(v):
+        return v if isinstance(v, str) else str(v)
+
+    return {"n": r["n"], "status": r["status"], "reason": r.get("reason", ""),
+            "lambda_ball": r.get("lambda_ball"),
+            "factors": [f.replace(f"free_{r.get('parameter')}", str(r.get("parameter"))) for f in r.get("factors", [])],
+            "critical": [{"value": show(p["value"]), "holds": p["holds"]} for p in r.get("critical", [])],
+            "intervals": [{"lower": show(i["lower"]), "upper": show(i["upper"]), "holds": i["holds"],
+                           "sample": str(i["sample"]), "status": i["status"], "reason": i["reason"]}
+                          for i in r["intervals"]]}
+
+
+def _tune_line(e: dict, name: str) -> str:
+    if e["status"] != "certified" and not e["intervals"]:
+        return f"n={e['n']:<3d} not decided: {e['reason']} [inconclusive]"
+    good = [f"({i['lower']}, {i['upper']})" for i in e["intervals"] if i["holds"]]
+    points = [p for p in e["critical"] if p["holds"] is not None]
+    extra = [f"{name} = {p['value']}" for p in points if p["holds"]]
+    where = " U ".join(good + extra) if (good or extra) else "no value"
+    ends = ""
+    if points:
+        ends = "; at " + ", ".join(f"{name} = {p['value']}: {'holds' if p['holds'] else 'fails'}" for p in points)
+    undecided = [i for i in e["intervals"] if i["holds"] is None]
+    tail = f"; {len(undecided)} interval(s) undecided" if undecided else ""
+    return f"n={e['n']:<3d} eigen-conditions hold for {name} in {where}{ends}{tail} [{e['status']}]"

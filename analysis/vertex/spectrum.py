@@ -218,7 +218,8 @@ def _ball_has_rational(ball, q: sp.Rational) -> bool:
 
 
 def _exact_root(F: sp.Poly, ball, n: int, k: int, siblings: list, prec: int = 128):
-    """The root of F(lam, cos(2 pi k/n)) in ``ball`` as a radical expression when deg F <= 2, or None.
+    """The root of F(lam, cos(2 pi k/n)) in ``ball`` as a radical expression when deg F <= 2 (or when the
+    cosines are rational and the root is one of a factor of degree <= 2 over Q), or None.
 
     ``siblings`` are the isolating balls of all roots of F in block k (one root in each). A rational
     root is accepted only if ``ball`` contains it exactly. Any other root expression is evaluated in Arb
@@ -228,11 +229,15 @@ def _exact_root(F: sp.Poly, ball, n: int, k: int, siblings: list, prec: int = 12
     from flint import acb
 
 
-    if F.degree(lam) > 2:
-        return None
     ck = sp.cos(2 * sp.pi * k / n)
-    expr = F.as_expr().subs({c: ck, C1: sp.cos(2 * sp.pi / n)})
-    for r in sp.roots(sp.Poly(expr, lam), multiple=True):
+    P = sp.Poly(F.as_expr().subs({c: ck, C1: sp.cos(2 * sp.pi / n)}), lam)
+    if F.degree(lam) <= 2:
+        candidates = sp.roots(P, multiple=True)
+    elif all(co.is_Rational for co in P.all_coeffs()):       # rational cosines: factors of degree <= 2 over Q
+        candidates = [r for f, _ in sp.factor_list(P)[1] if f.degree() <= 2 for r in sp.roots(f, multiple=True)]
+    else:
+        return None
+    for r in candidates:
         if r.is_Rational:
             if _ball_has_rational(ball, r):
                 return r
@@ -282,9 +287,10 @@ def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n
     return True if meets == [mu] else None
 
 
-def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis:
+def analyse(rules: LocalRules, n: int, *, max_prec: int = 512, curvature: bool = True) -> VertexAnalysis:
     """The certified eigen-structure at valence n (see the module docstring), at the first precision of
-    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided."""
+    :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided (``curvature=False``: the
+    eigen-conditions only, the curvature left undecided)."""
     eig, res = None, None
     for prec in PRECISIONS:
         if prec > max_prec:
@@ -292,8 +298,9 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
         eig = spectrum(rules, n, prec)
         if eig is None:
             continue
-        res = _check(rules, n, eig, prec)
-        if res.reif_status != "inconclusive" and (res.curvature_status != "inconclusive" or res.curvature_final):
+        res = _check(rules, n, eig, prec, curvature)
+        if res.reif_status != "inconclusive" and (not curvature or res.curvature_status != "inconclusive"
+                                                  or res.curvature_final):
             return res
     if res is None:
         a = VertexAnalysis(n, rules.name, [], None, None, None, prec=max_prec)
@@ -302,7 +309,7 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512) -> VertexAnalysis
     return res
 
 
-def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> VertexAnalysis:
+def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int, curvature: bool = True) -> VertexAnalysis:
     from flint import arb
 
     a = VertexAnalysis(n, rules.name, eig, None, None, None, prec=prec)
@@ -346,6 +353,10 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
         elif (tie := _tie_with_lambda(a, top, others, n)) is not None:
             a.reif_ok, a.reif_status = False, "certified"
             a.reif_reason = tie
+        elif top.mult > 1:
+            a.reif_ok, a.reif_status = False, "certified"
+            a.reif_reason = (f"lambda is a root of multiplicity {top.mult} of block 1 (exact), so its multiplicity "
+                             f"is {2 * top.mult} (blocks 1 and n - 1), not 2")
         elif top.real is True and top.ball.real < 0:
             a.reif_ok, a.reif_status = False, "certified"
             a.reif_reason = "the subdominant eigenvalue is negative"
@@ -355,7 +366,8 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int) -> Verte
         else:
             a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
     a.lam_exact = _exact_root(top.factor, top.ball, n, 1, _siblings(eig, top))
-    _curvature(rules, a, others, n)
+    if curvature:
+        _curvature(rules, a, others, n)
     return a
 
 
@@ -386,7 +398,7 @@ def _certainly_nonreal(ball) -> bool:
 
 def _fmt(ball) -> str:
     x = complex(ball.mid())
-    return f"{x.real:.6g}" if abs(x.imag) < 1e-300 else f"{x.real:.6g}{x.imag:+.6g}i"
+    return f"{x.real:.6g}" if ball.imag.contains(0) else f"{x.real:.6g}{x.imag:+.6g}i"
 
 
 def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n: int) -> None:
@@ -412,7 +424,7 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
         a.mu = max(big, key=lambda e: e.modulus.lower())
         a.mu_vs_lam2 = ">"
         if not _ring_evaluated(rules):
-            _inconclusive(a, f"mu > lambda^2, but {RING_NOT_EVALUATED}", final=True)
+            _inconclusive(a, f"mu > lambda^2, but {_ring_not_evaluated(rules)}", final=True)
             return
         for e in sorted(big, key=lambda e: -float(e.modulus.lower())):
             vecs = _arb_eigenvectors(rules, n, e)
@@ -438,7 +450,7 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
         return
     a.mu, a.mu_vs_lam2 = tied[0], "="
     if not _ring_evaluated(rules):
-        _inconclusive(a, f"mu = lambda^2, but {RING_NOT_EVALUATED}", final=True)
+        _inconclusive(a, f"mu = lambda^2, but {_ring_not_evaluated(rules)}", final=True)
         return
     lam_c1 = _lambda_in_c1(top, a.lam_exact)
     groups: dict = {}
@@ -471,8 +483,15 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
     a.curvature, a.curvature_status = "bounded", "certified"
 
 
-RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for quad and triangle rules on the "
-                      "2-ring (give --ring 2)")
+RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for Loop- and Catmull-Clark-type rules "
+                      "(box-spline patches) on the 2-ring (--ring 2)")
+
+
+def _ring_not_evaluated(rules: LocalRules) -> str:
+    """Why eigenfunctions on the ring are not evaluated for these rules."""
+    if rules.lattice == "sqrt3":
+        return "eigenfunctions on the ring are not evaluated for sqrt(3) (no patch form)"
+    return RING_NOT_EVALUATED
 
 
 def _ring_evaluated(rules: LocalRules) -> bool:
@@ -512,7 +531,7 @@ def _nonzero_on_ring(rules: LocalRules, n: int, e: Eigenvalue, vectors: list, pr
     from .charmap import segment_ordinates
 
     if not _ring_evaluated(rules):
-        return False, RING_NOT_EVALUATED
+        return False, _ring_not_evaluated(rules)
     if not vectors:
         return False, f"no eigenvector of block {e.k} could be enclosed"
     old = ctx.prec

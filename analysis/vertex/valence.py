@@ -37,7 +37,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
+from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
 from .rules import C1, LocalRules, n_sym
 from .spectrum import VertexAnalysis, analyse, arb_value, exact_rational
@@ -51,13 +51,22 @@ CURVATURE_TEXT = {
     "unbounded": "curvature unbounded for generic data (mu > lambda^2)",
     "inconclusive": "curvature behaviour not decided",
     "not applicable": "the regular part is only C^1 (biquadratic): the curvature criterion needs a C^2 regular part",
+    "not applicable (butterfly)": "the regular butterfly scheme is only C^1 (Dyn-Gregory-Levin 1990): the curvature "
+                                  "criterion needs a C^2 regular part",
+}
+
+#: why the characteristic map is not checked, by lattice (short, per valence; the long form in the docs)
+NO_CHARACTERISTIC_MAP = {
+    "triangle, interpolating": "characteristic map not certified (the butterfly's regular basis functions are not "
+                               "piecewise polynomial: no Bernstein-form Jacobian certificate)",
+    "sqrt3": "characteristic map not checked (no patch form of the regular sqrt(3) limit functions here)",
 }
 
 
 def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
     """The roots of block 1's characteristic polynomial with n symbolic, by factors of degree <= 2;
     ``lambda`` is the one that gives the largest value at n = 7 (checked per valence by :func:`valence_entry`)."""
-    N0 = max(special_frequencies(rules) | {0}) + 2
+    N0 = max(max(special_frequencies(rules) | {0}) + 2, rules.generic_from)
     P = block_charpoly(fourier_block(rules, 1, None))
     P = sp.expand(P.subs(C1, c))               # in block 1, c = C1 = cos(2 pi/n)
     gens = [g for g in (lam, c, n_sym) if P.has(g)]
@@ -80,7 +89,7 @@ def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
             "factors": [str(g.as_expr()) for g, _ in fl if g.degree(lam) > 0]}
 
 
-def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str]:
+def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = "") -> tuple[str, str]:
     """The C^1 verdict: certified only with the eigen-conditions *and* a certified regular, injective
     characteristic map, and then for generic initial data (Reif 1995: a sufficient condition). A regular
     map that is certified not injective makes Reif's sufficient condition fail; that is reported
@@ -95,7 +104,8 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None) -> tuple[str, str
         return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
                              f"{charmap['precision_bits']} bits"
     if a.reif_ok:
-        return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not checked"
+        why = NO_CHARACTERISTIC_MAP.get(lattice, "characteristic map not checked")
+        return INCONCLUSIVE, f"inconclusive: eigen-conditions hold, {why}"
     if a.reif_status == CERTIFIED:
         return INCONCLUSIVE, f"inconclusive: an eigen-condition fails ({a.reif_reason}); the standard C^1 test does not apply"
     return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
@@ -142,9 +152,10 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
                            provenance=prov)
     out["reif"] = Result(value=a.reif_ok, status=a.reif_status,
                          witness={"checks": dict(a.checks), "reason": a.reif_reason}, provenance=prov)
-    if rules.lattice == "dual quad":
+    if rules.lattice in ("dual quad", "triangle, interpolating"):
+        text = CURVATURE_TEXT["not applicable" if rules.lattice == "dual quad" else "not applicable (butterfly)"]
         out["curvature"] = Result(value="not applicable", status=INCONCLUSIVE,
-                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT["not applicable"],
+                                  witness={"mu_vs_lambda2": a.mu_vs_lam2, "text": text,
                                            "notes": list(a.notes)}, provenance=prov)
     else:
         wit = {"mu_vs_lambda2": a.mu_vs_lam2, "text": CURVATURE_TEXT[a.curvature], "notes": list(a.notes)}
@@ -162,9 +173,22 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
         out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
                                            witness={k: v for k, v in cm.items() if k not in ("status", "method")},
                                            provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
-    status, verdict = c1_verdict(a, cm)
+    status, verdict = c1_verdict(a, cm, rules.lattice)
+    c1_witness = {"verdict": verdict}
+    if a.reif_ok and rules.lattice == "triangle, interpolating":
+        from .netmap import numerical_characteristic_map
+
+        nm = numerical_characteristic_map(rules, n, float(ball.mid()))
+        out["characteristic_map_numerical"] = Result(
+            value=nm["injective"], status=NUMERICAL,
+            witness={k: v for k, v in nm.items() if k not in ("status", "method")},
+            provenance={"method": nm["method"]})
+        c1_witness["numerical_evidence"] = (
+            f"the characteristic net sampled on {nm['resolution']} rings is "
+            + ("regular and winds once (floats): evidence, not a proof" if nm["injective"]
+               else f"{'regular' if nm['regular'] else 'not regular'}, winding number {nm['winding_number']} (floats)"))
     out["c1"] = Result(value={CERTIFIED: True, REFUTED: False}.get(status), status=status,
-                       witness={"verdict": verdict}, provenance=prov)
+                       witness=c1_witness, provenance=prov)
     return out
 
 
