@@ -660,10 +660,17 @@ def _dyadic_cover(x: RealAlgebraic, *, below: bool, bits: int = 48) -> Fraction:
 
 
 def _chi(S: _Strip) -> sp.Poly:
-    Pi = sp.eye(S.R[0].rows)
+    """``det(Pi(p) - I)`` of the strip's product, computed over the polynomial ring ``QQ[p]``."""
+    from sympy.polys.matrices import DomainMatrix
+
+    K = sp.QQ[S.p]
+    R = [DomainMatrix([[K.from_sympy(sp.expand(e)) for e in M.row(i)] for i in range(M.rows)], M.shape, K)
+         for M in S.R]
+    n = S.R[0].rows
+    Pi = DomainMatrix.eye(n, K)
     for i in S.word:
-        Pi = S.R[i] * Pi
-    return sp.Poly(sp.expand((Pi - sp.eye(Pi.rows)).det(method="berkowitz")), S.p)
+        Pi = R[i] * Pi
+    return sp.Poly(K.to_sympy((Pi - DomainMatrix.eye(n, K)).det()), S.p)
 
 
 def _below_one_exact(S, chi, u, w, A, B, lo_open, hi_open, va, la) -> bool:
