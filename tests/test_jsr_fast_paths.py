@@ -1,6 +1,7 @@
-"""The membership LPs of the invariant polytope (analysis.jsr._lp) and the polytope's cached data.
+"""Fast paths of the JSR engine give what the reference paths give: the membership LPs (analysis.jsr._lp), the
+polytope's cached data and the strongly connected components of the block-triangular reduction.
 
-The reference is ``scipy.optimize.linprog(method="highs")``: :func:`small_lp` must return the very
+For the LPs the reference is ``scipy.optimize.linprog(method="highs")``: :func:`small_lp` must return the very
 same numbers (it passes the same model to the same HiGHS), so that polytopes and certificates do
 not move; the warm-started model (another HiGHS build) must reach the same optimal value.
 """
@@ -92,3 +93,21 @@ def test_member_basis_as_recomputed_from_scratch():
         if fresh._basis is not None:
             assert np.array_equal(mem._basis[0], fresh._basis[0])
             assert np.array_equal(mem._basis[1], fresh._basis[1])
+
+
+def test_strong_components_in_the_order_of_scipy():
+    """The block-triangular reduction lists its blocks in the order of SciPy's labels (the budget
+    is split in that order), now without importing scipy.sparse."""
+    from scipy.sparse import csr_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    from analysis.jsr import strong_components
+
+    rng = np.random.default_rng(0)
+    for t in range(300):
+        n = int(rng.integers(1, 16))
+        adj = rng.random((n, n)) < (0.04, 0.1, 0.2, 0.4)[t % 4]
+        np.fill_diagonal(adj, False)
+        nc, labels = connected_components(csr_matrix(adj.astype(int)), directed=True, connection="strong")
+        ref = [sorted(np.nonzero(labels == c)[0].tolist()) for c in range(nc)]
+        assert strong_components([[b for b in reversed(range(n)) if adj[a, b]] for a in range(n)]) == ref
