@@ -101,7 +101,7 @@ def test_strong_components_in_the_order_of_scipy():
     from scipy.sparse import csr_matrix
     from scipy.sparse.csgraph import connected_components
 
-    from analysis.jsr import strong_components
+    from analysis.jsr._subspace import strong_components
 
     rng = np.random.default_rng(0)
     for t in range(300):

@@ -105,7 +105,7 @@ from ._polytope import build_polytope, certify_polytope, leading_is_real
 from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
-from ._subspace import invariant_subspace, split_family
+from ._subspace import invariant_subspace, split_family, strong_components
 from ._search import brute_force_bounds, canonical_word, smp_search
 from ._tree import tree_bounds
 from ._work import Work
@@ -144,63 +144,6 @@ def _blocks(F: Family) -> list[list[int]]:
     succ = [[b for b in reversed(range(n))
              if a != b and any(not F.is_zero_entry(i, a, b) for i in range(F.k))] for a in range(n)]
     return strong_components(succ)
-
-
-def strong_components(succ: Sequence[Sequence[int]]) -> list[list[int]]:
-    """The strongly connected components of the digraph ``a -> b`` for ``b`` in ``succ[a]``,
-    each sorted, in the order in which they complete in a depth-first search from the vertices
-    ``0, 1, ...`` that tries the successors in the order given (Tarjan 1972, iteratively). With
-    the successors in decreasing order this is the order of the labels of
-    ``scipy.sparse.csgraph.connected_components(..., connection="strong")`` (a test compares
-    them), without importing SciPy's sparse package (half a second of a command's start).
-
-    >>> strong_components([[2, 1], [], [], [2]])
-    [[2], [1], [0], [3]]
-    >>> strong_components([[1], [2, 0], [], [2]])
-    [[2], [0, 1], [3]]
-    """
-    n = len(succ)
-    index, low = [-1] * n, [0] * n
-    on_stack = [False] * n
-    stack: list[int] = []
-    comps: list[list[int]] = []
-    counter = 0
-    for root in range(n):
-        if index[root] >= 0:
-            continue
-        index[root] = low[root] = counter
-        counter += 1
-        stack.append(root)
-        on_stack[root] = True
-        path = [[root, 0]]                      # the DFS path: vertex, next successor to try
-        while path:
-            v, i = path[-1]
-            if i < len(succ[v]):
-                path[-1][1] += 1
-                w = succ[v][i]
-                if index[w] < 0:
-                    index[w] = low[w] = counter
-                    counter += 1
-                    stack.append(w)
-                    on_stack[w] = True
-                    path.append([w, 0])
-                elif on_stack[w]:
-                    low[v] = min(low[v], index[w])
-                continue
-            path.pop()
-            if path:
-                u = path[-1][0]
-                low[u] = min(low[u], low[v])
-            if low[v] == index[v]:
-                comp = []
-                while True:
-                    w = stack.pop()
-                    on_stack[w] = False
-                    comp.append(w)
-                    if w == v:
-                        break
-                comps.append(sorted(comp))
-    return comps
 
 
 def _commuting(F: Family) -> bool:
