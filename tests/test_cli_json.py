@@ -171,13 +171,15 @@ def test_text_output_has_no_solver_banner():
 
 
 def test_highs_banner_is_suppressed_at_the_source():
-    """HiGHS prints its banner when the first Highs object of a process is built; _WarmLP builds
+    """HiGHS prints its banner when the first Highs object of a process is built; WarmLP builds
     it with fd 1 pointed at /dev/null. The reference run shows the banner exists to be caught."""
     ref = subprocess.run([sys.executable, "-c", "import highspy; highspy.Highs()"], capture_output=True, text=True)
     if "HiGHS" not in ref.stdout:
         pytest.skip("this highspy prints no banner: nothing to suppress")
-    p = subprocess.run([sys.executable, "-c", "from analysis.jsr._polytope import _WarmLP\n"
-                        "a = _WarmLP.create(3); b = _WarmLP.create(2); print('done')"],
+    p = subprocess.run([sys.executable, "-c", "from analysis.jsr._lp import WarmLP, small_lp\n"
+                        "import numpy as np\n"
+                        "s = small_lp(np.eye(2), np.ones(2))\n"
+                        "a = WarmLP.create(3); b = WarmLP.create(2); print('done')"],
                        capture_output=True, text=True)
     assert p.returncode == 0, p.stderr
     assert p.stdout == "done\n" and "HiGHS" not in p.stderr

@@ -105,7 +105,7 @@ from ._polytope import build_polytope, certify_polytope, leading_is_real
 from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
-from ._subspace import invariant_subspace, split_family
+from ._subspace import invariant_subspace, split_family, strong_components
 from ._search import brute_force_bounds, canonical_word, smp_search
 from ._tree import tree_bounds
 from ._work import Work
@@ -140,18 +140,10 @@ def _single(F: Family, i: int) -> _Bounds:
 
 def _blocks(F: Family) -> list[list[int]]:
     """Strongly connected components of the union sparsity graph (exact zero tests)."""
-    from scipy.sparse import csr_matrix
-    from scipy.sparse.csgraph import connected_components
-
     n = F.n
-    adj = np.zeros((n, n), dtype=int)
-    for i in range(F.k):
-        for a in range(n):
-            for b in range(n):
-                if a != b and not F.is_zero_entry(i, a, b):
-                    adj[a, b] = 1
-    nc, labels = connected_components(csr_matrix(adj), directed=True, connection="strong")
-    return [sorted(np.nonzero(labels == c)[0].tolist()) for c in range(nc)]
+    succ = [[b for b in reversed(range(n))
+             if a != b and any(not F.is_zero_entry(i, a, b) for i in range(F.k))] for a in range(n)]
+    return strong_components(succ)
 
 
 def _commuting(F: Family) -> bool:

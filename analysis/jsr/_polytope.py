@@ -8,7 +8,7 @@ the interior fillers, :mod:`analysis.jsr._balance`; for a complex leading eigenv
 imaginary parts), the vertex set ``V`` starts with the roots and grows as in Guglielmi–Protasov (2013): every image ``B_i v`` of a new vertex ``v`` is
 tested for membership in the absolutely convex hull ``absconv(V)`` by the linear program
 
-    min ||lambda||_1  subject to  V lambda = x          (HiGHS, warm-started: :class:`_WarmLP`),
+    min ||lambda||_1  subject to  V lambda = x          (HiGHS: :mod:`analysis.jsr._lp`),
 
 whose value is the Minkowski norm ``||x||_P``. Images with ``||x||_P <= 1 + tol`` are inside and
 their coefficient vector is kept (the certificate needs it); the others become new vertices. The
@@ -45,8 +45,6 @@ Math. Softw. 46(3) (2020) 29.
 
 from __future__ import annotations
 
-import threading
-import warnings
 from dataclasses import dataclass, field
 from fractions import Fraction
 from typing import Sequence
@@ -55,6 +53,7 @@ import numpy as np
 from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
+from ._lp import WarmLP, small_lp
 from ._work import Work
 
 #: work units of the float polytope (calibrated so that a unit is about a millisecond of CPU on the
@@ -109,108 +108,6 @@ class PolytopeState:
         return np.array(self.V).T if self.V else np.zeros((self.n, 0))
 
 
-#: HiGHS prints its banner ("Running HiGHS ...", "Includes third-party software ...") to the C
-#: stdout when the first ``Highs`` object of a process is constructed — before any option such
-#: as ``output_flag`` can be set; later constructions are silent.
-_HIGHS_BANNER_DONE = False
-_HIGHS_LOCK = threading.Lock()
-
-
-def _quiet_highs(highspy):
-    """A new ``highspy.Highs()``; the first one of the process is built with file descriptor 1
-    pointed at ``os.devnull`` so the banner reaches no one's stdout (``--json`` output stays JSON)."""
-    global _HIGHS_BANNER_DONE
-    with _HIGHS_LOCK:
-        if _HIGHS_BANNER_DONE:
-            return highspy.Highs()
-        import os
-        import sys
-
-        try:
-            sys.stdout.flush()
-        except (OSError, ValueError, AttributeError):
-            pass
-        try:
-            saved = os.dup(1)
-        except OSError:                       # no fd 1 at all: nothing to protect
-            saved = None
-        if saved is None:
-            h = highspy.Highs()
-        else:
-            devnull = os.open(os.devnull, os.O_WRONLY)
-            try:
-                os.dup2(devnull, 1)
-                h = highspy.Highs()
-                try:                          # HiGHS flushes its log lines; make sure of it
-                    import ctypes
-
-                    ctypes.CDLL(None).fflush(None)
-                except (OSError, AttributeError, TypeError):  # pragma: no cover
-                    pass
-            finally:
-                os.dup2(saved, 1)
-                os.close(saved)
-                os.close(devnull)
-        _HIGHS_BANNER_DONE = True
-        return h
-
-
-class _WarmLP:
-    """The membership LP ``min sum(l+ + l-) s.t. V (l+ - l-) = x, l+-, l- >= 0`` kept as one
-    persistent HiGHS model (the ``highspy`` package): new vertices are appended as column pairs,
-    a query only changes the row bounds to ``x``, and the dual simplex restarts from the previous
-    optimal basis (Mejstrik 2020 warm-starts the same way). Solving from scratch with
-    ``scipy.optimize.linprog`` each time is 5-10x slower on polytopes of 1000+ vertices. Only the
-    float phase uses it; the certificate re-checks every membership exactly."""
-
-    def __init__(self, h, n: int):
-        self.h, self.n, self.m = h, n, 0
-
-    @classmethod
-    def create(cls, n: int) -> "_WarmLP | None":
-        try:
-            import highspy
-        except ImportError:          # pragma: no cover - highspy is a dependency
-            return None
-        h = _quiet_highs(highspy)
-        for key, val in (("output_flag", False), ("presolve", "off"), ("solver", "simplex"),
-                         ("simplex_strategy", 1), ("threads", 1), ("primal_feasibility_tolerance", 1e-10),
-                         ("dual_feasibility_tolerance", 1e-10)):
-            h.setOptionValue(key, val)
-        empty_i, empty_v = np.array([], dtype=np.int32), np.array([], dtype=np.float64)
-        for _ in range(n):
-            h.addRow(0.0, 0.0, 0, empty_i, empty_v)
-        return cls(h, n)
-
-    def sync(self, V: list[np.ndarray]) -> None:
-        import highspy
-
-        for v in V[self.m:]:
-            idx = np.nonzero(v)[0].astype(np.int32)
-            vals = np.asarray(v[idx], dtype=np.float64)
-            self.h.addCol(1.0, 0.0, highspy.kHighsInf, len(idx), idx, vals)
-            self.h.addCol(1.0, 0.0, highspy.kHighsInf, len(idx), idx, -vals)
-        self.m = len(V)
-
-    def solve(self, x: np.ndarray):
-        """``(value, lambda, row duals)`` or ``None`` (infeasible: ``x`` not in the span)."""
-        import highspy
-
-        h = self.h
-        for i in range(self.n):
-            h.changeRowBounds(i, float(x[i]), float(x[i]))
-        h.run()
-        if h.getModelStatus() != highspy.HighsModelStatus.kOptimal:
-            return None
-        sol = h.getSolution()
-        col = np.asarray(sol.col_value, dtype=float)
-        if len(col) != 2 * self.m:
-            return None
-        lam = col[0::2] - col[1::2]
-        y = np.asarray(sol.row_dual, dtype=float) if sol.dual_valid else None
-        return float(np.sum(np.abs(lam))), lam, y
-
-
 class _Member:
     """Membership oracle for absconv(V) with cheap pre-tests (see module docstring)."""
 
@@ -218,30 +115,58 @@ class _Member:
         self.st = st
         self._basis: tuple[np.ndarray, np.ndarray] | None = None
         self._basis_m = -1
+        self._basis_idx: np.ndarray | None = None    # the vertex indices the basis was built from
         self._r2 = 0.0
+        self._r2_m = 0                    # vertices included in _r2
+        self._buf = np.empty((0, st.n))   # vertex rows (see matrix())
+        self._rows = 0
         self._Y = np.zeros((0, st.n))     # functionals y with |<y, v_j>| <= 1 for all vertices
         self.shortcuts = True             # False: always return a representation if one exists
-        self._warm = _WarmLP.create(st.n)  # persistent HiGHS model of the full LP (or None)
+        self._warm = WarmLP.create(st.n)  # persistent HiGHS model of the full LP (or None)
+
+    def matrix(self) -> np.ndarray:
+        """``st.matrix()`` (the vertices as columns), kept in a growing buffer: the same values and
+        the same memory layout (the transpose of a C-ordered vertices-by-coordinates block)."""
+        st = self.st
+        m = len(st.V)
+        if m > len(self._buf):
+            buf = np.empty((max(2 * len(self._buf), m, 16), st.n))
+            buf[: self._rows] = self._buf[: self._rows]
+            self._buf = buf
+        if m > self._rows:
+            self._buf[self._rows: m] = st.V[self._rows: m]
+            self._rows = m
+        return self._buf[:m].T
 
     def refresh(self) -> None:
+        """Update the pre-test data after vertices were appended to ``st.V``: the largest squared
+        vertex length, the separating functionals and the basis of vertices (a pivoted QR of the
+        vertex matrix picks it; its inverse is recomputed only when the pick changes)."""
         import scipy.linalg
 
         st = self.st
         m = len(st.V)
         st.work_units += m * st.n * st.n / VERTEX_ENTRIES_PER_UNIT
-        self._r2 = max((float(v @ v) for v in st.V), default=0.0)
+        for v in st.V[self._r2_m:]:
+            self._r2 = max(self._r2, float(v @ v))
+        self._r2_m = m
         if len(self._Y) and m:
             ok = np.abs(self._Y @ st.V[-1]) <= 1.0
             self._Y = self._Y[ok]
         if m >= st.n and m != self._basis_m:
-            Vm = st.matrix()
+            Vm = self.matrix()
             _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
             idx = np.sort(piv[: st.n])
-            Bm = Vm[:, idx]
-            if np.linalg.matrix_rank(Bm) == st.n and np.linalg.cond(Bm) < 1e12:
-                self._basis = (idx, np.linalg.inv(Bm))
-            else:
-                self._basis = None
+            if self._basis_idx is None or not np.array_equal(idx, self._basis_idx):
+                Bm = Vm[:, idx]
+                # one singular value decomposition for numpy's matrix_rank and cond tests
+                sv = np.linalg.svd(Bm, compute_uv=False)
+                rank = int(np.count_nonzero(sv > sv.max(initial=0.0) * (st.n * np.finfo(float).eps)))
+                if rank == st.n and sv[0] / sv[-1] < 1e12:
+                    self._basis = (idx, np.linalg.inv(Bm))
+                else:
+                    self._basis = None
+                self._basis_idx = idx
             self._basis_m = m
 
     def norm(self, x: np.ndarray) -> tuple[float, np.ndarray | None, np.ndarray | None]:
@@ -261,7 +186,7 @@ class _Member:
             s = float(np.sum(np.abs(lam)))
             if s <= 1.0:
                 return s, idx, lam
-        Vm = st.matrix()
+        Vm = self.matrix()
         m = Vm.shape[1]
         if m > 6 * st.n and self.shortcuts:
             # a small LP over the vertices best aligned with x: inside it means inside P
@@ -298,25 +223,19 @@ class _Member:
         return fun, supp, lam[supp]
 
     def _lp(self, Vm: np.ndarray, x: np.ndarray, keep_dual: bool = False):
-        from scipy.optimize import linprog
-
         m = Vm.shape[1]
         self.st.lp_calls += 1
         self.st.work_units += SMALL_LP_UNITS if m <= 6 * self.st.n else m * self.st.n / LP_ENTRIES_PER_UNIT
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            res = linprog(np.ones(2 * m), A_eq=np.hstack([Vm, -Vm]), b_eq=x, bounds=(0, None),
-                          method="highs")
-        if res.status != 0 or res.x is None:
+        out = small_lp(Vm, x)
+        if out is None:
             return None
-        if keep_dual and res.fun > 1.0:
-            y = np.asarray(res.eqlin.marginals, dtype=float)
+        fun, lam, y = out
+        if keep_dual and fun > 1.0:
             if y.shape == (self.st.n,) and np.all(np.isfinite(y)):
                 y = y / max(1.0, float(np.max(np.abs(y @ Vm))))
                 self._Y = np.vstack([self._Y, y[None, :]])[-200:]
-        lam = res.x[:m] - res.x[m:]
         supp = np.nonzero(np.abs(lam) > 1e-15 * max(1.0, float(np.max(np.abs(lam)))))[0]
-        return float(res.fun), supp, lam[supp]
+        return fun, supp, lam[supp]
 
     def _polish(self, Vm: np.ndarray, x: np.ndarray, supp: np.ndarray, lam0: np.ndarray):
         m = Vm.shape[1]

@@ -10,7 +10,8 @@ The invariant polytope algorithm needs an *irreducible* family: for a reducible 
 norm may not exist and the polytope need not close, so splitting is both a speed-up (smaller
 matrices) and a necessity (Mejstrik 2020 does the same, numerically; here it is exact).
 
-Coordinate subspaces are found from the sparsity pattern (``analysis.jsr._solve_blocks``). This
+Coordinate subspaces are found from the sparsity pattern (``analysis.jsr._solve_blocks``: the
+strongly connected components of the union of the patterns, :func:`strong_components`). This
 module finds the others, exactly over ``Q``: for start vectors ``v`` (the unit vectors, and
 kernel vectors of ``f(X)`` for the irreducible factors ``f`` of the characteristic polynomial of
 pseudo-random elements ``X`` of the matrix algebra, as in the meataxe) the smallest common
@@ -325,3 +326,60 @@ def split_family(mats: Sequence[fmpq_mat], W: fmpq_mat) -> tuple[list[fmpq_mat],
         top.append(fmpq_mat(d, d, [T[a, c] for a in range(d) for c in range(d)]))
         bottom.append(fmpq_mat(n - d, n - d, [T[a, c] for a in range(d, n) for c in range(d, n)]))
     return top, bottom
+
+
+def strong_components(succ: Sequence[Sequence[int]]) -> list[list[int]]:
+    """The strongly connected components of the digraph ``a -> b`` for ``b`` in ``succ[a]``,
+    each sorted, in the order in which they complete in a depth-first search from the vertices
+    ``0, 1, ...`` that tries the successors in the order given (Tarjan 1972, iteratively). With
+    the successors in decreasing order this is the order of the labels of
+    ``scipy.sparse.csgraph.connected_components(..., connection="strong")`` (a test compares
+    them), without importing SciPy's sparse package (half a second of a command's start).
+
+    >>> strong_components([[2, 1], [], [], [2]])
+    [[2], [1], [0], [3]]
+    >>> strong_components([[1], [2, 0], [], [2]])
+    [[2], [0, 1], [3]]
+    """
+    n = len(succ)
+    index, low = [-1] * n, [0] * n
+    on_stack = [False] * n
+    stack: list[int] = []
+    comps: list[list[int]] = []
+    counter = 0
+    for root in range(n):
+        if index[root] >= 0:
+            continue
+        index[root] = low[root] = counter
+        counter += 1
+        stack.append(root)
+        on_stack[root] = True
+        path = [[root, 0]]                      # the DFS path: vertex, next successor to try
+        while path:
+            v, i = path[-1]
+            if i < len(succ[v]):
+                path[-1][1] += 1
+                w = succ[v][i]
+                if index[w] < 0:
+                    index[w] = low[w] = counter
+                    counter += 1
+                    stack.append(w)
+                    on_stack[w] = True
+                    path.append([w, 0])
+                elif on_stack[w]:
+                    low[v] = min(low[v], index[w])
+                continue
+            path.pop()
+            if path:
+                u = path[-1][0]
+                low[u] = min(low[u], low[v])
+            if low[v] == index[v]:
+                comp = []
+                while True:
+                    w = stack.pop()
+                    on_stack[w] = False
+                    comp.append(w)
+                    if w == v:
+                        break
+                comps.append(sorted(comp))
+    return comps
