@@ -287,6 +287,13 @@ def _paper_cases():
         if field == "parameters":
             text = text.replace("start = 0", 'mask = ["w", "1-w"]\nstart = 0')
         out.append(pytest.param(text, id=f"scheme-{field}-{value[:12]}"))
+    for i, value in enumerate([f'{{ symbol = {json.dumps(INJECTIONS[1])} }}', '{ symbol = "z1**(10**9)" }',
+                               f'{{ mask = [[0, 0, {json.dumps(INJECTIONS[3])}]] }}', '{ mask = "0,0: 10**10**10" }',
+                               '{ symbol = "1+z1", dilation = [[1, 1], [1, 1]] }', '{ symbol = "1+z1", dilation = "x" }',
+                               '{ symbol = "1+w*z1" }\nparameters = { w = "(0, __import__(\'os\'))" }']):
+        text = (f'[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n[schemes.s]\nbivariate = {value}\n'
+                '[[claims]]\nid = "c1"\nstatement = "s"\nkind = "sum rules"\nfactors = 1\n')
+        out.append(pytest.param(text, id=f"scheme-bivariate-{i}"))
     return out
 
 
