@@ -49,6 +49,7 @@ def test_hat_family_c0_set(hat):
     assert r.status == INCONCLUSIVE                     # a strip next to the eigenvalue-type end stays open
     (b,) = r.witness["boundaries"]
     assert b["exact"] == sp.Rational(3, 4) and "T_0" in b["how"]
+    assert b["strip"]["closed"] is False and "not simple" in b["strip"]["reason"]     # a double eigenvalue 1
     assert sp.Rational(3, 4) in r.value["not_Cl"] and 1 in r.value["not_Cl"]
     (I,) = r.value["certified"]
     assert I.start == 0 and sp.Rational(5, 8) < I.end < sp.Rational(3, 4)

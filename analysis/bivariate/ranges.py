@@ -19,7 +19,11 @@ Three certified ingredients (for an isotropic ``M``, :mod:`analysis.bivariate.ho
   ``S_a(t*)`` is not ``C^l`` (checked by a certified point verdict when ``t*`` is rational).
 
 The boxes approach an end of eigenvalue type geometrically but never reach it (the JSR tends to
-``rho(M)^{-l}``): a strip next to such an end stays *inconclusive* and is reported with its width. The same
+``rho(M)^{-l}``). The strip left next to an exact end is then given to the parametric invariant polytope
+(:func:`analysis.jsr.parametric.close_family`, the one that closes such strips for curves; operators of dimension
+at most ``MAX_STRIP_DIMENSION``), which needs a single spectrum-maximising product with a simple leading
+eigenvalue at the end; the symmetric families of surface subdivision usually have several (the symmetric
+digits), and then the strip stays *inconclusive*, reported with its width and the reason. The same
 concepts as the univariate ``range`` (:func:`analysis.regularity.ranges.ck_parameter_set`: certified grid
 verdicts, exact eigenvalue crossings of the s.m.p., certified interior); the interior here is proven by the
 convex-hull JSR on boxes instead of the Dyn–Levin norm sets (which need a factorisation the bivariate symbol
@@ -51,10 +55,8 @@ M. Charina, V. Yu. Protasov, *Regularity of anisotropic refinable functions*, AC
 
 from __future__ import annotations
 
-import math
-from fractions import Fraction
 from math import comb
-from typing import Any
+from typing import Any, NamedTuple
 
 import sympy as sp
 from flint import fmpq, fmpq_mat, fmpq_poly
@@ -73,6 +75,9 @@ __all__ = ["ParametricFamily", "parametric_family", "ck_set", "MAX_GRID", "MAX_D
 MAX_GRID = 64
 #: the largest degree of a mask coefficient in the parameter
 MAX_DEGREE = 6
+#: the largest restricted dimension for which the strip next to an exact end is tried with the parametric
+#: invariant polytope (:func:`analysis.jsr.parametric.close_family`)
+MAX_STRIP_DIMENSION = 24
 
 
 def _q(x) -> fmpq:
@@ -166,6 +171,26 @@ class ParametricFamily:
                 out.append(acc)
         return out
 
+    def strip(self, theta):
+        """The family ``T_eps(t)|V_k / theta`` as a :class:`analysis.jsr.parametric.ParametricStrip` (JSR < 1 there
+        is C^l when ``theta = rho(M)^-l``)."""
+        from ..jsr.parametric import ParametricStrip
+
+        p, th = self.param, sp.Rational(theta)
+        R = []
+        for cs in self.C:
+            n = cs[0].nrows()
+            R.append(sp.Matrix(n, n, lambda i, j: sp.expand(sum(
+                (sp.Rational(int(c[i, j].p), int(c[i, j].q)) * p ** d for d, c in enumerate(cs)), sp.Integer(0)) / th)))
+
+        def det_minus_one(word):
+            f = self.crossing_polynomial(word, _q(th) ** len(word))
+            scale = _q(th) ** (len(word) * self.dim)        # det(Pi/theta^L - I) = det(Pi - theta^L I)/theta^(L d)
+            return sp.Poly([sp.Rational(int(x.p), int(x.q)) / sp.Rational(int(scale.p), int(scale.q))
+                            for x in reversed(f.coeffs())], p)
+
+        return ParametricStrip(R, p, det_minus_one=det_minus_one)
+
     def crossing_polynomial(self, word, s: fmpq) -> fmpq_poly:
         """``det(Pi_word(t) - s I)`` as an exact polynomial in ``t`` (``word`` in the order of application)."""
         deg = len(word) * self.dim * (len(self.C[0]) - 1)
@@ -240,10 +265,10 @@ def _crossings(F, word, theta, lo, hi, work: Work):
 
 def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: int = 8,
            budget: int = 400_000, point_budget: int = 20_000, box_budget: int = 20_000, approach: int = 6,
-           tol=sp.Rational(1, 10 ** 6)) -> Result:
+           tol=sp.Rational(1, 10 ** 6), strip_budget: int = 30_000) -> Result:
     """Where is the one-parameter bivariate family ``general`` ``C^l`` on ``within``?  (module docstring)
 
-    ``value``: ``{"certified": [sympy Interval, ...]`` (proven C^l), ``"not_Cl": [exact points certified not
+    ``value``: ``{"certified": [Part, ...]`` (proven C^l: intervals and points with exact ends), ``"not_Cl": [exact points certified not
     C^l], "gaps": [(lo, hi), ...]}`` (undecided between a certified C^l part and a certified counterexample).
     ``witness``: the grid verdicts (alpha enclosures), the boundaries with how they were found, the boxes with
     their JSR upper bounds, and ``between_counterexamples``: the grid cells with a counterexample at both ends
@@ -311,11 +336,11 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
         else:
             good, bad = (s0, s1) if s0["C^l"] else (s1, s0)
             boundaries.append(_boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol,
-                                        try_box, certified, not_cl, gaps))
+                                        try_box, certified, not_cl, gaps, strip_budget))
     for s in samples:
         if s["C^l"]:
             certified.append((s["t"], s["t"]))
-    cert_set = sp.Union(*[sp.Interval(u, v) for u, v in certified]) if certified else sp.EmptySet
+    cert_set = sp.Union(*[sp.Interval(*c) for c in certified]) if certified else sp.EmptySet
     not_pts = sorted({x for x in not_cl}, key=float)
     gap_list = _merge([g for g in gaps])
     undecided = [s["t"] for s in samples if s["C^l"] is None]
@@ -336,16 +361,25 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
                   provenance=prov)
 
 
-def _intervals(S) -> list:
+class Part(NamedTuple):
+    """A part of a certified set: an interval with exact ends (a point when ``start == end``)."""
+
+    start: sp.Expr
+    end: sp.Expr
+    left_open: bool = False
+    right_open: bool = False
+
+
+def _intervals(S) -> list[Part]:
     if S == sp.EmptySet:
         return []
     parts = S.args if isinstance(S, sp.Union) else (S,)
     out = []
     for x in parts:
         if isinstance(x, sp.FiniteSet):
-            out += [sp.Interval(y, y) for y in x]
+            out += [Part(y, y) for y in x]
         else:
-            out.append(x)
+            out.append(Part(x.start, x.end, bool(x.left_open), bool(x.right_open)))
     return sorted(out, key=lambda I: float(I.start))
 
 
@@ -360,7 +394,7 @@ def _merge(gaps):
 
 
 def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol, try_box, certified, not_cl,
-              gaps) -> dict:
+              gaps, strip_budget=0) -> dict:
     """Locate the end of C^l between a certified C^l grid point and a certified counterexample, and cover
     the part next to it by boxes; what stays between the last box and the end is a gap."""
     g, b = good["t"], bad["t"]
@@ -406,6 +440,24 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
         last = x = nxt
     rec["certified_Cl_to"] = last
     lo_gap, hi_gap = (last, end.expr) if side > 0 else (end.expr, last)
+    if "exact" in rec and strip_budget and F.dim > MAX_STRIP_DIMENSION:
+        rec["strip"] = {"closed": False, "reason": f"not attempted: the operators have dimension {F.dim} > "
+                                                   f"{MAX_STRIP_DIMENSION} (the exact matrix polynomials are too large)"}
+    elif "exact" in rec and strip_budget and not work.exhausted:
+        from ..jsr.parametric import close_family
+
+        try:
+            c = close_family(F.strip(theta), lo_gap, hi_gap, lo_open=side < 0, hi_open=side > 0,
+                             budget=min(strip_budget, max(1, int(work.left))))
+        except (AnalysisError, ArithmeticError, ValueError) as exc:
+            c = {"closed": False, "reason": f"{type(exc).__name__}: {exc}", "work": 0}
+        work.charge(c.get("work", 0))
+        rec["strip"] = {"closed": c["closed"], "reason": c.get("reason", ""), "work": c.get("work", 0),
+                        **({"product": "".join(map(str, c["word"])), "pieces": len(c["pieces"])} if c["closed"] else {})}
+        if c["closed"]:
+            rec["certified_Cl_to"] = rec["exact"]
+            certified.append((lo_gap, hi_gap, side < 0, side > 0))
+            return {**rec, "status": CERTIFIED}
     gaps.append((lo_gap, hi_gap))
     rec["status"] = CERTIFIED if "exact" in rec else INCONCLUSIVE
     return rec

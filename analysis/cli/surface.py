@@ -208,15 +208,19 @@ def _range(args) -> None:
             f"alpha in [{float(a[0]):.10g}, {float(a[1]):.10g}]" if a[1] is not None else f"alpha >= {float(a[0]):.10g}")
         verdict = {True: f"C^{l}", False: f"not C^{l}", None: "undecided"}[s["C^l"]]
         lines.append(f"  {p} = {fmt(s['t'])}: {enc} ({s['status']}); {verdict}")
-    cert = " u ".join(f"[{fmt(I.start)}, {fmt(I.end)}]" if I.start != I.end else f"{{{fmt(I.start)}}}"
-                      for I in v["certified"]) or "nowhere"
+    cert = " u ".join(f"{'(' if I.left_open else '['}{fmt(I.start)}, {fmt(I.end)}{')' if I.right_open else ']'}"
+                      if I.start != I.end else f"{{{fmt(I.start)}}}" for I in v["certified"]) or "nowhere"
     lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes): {p} in {cert}")
     lines.append(f"not C^{l} (certified counterexamples): {p} = " + (", ".join(
         f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) or "none"))
     for b in r.witness["boundaries"]:
         if "exact" in b:
-            lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); "
-                         f"C^{l} certified up to {fmt(b['certified_Cl_to'])}")
+            st = b.get("strip") or {}
+            upto = (f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
+                    f"s.m.p. T_{st['product']}, {st['pieces']} sub-intervals)" if st.get("closed") else
+                    f"C^{l} certified up to {fmt(b['certified_Cl_to'])}"
+                    + (f"; the strip next to the end not closed: {st['reason']}" if st else ""))
+            lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); {upto}")
         else:
             lines.append(f"  end between {fmt(b['certified_Cl_to'])} (C^{l}) and {fmt(b['certified_not_Cl_at'])} "
                          f"(not C^{l}): no exact crossing found")
@@ -227,7 +231,8 @@ def _range(args) -> None:
         lines.append("between counterexamples (sampled, not examined): " + ", ".join(
             f"({fmt(a)}, {fmt(b)})" for a, b in r.witness["between_counterexamples"]))
     data = {"scheme": label, "parameter": p, "l": l, "within": [fmt(w) for w in within], "status": r.status,
-            "certified": [[fmt(I.start), fmt(I.end)] for I in v["certified"]],
+            "certified": [{"from": fmt(I.start), "to": fmt(I.end), "from_open": bool(I.left_open),
+                           "to_open": bool(I.right_open)} for I in v["certified"]],
             "not_Cl": [fmt(x) for x in v["not_Cl"]], "gaps": [[fmt(a), fmt(b)] for a, b in v["gaps"]],
             "between_counterexamples": [[fmt(a), fmt(b)] for a, b in r.witness["between_counterexamples"]],
             "samples": [{"t": fmt(s["t"]), "Cl": s["C^l"], "status": s["status"],
