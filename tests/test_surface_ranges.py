@@ -111,3 +111,12 @@ def test_cli_file(tmp_path, capsys):
     doc = json.loads(capsys.readouterr().out)
     assert doc["sum_rules"] == 2 and doc["holder"]["value"] == "1"
     assert main(["surface", "--file", str(f), "--dilation", "quincunx"]) == 2
+
+
+def test_cli_c_set_of_a_closed_run(capsys):
+    """Both grid points C^0 and one box between them: the C^0 set [0, 1/2] is certified, nothing undecided."""
+    assert main(["surface", "--symbol", HAT, "--C", "0", "--within=0,1/2", "--grid-cells", "1", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["status"] == "certified" and doc["gaps"] == [] and doc["not_Cl"] == []
+    assert doc["certified"] == [{"from": "0", "to": "1/2", "from_open": False, "to_open": False}]
+    assert [s["Cl"] for s in doc["samples"]] == [True, True]

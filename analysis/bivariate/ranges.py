@@ -415,8 +415,9 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
     rec: dict[str, Any] = {"between": (min(g, b), max(g, b)), "certified_Cl_at": g, "certified_not_Cl_at": b}
     end = RealAlgebraic.rational(b)
     for r, sgn, w in cands:
-        special = r.is_rational and r.expr in F.special
-        if r.is_rational and (special or True):
+        # an eigenvalue +-theta^L of Pi(r) gives JSR >= theta at r: not C^l, exactly -- except at a value where a
+        # coefficient vanishes (the generic support is too large there): decided by the point verdict
+        if r.is_rational and r.expr in F.special:
             v = _verdict(general, p, r.expr, l, point_budget)
             work.charge(v["work"])
             if v["C^l"] is not False:
