@@ -211,8 +211,8 @@ def _range(args) -> None:
     cert = " u ".join(f"{'(' if I.left_open else '['}{fmt(I.start)}, {fmt(I.end)}{')' if I.right_open else ']'}"
                       if I.start != I.end else f"{{{fmt(I.start)}}}" for I in v["certified"]) or "nowhere"
     lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes): {p} in {cert}")
-    lines.append(f"not C^{l} (certified counterexamples): {p} = " + (", ".join(
-        f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) or "none"))
+    lines.append(f"not C^{l} (certified counterexamples): " + (f"{p} = " + ", ".join(
+        f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) if v["not_Cl"] else "none"))
     for b in r.witness["boundaries"]:
         if "exact" in b:
             st = b.get("strip") or {}
