@@ -218,7 +218,8 @@ def _range(args) -> None:
             st = b.get("strip") or {}
             upto = (f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
                     f"s.m.p. T_{st['product']}, {st['pieces']} sub-intervals)" if st.get("closed") else
-                    f"C^{l} certified up to {fmt(b['certified_Cl_to'])}"
+                    (f"C^{l} certified up to {fmt(b['certified_Cl_to'])}" if b["certified_Cl_to"] != b["certified_Cl_at"]
+                     else f"no box toward it certified: the nearest certified C^{l} point is {fmt(b['certified_Cl_at'])}")
                     + (f"; the strip next to the end not closed: {st['reason']}" if st else ""))
             lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); {upto}")
         else:
