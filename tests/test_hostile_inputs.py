@@ -108,7 +108,35 @@ TARGETS = [
     ["derive", "--support", "{}", "--sum-rules", "2"],
     ["vertex", "--lattice", "triangle", "--centre", "{}", "--valence", "4", "--ring", "1"],
     ["vertex", "--scheme", "loop", "--valence", "{}", "--ring", "1"],
+    ["surface", "--scheme", "butterfly", "--C", "1", "--within", "{},1/8"],
+    ["surface", "--scheme", "butterfly", "--C", "{}", "--within", "0,1/8"],
+    ["surface", "--scheme", "butterfly", "--C", "1", "--within", "0,1/8", "--grid-cells", "{}"],
 ]
+
+
+def _mask_file_cases():
+    """Hostile values in every field of a bivariate mask file (TOML and JSON)."""
+    out = []
+    for i, v in enumerate(INJECTIONS + HUGE[:6] + MALFORMED[:6]):
+        out.append(pytest.param("m.json", json.dumps({"symbol": v}), id=f"json-symbol-{i}"))
+        out.append(pytest.param("m.json", json.dumps({"mask": [[0, 0, v], [1, 0, "1"]]}), id=f"json-entry-{i}"))
+        out.append(pytest.param("m.toml", f"mask = {json.dumps('0,0:1; 1,0:' + v)}\n", id=f"toml-list-{i}"))
+    for i, text in enumerate(['dilation = [[1, 1], [1, "x"]]\nsymbol = "1+z1"', 'symbol = "1+z1"\nmask = "0,0:1"',
+                              'symbol = "1+z1"\nrun = "x"', 'mask = [[0, 0]]', 'mask = [[true, 0, "1"]]',
+                              'mask = [[0, 0, 1.5]]', 'mask = []', 'symbol = 3', '[[[', 'dilation = "hexagonal"\nsymbol = "1"',
+                              "mask = [" + ", ".join(f"[{k}, 0, 1]" for k in range(1200)) + "]",
+                              'mask = [[100, 0, "1"]]']):
+        out.append(pytest.param("m.toml", text, id=f"toml-shape-{i}"))
+    out.append(pytest.param("m.toml", "x = 1\n" * 60_000, id="too-big"))
+    return out
+
+
+@pytest.mark.parametrize("name,text", _mask_file_cases())
+def test_hostile_mask_files(capsys, tmp_path, name, text):
+    f = tmp_path / name
+    f.write_text(text, encoding="utf-8")
+    argv = ["surface", "--file", str(f), "--json"]
+    _assert_clean_error(argv, *_run(capsys, argv))
 
 
 def _cases():
@@ -287,6 +315,13 @@ def _paper_cases():
         if field == "parameters":
             text = text.replace("start = 0", 'mask = ["w", "1-w"]\nstart = 0')
         out.append(pytest.param(text, id=f"scheme-{field}-{value[:12]}"))
+    for i, value in enumerate([f'{{ symbol = {json.dumps(INJECTIONS[1])} }}', '{ symbol = "z1**(10**9)" }',
+                               f'{{ mask = [[0, 0, {json.dumps(INJECTIONS[3])}]] }}', '{ mask = "0,0: 10**10**10" }',
+                               '{ symbol = "1+z1", dilation = [[1, 1], [1, 1]] }', '{ symbol = "1+z1", dilation = "x" }',
+                               '{ symbol = "1+w*z1" }\nparameters = { w = "(0, __import__(\'os\'))" }']):
+        text = (f'[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n[schemes.s]\nbivariate = {value}\n'
+                '[[claims]]\nid = "c1"\nstatement = "s"\nkind = "sum rules"\nfactors = 1\n')
+        out.append(pytest.param(text, id=f"scheme-bivariate-{i}"))
     return out
 
 

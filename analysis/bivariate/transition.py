@@ -179,10 +179,12 @@ class RestrictedFamily:
         return self.basis.ncols()
 
 
-def restricted_transition(a: BivariateMask, k: int) -> RestrictedFamily:
+def restricted_transition(a: BivariateMask, k: int, omega=None) -> RestrictedFamily:
     """The restrictions ``T_eps|V_k``; an :class:`AnalysisError` when ``V_k`` is not invariant (the mask
-    does not satisfy sum rules of order ``k``) or is ``{0}``."""
-    mats, omega = transition_matrices(a)
+    does not satisfy sum rules of order ``k``) or is ``{0}``. ``omega``: the invariant support to use (default
+    that of ``a``; a one-parameter family uses its generic support at every value, see
+    :mod:`analysis.bivariate.ranges`)."""
+    mats, omega = transition_matrices(a, omega)
     B, free = difference_subspace(omega, k)
     if B.ncols() == 0:
         raise AnalysisError(f"the difference subspace V_{k} on the invariant support is {{0}}")

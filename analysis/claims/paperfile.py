@@ -120,10 +120,11 @@ __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META", "MAX_BYTES"
 
 PAPER_KEYS = {"id", "title", "authors", "citation", "source", "notes"}
 SCHEME_KEYS = {"catalogue", "mask", "start", "rules", "symbol", "level_mask", "level_symbol", "where", "parameters",
+               "bivariate",
                "notes", "title", "arity"}
 #: the keys of a claim table that are not fields of its kind
 CLAIM_META = {"id", "title", "statement", "reading", "reading_note", "location", "kind", "command", "objects"}
-_DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask", "level_symbol")
+_DEFS = ("catalogue", "mask", "rules", "symbol", "level_mask", "level_symbol", "bivariate")
 
 Catalogue = Callable[[str], Any]
 
@@ -210,6 +211,8 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     if "where" in t and how not in ("level_mask", "level_symbol"):
         raise AnalysisError(f"{w}: 'where' (helper definitions in the level n) needs level_mask or level_symbol")
     symbol, level, definition = None, None, ""
+    if how == "bivariate":
+        return _bivariate_scheme(name, t, w, domains)
     try:
         if how == "catalogue":
             if catalogue is None:
@@ -263,6 +266,29 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     if arity != 2:
         definition += f" (arity {arity})"
     return SchemeSpec(name, symbol, domains, definition, _text(t, "notes", w), level=level, arity=arity)
+
+
+def _bivariate_scheme(name: str, t: Mapping, w: str, domains: Mapping) -> SchemeSpec:
+    """A bivariate scheme ``bivariate = { dilation = "...", symbol = "..." }`` (or ``mask = [[i, j, "c"], ...]``):
+    the keys of a mask file (:mod:`analysis.bivariate.mask_file`); nothing else of a scheme table but
+    ``parameters`` and ``notes``."""
+    from ..bivariate.mask_file import mask_from_data
+
+    extra = sorted(set(t) - {"bivariate", "parameters", "notes"})
+    if extra:
+        raise AnalysisError(f"{w}: a bivariate scheme takes bivariate = {{...}}, parameters and notes, not {extra[0]!r}")
+    try:
+        a = mask_from_data(t["bivariate"], where="bivariate")
+    except AnalysisError as exc:
+        raise AnalysisError(f"{w}: {exc}") from None
+    have = {p.name for p in a.params}
+    unknown = sorted(set(domains) - have)
+    if unknown:
+        raise AnalysisError(f"{w}: unknown parameter {unknown[0]!r}: it does not occur in the scheme "
+                            f"(its parameters: {', '.join(sorted(have)) or 'none'})")
+    rows = [list(r) for r in a.dilation.matrix]
+    definition = f"bivariate symbol {sp.sstr(sp.factor(a.symbol))} with dilation M = {rows}"
+    return SchemeSpec(name, None, domains, definition, _text(t, "notes", w), bivariate=a)
 
 
 def _level_scheme(t: Mapping, how: str, m: int, name: str):

@@ -15,6 +15,8 @@ Examples
     subdiv surface --symbol "(1+z1)**2*(1+z2)**2/(4*z1*z2)"
     subdiv surface --mask2 "0,0:1; 1,0:1/2; -1,0:1/2; 0,1:1/2; 0,-1:1/2; 1,1:1/4; -1,-1:1/4; 1,-1:1/4; -1,1:1/4"
     subdiv surface --scheme butterfly --param w=1/16 --json
+    subdiv surface --scheme butterfly --C 1 --within=0,1/8 --grid 4
+    subdiv surface --file mask.toml
 """
 
 from __future__ import annotations
@@ -55,12 +57,13 @@ def _refine(args) -> None:
     _emit(args, data, text)
 
 
-def _mask_from_args(args):
+def _mask_from_args(args, keep=None):
     from ..bivariate.mask import BivariateMask
 
-    given = [x for x in (args.scheme, args.symbol, args.mask2) if x is not None]
+    given = [x for x in (args.scheme, args.symbol, args.mask2, args.file) if x is not None]
     if len(given) != 1:
-        raise AnalysisError("give exactly one of --scheme NAME, --symbol 'EXPR in z1, z2' or --mask2 'i,j:coef; ...'")
+        raise AnalysisError("give exactly one of --scheme NAME, --symbol 'EXPR in z1, z2', --mask2 'i,j:coef; ...' "
+                            "or --file MASK.toml")
     params = {k: v for k, v in _parse_params(args.param).items()}
     if args.scheme is not None:
         from schemes.surfaces import get
@@ -70,7 +73,17 @@ def _mask_from_args(args):
             raise AnalysisError(f"{e.slug} has its own dilation; --dilation is for --symbol and --mask2")
         a = e.mask(general=True)
         label = e.slug
-        vals = {**{k: v for k, v in e.defaults.items()}, **params}
+        ranging = getattr(args, "within", None) is not None
+        vals = {**{k: v for k, v in e.defaults.items() if not ranging or (keep is not None and k != keep)},
+                **params}
+    elif args.file is not None:
+        from ..bivariate.mask_file import read_mask_file
+
+        if args.dilation is not None:
+            raise AnalysisError("a mask file gives its own dilation (key dilation); drop --dilation")
+        a = read_mask_file(args.file)
+        label = a.name or "the mask"
+        vals = params
     else:
         if args.symbol is not None:
             a = BivariateMask.from_symbol(args.symbol, args.dilation)
@@ -81,6 +94,8 @@ def _mask_from_args(args):
     general = a
     if vals:
         a = a.at(vals)
+    if keep is not None or getattr(args, "within", None) is not None:     # a C^l set: one parameter stays free
+        return a, a, label, vals
     if a.params:
         raise AnalysisError(f"give values to the parameters {', '.join(p.name for p in a.params)} with "
                             "--param NAME=VALUE (exact, e.g. w=1/16)")
@@ -156,11 +171,87 @@ def _sweep(args) -> None:
     _emit(args, {"sweep": name, "points": rows}, "\n".join(lines))
 
 
+def _range(args) -> None:
+    """``--C L --within=LOW,HIGH``: the certified C^l set of a one-parameter family
+    (:func:`analysis.bivariate.ranges.ck_set`)."""
+    import sympy as sp
+
+    from ..bivariate.ranges import MAX_GRID, ck_set
+    from .common import _int_arg, _parse_within
+
+    if args.within is None or args.C is None:
+        raise AnalysisError("a C^l set needs both --C L and --within=LOW,HIGH (e.g. --C 1 --within=0,1/8)")
+    l = _int_arg(args.C, "--C")
+    if not 0 <= l <= 8:
+        raise AnalysisError("--C takes 0 to 8")
+    within = _parse_within(args.within)
+    if not all(w.is_finite for w in within):
+        raise AnalysisError("--within needs finite bounds, e.g. --within=0,1/8")
+    grid = _int_arg(args.grid_cells, "--grid-cells")
+    if not 1 <= grid <= MAX_GRID:
+        raise AnalysisError(f"--grid-cells must be between 1 and {MAX_GRID}")
+    budget = work_arg(args.budget, "--budget")
+    total = work_arg(args.range_budget, "--range-budget")
+    general, _, label, vals = _mask_from_args(args, keep=args.param_name)
+    if len(general.params) != 1:
+        raise AnalysisError("a C^l set needs exactly one free parameter: fix the others with --param NAME=VALUE")
+    r = ck_set(general, l, args.param_name, within=within, grid=grid, budget=total, point_budget=budget,
+               box_budget=budget)
+    p = r.witness["parameter"]
+    v = r.value
+    fmt = lambda x: sp.sstr(x)
+    lines = [f"{label}: where is it C^{l}? {p} in [{fmt(within[0])}, {fmt(within[1])}] (grid {grid}; "
+             f"T_eps({p}) restricted to V_{l + 1}, dimension {r.witness['dimension']})   [{r.status}]"]
+    for s in r.witness["samples"]:
+        a = s["alpha"]
+        enc = "alpha ?" if a is None or a[0] is None else (
+            f"alpha in [{float(a[0]):.10g}, {float(a[1]):.10g}]" if a[1] is not None else f"alpha >= {float(a[0]):.10g}")
+        verdict = {True: f"C^{l}", False: f"not C^{l}", None: "undecided"}[s["C^l"]]
+        lines.append(f"  {p} = {fmt(s['t'])}: {enc} ({s['status']}); {verdict}")
+    cert = " u ".join(f"{'(' if I.left_open else '['}{fmt(I.start)}, {fmt(I.end)}{')' if I.right_open else ']'}"
+                      if I.start != I.end else f"{{{fmt(I.start)}}}" for I in v["certified"]) or "nowhere"
+    lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes): {p} in {cert}")
+    lines.append(f"not C^{l} (certified counterexamples): " + (f"{p} = " + ", ".join(
+        f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) if v["not_Cl"] else "none"))
+    for b in r.witness["boundaries"]:
+        if "exact" in b:
+            st = b.get("strip") or {}
+            upto = (f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
+                    f"s.m.p. T_{st['product']}, {st['pieces']} sub-intervals)" if st.get("closed") else
+                    (f"C^{l} certified up to {fmt(b['certified_Cl_to'])}" if b["certified_Cl_to"] != b["certified_Cl_at"]
+                     else f"no box toward it certified: the nearest certified C^{l} point is {fmt(b['certified_Cl_at'])}")
+                    + (f"; the strip next to the end not closed: {st['reason']}" if st else ""))
+            lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); {upto}")
+        else:
+            lines.append(f"  end between {fmt(b['certified_Cl_to'])} (C^{l}) and {fmt(b['certified_not_Cl_at'])} "
+                         f"(not C^{l}): no exact crossing found")
+    if v["gaps"]:
+        lines.append("undecided (inconclusive): " + ", ".join(
+            f"({fmt(a)}, {fmt(b)}) width {float(b - a):.3g}" for a, b in v["gaps"]))
+    if r.witness["between_counterexamples"]:
+        lines.append("between counterexamples (sampled, not examined): " + ", ".join(
+            f"({fmt(a)}, {fmt(b)})" for a, b in r.witness["between_counterexamples"]))
+    data = {"scheme": label, "parameter": p, "l": l, "within": [fmt(w) for w in within], "status": r.status,
+            "certified": [{"from": fmt(I.start), "to": fmt(I.end), "from_open": bool(I.left_open),
+                           "to_open": bool(I.right_open)} for I in v["certified"]],
+            "not_Cl": [fmt(x) for x in v["not_Cl"]], "gaps": [[fmt(a), fmt(b)] for a, b in v["gaps"]],
+            "between_counterexamples": [[fmt(a), fmt(b)] for a, b in r.witness["between_counterexamples"]],
+            "samples": [{"t": fmt(s["t"]), "Cl": s["C^l"], "status": s["status"],
+                         "alpha": None if s["alpha"] is None else [None if x is None else fmt(x) for x in s["alpha"]]}
+                        for s in r.witness["samples"]],
+            "boundaries": [{k: (fmt(x) if isinstance(x, sp.Basic) else x) for k, x in b.items() if k != "between"}
+                           for b in r.witness["boundaries"]],
+            "work": r.provenance["work"]}
+    _emit(args, data, "\n".join(lines))
+
+
 def cmd_surface(args) -> None:
     import sympy as sp
 
     if args.list:
         return _list(args)
+    if args.C is not None or args.within is not None:
+        return _range(args)
     if args.sweep:
         return _sweep(args)
     if args.refine is not None:
@@ -259,11 +350,20 @@ def register(subparsers) -> None:
     s.add_argument("--scheme", help="a surface catalogue name (loop, bicubic, butterfly, sqrt3, ...)")
     s.add_argument("--symbol", help="the symbol, a Laurent polynomial in z1, z2 (other names are parameters)")
     s.add_argument("--mask2", help="the mask as 'i,j:coef; i,j:coef; ...'")
+    s.add_argument("--file", metavar="MASK.toml", help="the mask from a TOML or JSON file (docs/surfaces.md)")
     s.add_argument("--dilation", help="dyadic (2I, default), quincunx, sqrt3, triadic, or the rows a,b;c,d")
     s.add_argument("--param", action="append", metavar="NAME=VALUE", help="a parameter value (exact), repeatable")
     s.add_argument("--budget", default="20000", help="work budget of the JSR certification (units counted, not timed)")
     s.add_argument("--sweep", metavar="NAME=v1,v2,...",
                    help="the certified alpha and C^l at each value of one parameter (a table)")
+    s.add_argument("--C", metavar="L", help="with --within: the certified set of parameter values where it is C^L")
+    s.add_argument("--within", metavar="LOW,HIGH", help="with --C: the parameter interval (use --within=0,1/8)")
+    s.add_argument("--param-name", metavar="NAME", help="with --C: the free parameter (default: the only one; a "
+                                                       "catalogue default of it is dropped)")
+    s.add_argument("--grid-cells", default="8", metavar="N", help="with --C: grid cells of certified point verdicts "
+                                                                 "(default 8)")
+    s.add_argument("--range-budget", default="2000000", metavar="UNITS",
+                   help="with --C: total work budget of the C^L set (units counted, not timed; default 2000000)")
     s.add_argument("--refine", type=int, metavar="N",
                    help="apply N steps to the delta sequence (samples of the basic limit function, floating point)")
     s.add_argument("--grid", choices=("quad", "triangular"),

@@ -137,6 +137,7 @@ class SumRules(Kind):
                 "at_least": "true: the claim is k or more factors (e.g. a(1) = 2, a(-1) = 0 is at least 1)"}
     example = 'factors = 2\nexceptional = [{ at = { w = "1/16" }, factors = 4 }]'
     any_arity = True
+    bivariate = True              # factors = the order of the sum rules (analysis.claims.kinds.bivariate)
 
     def check(self) -> None:
         self.integer("factors")
@@ -147,6 +148,10 @@ class SumRules(Kind):
             self.scheme.values(e["at"], self.where)
 
     def evaluate(self) -> Verdict:
+        if self.scheme.bivariate is not None:
+            from .bivariate import sum_rules_verdict
+
+            return sum_rules_verdict(self)
         a, m = self.symbol(), self.arity
         f = smoothing_factor(a, arity=m)
         sr = sum_rules(a, arity=m)
@@ -429,6 +434,7 @@ class Reproduction(Kind):
                 "at": "parameter values"}
     example = "generation = 3\nreproduction = 3\nat = { w = \"1/16\" }"
     any_arity = True
+    bivariate = True
 
     def check(self) -> None:
         self.values()
@@ -437,6 +443,10 @@ class Reproduction(Kind):
         self.integer("generation", -1), self.integer("reproduction", -1)
 
     def evaluate(self) -> Verdict:
+        if self.scheme.bivariate is not None:
+            from .bivariate import reproduction_verdict
+
+            return reproduction_verdict(self)
         a = self.symbol()
         m = self.arity
         g, r = polynomial_generation(a, arity=m), polynomial_reproduction(a, arity=m)

@@ -247,9 +247,13 @@ class SchemeSpec:
     level: Any = None
     #: the arity m of ``(S_a f)_i = sum_j a_{i-mj} f_j`` (issue 12; 2 for binary schemes)
     arity: int = 2
+    #: a bivariate scheme (:class:`analysis.bivariate.mask.BivariateMask`, its dilation included)
+    bivariate: Any = None
 
     @property
     def params(self) -> tuple:
+        if self.bivariate is not None:
+            return tuple(self.bivariate.params)
         return tuple((self.level if self.symbol is None else self.symbol).params)
 
     def values(self, at: Mapping | None, where: str) -> dict:
@@ -270,6 +274,8 @@ class SchemeSpec:
         return out
 
     def at(self, values: Mapping) -> LaurentSymbol:
+        if self.bivariate is not None:
+            raise AnalysisError(f"scheme {self.name!r} is bivariate: this kind needs a univariate scheme")
         if self.symbol is None:
             raise AnalysisError(f"scheme {self.name!r} is level-dependent: this kind needs a stationary scheme")
         return self.symbol.subs(values) if values else self.symbol
@@ -280,6 +286,8 @@ ANY_ARITY_KINDS = ("mask identity", "sum rules", "symmetry", "interpolatory", "s
               "smoothness", "holder",
               "smoothness profile", "sobolev", "support after steps", "limit symmetry",
               "weighted series", "asymptotic equivalence", "exponential reproduction")
+#: the kinds available for bivariate schemes (their ``bivariate = True``; the others refuse at load time)
+BIVARIATE_KINDS = ("sum rules", "reproduction", "smoothness", "holder", "ck range")
 
 
 def evidence(title: str, result: Result | None = None, text: str = "", table=None) -> Evidence:
@@ -300,6 +308,8 @@ class Kind:
     level_scheme: ClassVar[bool | None] = False
     #: can the kind speak of a scheme of any arity (arity != 2)?  (the others refuse at load time)
     any_arity: ClassVar[bool] = False
+    #: can the kind speak of a bivariate scheme (``bivariate = {...}``)?  (the others refuse at load time)
+    bivariate: ClassVar[bool] = False
     #: example fields (TOML lines) for the template of ``subdiv new-paper``
     example: ClassVar[str] = ""
     summary: ClassVar[str] = ""
@@ -333,6 +343,9 @@ class Kind:
                                     + ("level-dependent scheme (level_mask)" if self.level_scheme else
                                        f"stationary scheme; {s!r} is level-dependent (for C^k of a level-dependent "
                                        "scheme use kind 'smoothness')"))
+            if self.scheme.bivariate is not None and not self.bivariate:
+                raise AnalysisError(f"{where}: kind {self.name!r} is not available for the bivariate scheme {s!r}; "
+                                    f"the bivariate kinds are: {', '.join(BIVARIATE_KINDS)}")
             if self.scheme.arity != 2 and not self.any_arity:
                 raise AnalysisError(f"{where}: kind {self.name!r} is not available for arity {self.scheme.arity} "
                                     f"(scheme {s!r}); the m-ary kinds are: {', '.join(ANY_ARITY_KINDS)}")
@@ -361,6 +374,11 @@ class Kind:
     def symbol(self) -> LaurentSymbol:
         """The scheme's symbol with the parameters of ``at`` substituted."""
         return self.scheme.at(self.values())
+
+    def bivariate_mask(self):
+        """The bivariate scheme's mask with the parameters of ``at`` substituted."""
+        vals = self.values()
+        return self.scheme.bivariate.at({k: v for k, v in vals.items()}) if vals else self.scheme.bivariate
 
     def integer(self, key: str, lo: int = 0) -> int | None:
         v = self.get(key)

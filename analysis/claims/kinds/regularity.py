@@ -195,7 +195,7 @@ class _ValueClaim(Kind):
         raise NotImplementedError
 
     def evaluate(self) -> Verdict:
-        a = self.symbol()
+        a = self.bivariate_mask() if self.scheme.bivariate is not None else self.symbol()
         if a.params:
             raise AnalysisError(f"{self.where}: fix every parameter with at = {{...}} "
                                 f"(free: {', '.join(p.name for p in a.params)})")
@@ -203,7 +203,7 @@ class _ValueClaim(Kind):
         claimed = (self.number("value"), self.number("tolerance"), self.number("lower"), self.number("upper"))
         ok, why = compare_enclosure(r, *claimed)
         exact_why = settle = None
-        if ok is None and self.exact_comparison:        # a closed form inside the enclosure: decide it exactly
+        if ok is None and self.exact_comparison and self.scheme.bivariate is None:        # a closed form inside the enclosure: decide it exactly
             ok2, why2 = compare_exact(r, self.arity, *claimed)
             ok, why = (ok2, why2) if ok2 is not None else (None, f"{why}; {why2}")
             exact_why = why2
@@ -244,8 +244,13 @@ class Holder(_ValueClaim):
     example = 'at = { w = "1/16" }\nvalue = 2'
     any_arity = True
     exact_comparison = True
+    bivariate = True
 
     def compute(self, a) -> Result:
+        if self.scheme.bivariate is not None:
+            from .bivariate import holder_result
+
+            return holder_result(self, a)
         return holder_exponent(a, budget=self._budget(), arity=self.arity)
 
     def _budget(self) -> int:
@@ -316,12 +321,17 @@ class CkRange(Kind):
     optional = {"at": "values of the other parameters"}
     example = 'j = 1\ninterval = "(0, 1/8)"'
     any_arity = True
+    bivariate = True
 
     def check(self) -> None:
         self.integer("j"), self.interval("interval")
         self.values()
 
     def evaluate(self) -> Verdict:
+        if self.scheme.bivariate is not None:
+            from .bivariate import ck_range_verdict
+
+            return ck_range_verdict(self)
         if self.arity != 2:                       # issue 12
             return ck_range_by_sets(self)
         a = self.symbol()

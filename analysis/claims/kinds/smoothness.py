@@ -78,6 +78,7 @@ class Smoothness(Kind):
     example = 'at = { w = "1/16" }\nC = 2\nholds = false'
     any_arity = True
     level_scheme = None          # stationary or level-dependent
+    bivariate = True
 
     def check(self) -> None:
         k = self.integer("C")
@@ -160,6 +161,10 @@ class Smoothness(Kind):
 
     # ------------------------------------------------------------------ the verdict
     def evaluate(self) -> Verdict:
+        if self.scheme.bivariate is not None:
+            from .bivariate import smoothness_verdict
+
+            return smoothness_verdict(self)
         k = self.get("C")
         claim_holds = self.boolean("holds", True)
         where = self.where_text()

@@ -1,0 +1,122 @@
+"""Certified C^l sets of one-parameter bivariate families (analysis.bivariate.ranges) and the mask file form
+(analysis.bivariate.mask_file, ``subdiv surface --file``)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+import sympy as sp
+from flint import fmpq
+
+from analysis.bivariate.mask import BivariateMask
+from analysis.bivariate.mask_file import mask_from_data, read_mask_file
+from analysis.bivariate.ranges import ck_set, parametric_family
+from analysis.bivariate.transition import restricted_transition
+from analysis.cli.main import main
+from analysis.result import INCONCLUSIVE, AnalysisError
+
+#: a perturbed tensor hat function: T_0(t) has the eigenvalue 1 at t = 3/4 exactly
+HAT = "(1+z1)**2*(1+z2)**2/(4*z1*z2) + t*(1-z1**2)*(1-z2**2)/(z1*z2)"
+
+
+@pytest.fixture(scope="module")
+def hat():
+    return BivariateMask.from_symbol(HAT)
+
+
+@pytest.mark.parametrize("t", ["1/3", "-2/7", "5"])
+def test_parametric_family_is_the_restriction_at_every_value(hat, t):
+    F = parametric_family(hat, 1)
+    want = restricted_transition(hat.at(t=t), 1, F.omega).matrices
+    assert F.at(sp.Rational(t)) == list(want)
+
+
+def test_bernstein_ends_are_the_matrices_at_the_ends_and_the_hull_holds_the_middle(hat):
+    B = parametric_family(BivariateMask.from_symbol("(1+z1)*(1+z2)*(1+z1*z2)/(2*z1*z2) + t**2*(1-z1**2)*(1-z2**2)"
+                                                    "/(z1*z2)"), 1)
+    assert B.degree == 2
+    u, v = sp.Rational(1, 4), sp.Rational(1, 2)
+    C = B.bernstein(u, v)                  # 3 control matrices per digit, digit-major
+    assert C[0] == B.at(u)[0] and C[2] == B.at(v)[0]
+    # t = (u+v)/2: the Bernstein weights (1/4, 1/2, 1/4)
+    mid = C[0] * fmpq(1, 4) + C[1] * fmpq(1, 2) + C[2] * fmpq(1, 4)
+    assert mid == B.at((u + v) / 2)[0]
+
+
+def test_hat_family_c0_set(hat):
+    r = ck_set(hat, 0, within=(0, 1), grid=2, budget=200_000, point_budget=5000, box_budget=5000, approach=3)
+    assert r.status == INCONCLUSIVE                     # a strip next to the eigenvalue-type end stays open
+    (b,) = r.witness["boundaries"]
+    assert b["exact"] == sp.Rational(3, 4) and "T_0" in b["how"]
+    assert b["strip"]["closed"] is False and "not simple" in b["strip"]["reason"]     # a double eigenvalue 1
+    assert sp.Rational(3, 4) in r.value["not_Cl"] and 1 in r.value["not_Cl"]
+    (I,) = r.value["certified"]
+    assert I.start == 0 and sp.Rational(5, 8) < I.end < sp.Rational(3, 4)
+    (gap,) = r.value["gaps"]
+    assert gap == (I.end, sp.Rational(3, 4))
+    assert all(x["certified_Cl"] for x in r.witness["boxes"] if x["to"] <= I.end)
+
+
+def test_c_set_refuses_what_it_cannot_certify(hat):
+    with pytest.raises(AnalysisError, match="exactly one free parameter"):
+        ck_set(hat.at(t=0), 0, within=(0, 1))
+    with pytest.raises(AnalysisError, match="C\\^2 needs order 3"):
+        ck_set(hat, 2, within=(0, 1))
+    q = BivariateMask.from_symbol("(1+z1)*(1+z2)/2 + t*(1-z1**2)", "quincunx")
+    with pytest.raises(AnalysisError, match="irrational"):
+        ck_set(q, 1, within=(0, 1))
+
+
+def test_cli_c_set_needs_both_options(capsys):
+    assert main(["surface", "--scheme", "butterfly", "--C", "1"]) == 2
+    assert "--within" in capsys.readouterr().err
+
+
+# --------------------------------------------------------------------------- mask files
+
+def test_toml_and_json_files_give_the_mask_of_the_options(tmp_path):
+    t = tmp_path / "q.toml"
+    t.write_text('name = "zp"\ndilation = "quincunx"\nsymbol = "(1+z1)*(1+z2)/2"\n', encoding="utf-8")
+    j = tmp_path / "q.json"
+    j.write_text(json.dumps({"dilation": [[1, 1], [1, -1]],
+                             "mask": [[0, 0, "1/2"], [1, 0, "1/2"], [0, 1, "1/2"], [1, 1, "1/2"]]}), encoding="utf-8")
+    a, b = read_mask_file(str(t)), read_mask_file(str(j))
+    want = BivariateMask.from_list("0,0:1/2; 1,0:1/2; 0,1:1/2; 1,1:1/2", "quincunx")
+    assert a.coeffs == b.coeffs == want.coeffs and a.dilation == b.dilation == want.dilation and a.name == "zp"
+
+
+def test_mask_file_list_text_and_parameters():
+    a = mask_from_data({"mask": "0,0: 1; 1,0: w", "dilation": "quincunx"})
+    assert [p.name for p in a.params] == ["w"]
+
+
+@pytest.mark.parametrize("data,match", [
+    ({"symbol": "1+z1", "mask": "0,0:1"}, "exactly one"),
+    ({"symbol": "1+z1", "extra": 1}, "unknown key"),
+    ({"mask": [[0, 0, "1"], [0, 0, "2"]]}, "twice"),
+    ({"mask": [[0, 0, 0.5]]}, "integer"),
+    ([1, 2], "table"),
+])
+def test_mask_file_errors(data, match):
+    with pytest.raises(AnalysisError, match=match):
+        mask_from_data(data)
+
+
+def test_cli_file(tmp_path, capsys):
+    f = tmp_path / "hat.toml"
+    f.write_text('mask = "0,0:1; 1,0:1/2; -1,0:1/2; 0,1:1/2; 0,-1:1/2; 1,1:1/4; -1,-1:1/4; 1,-1:1/4; -1,1:1/4"\n',
+                 encoding="utf-8")
+    assert main(["surface", "--file", str(f), "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["sum_rules"] == 2 and doc["holder"]["value"] == "1"
+    assert main(["surface", "--file", str(f), "--dilation", "quincunx"]) == 2
+
+
+def test_cli_c_set_of_a_closed_run(capsys):
+    """Both grid points C^0 and one box between them: the C^0 set [0, 1/2] is certified, nothing undecided."""
+    assert main(["surface", "--symbol", HAT, "--C", "0", "--within=0,1/2", "--grid-cells", "1", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["status"] == "certified" and doc["gaps"] == [] and doc["not_Cl"] == []
+    assert doc["certified"] == [{"from": "0", "to": "1/2", "from_open": False, "to_open": False}]
+    assert [s["Cl"] for s in doc["samples"]] == [True, True]
