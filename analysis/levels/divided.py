@@ -50,12 +50,45 @@ def _exact_zero(expr: sp.Expr) -> bool:
     e = as_expr(expr)
     if e == 0:
         return True
+    if _nonzero_somewhere(e):
+        return False        # no simplification can prove it zero: skip them (seconds each)
     for f in (lambda x: sp.simplify(x.rewrite(sp.exp)), lambda x: sp.simplify(x),
               lambda x: sp.simplify(sp.expand_trig(x))):
         try:
             if f(e) == 0:
                 return True
         except Exception:  # noqa: BLE001 - a failed simplification is not a proof either way
+            continue
+    return False
+
+
+def _nonzero_somewhere(e: sp.Expr) -> bool:
+    """True when ``e`` is certainly not identically zero: its value at a rational point (respecting the
+    symbols' sign and integer assumptions) is finite and, at 50 significant digits, of modulus > 1e-20
+    (``evalf`` guarantees the digits it returns). False means nothing (a singular point, a tiny value)."""
+    symbols = sorted(e.free_symbols, key=lambda x: x.name)
+    for shift in (0, 1):
+        values = {}
+        for i, x in enumerate(symbols):
+            if x.is_integer:
+                v = sp.Integer(3 + i + 2 * shift)
+            else:
+                v = sp.Rational(3 + 2 * i + shift, 7 + 3 * i)
+            if x.is_negative or x.is_nonpositive:
+                v = -v
+            if x.is_zero or (x.is_integer is False and v.is_integer) or (x.is_rational is False):
+                return False        # assumptions a rational point cannot satisfy
+            values[x] = v
+        try:
+            z = e.subs(values).evalf(50)
+        except Exception:  # noqa: BLE001 - a point where the expression is undefined proves nothing
+            continue
+        if not z.is_number or z.free_symbols or z.has(sp.nan, sp.zoo, sp.oo, -sp.oo):
+            continue
+        try:
+            if abs(complex(z)) > 1e-20:
+                return True
+        except (TypeError, ValueError, OverflowError):
             continue
     return False
 
