@@ -73,3 +73,21 @@ def test_bad_fields_fail_at_load_with_one_line(body, message):
 def test_a_single_valence_and_user_rules_load():
     p = _claim('lattice = "quad"\ncentre = "3/(2*n**2), 1/(4*n**2)"\nvalence = 5\nproperty = "eigen-conditions"\n')
     assert p.claims[0].kind == "vertex"
+
+
+def _verdict(value: str, valence: str = "5..6"):
+    fields = {"surface": "loop", "valence": valence, "property": "subdominant eigenvalue", "value": value, "ring": 1}
+    from analysis.claims.kinds.vertex import Vertex
+
+    return Vertex(fields, {}, "t").evaluate()
+
+
+def test_a_formula_undefined_at_a_valence_is_refuted_there():
+    v = _verdict("1/(n - 5)")
+    assert v.label == F and "undefined at n = 5" in v.summary and _first_failure(v) == 5
+
+
+def test_an_equal_formula_written_otherwise_is_certified_and_one_outside_arb_is_inconclusive():
+    assert _verdict("3/8 + (2*cos(pi/n)**2 - 1)/4", "5..7").label == T       # exact: cos(2x) = 2 cos(x)^2 - 1
+    v = _verdict("3/8 + cos(2*pi/n)**(3/2)/4")                                # powers other than 1/2: not enclosed
+    assert v.label == I and "Arb evaluator" in v.summary
