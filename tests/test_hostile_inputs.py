@@ -288,8 +288,8 @@ def _paper_cases():
             if key == "tension":
                 fields = {"surface": "butterfly", "valence": "4", "property": "C1", "tension": value}
             body = "\n".join(f"{k} = {_toml(v)}" for k, v in fields.items())
-            out.append(pytest.param(_PAPER_BASE + f'\n[[claims]]\nid = "c1"\nstatement = "s"\nkind = "vertex"\n{body}\n',
-                                    id=f"vertex-{key}-{value[:12]}"))
+            text = _PAPER_BASE + f'\n[[claims]]\nid = "c1"\nstatement = "s"\nkind = "vertex"\n{body}\n'
+            out.append(pytest.param(text, id=f"vertex-{key}-{value[:12]}"))
     for field, value in [("mask", f'["{INJECTIONS[0]}", 1]'), ("mask", '["10**10**10", 1]'),
                          ("symbol", json.dumps(INJECTIONS[2])), ("symbol", '"z**(10**9)"'),
                          ("parameters", '{ w = "(0, __import__(\'os\'))" }')]:

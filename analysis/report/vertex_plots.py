@@ -63,8 +63,8 @@ def plot_characteristic_map(segment: dict, n: int, path: str, name: str, status:
     colours = plt.get_cmap("viridis")
     for m in range(rings):
         scale = lam ** m
-        segs = [[((cmath.exp(2j * cmath.pi * j / n) * scale * z).real, (cmath.exp(2j * cmath.pi * j / n) * scale * z).imag)
-                 for z in line] for j in range(n) for line in segment["lines"]]
+        turns = [cmath.exp(2j * cmath.pi * j / n) * scale for j in range(n)]
+        segs = [[((t * z).real, (t * z).imag) for z in line] for t in turns for line in segment["lines"]]
         ax.add_collection(LineCollection(segs, linewidths=0.5, colors=[colours(m / max(rings, 2))],
                                          label=f"ring {m} (x lambda^{m})"))
     ax.autoscale()

@@ -104,7 +104,8 @@ class Vertex(Kind):
             raise AnalysisError(f"{self.where}: give either surface = \"loop\" (a scheme of `subdiv vertex`) or "
                                 "user rules (lattice = \"triangle\" and centre = \"...\"), not both or neither")
         if surface is not None and surface not in SCHEMES:
-            raise AnalysisError(f"{self.where}: field 'surface' must be one of {', '.join(SCHEMES)}, not {_show(surface)}")
+            raise AnalysisError(f"{self.where}: field 'surface' must be one of {', '.join(SCHEMES)}, "
+                                f"not {_show(surface)}")
         if lattice is not None and self.get("centre") is None:
             raise AnalysisError(f"{self.where}: user rules need centre = \"...\" (e.g. centre = \"3/(8*n)\")")
         if surface is not None and (self.get("centre") is not None or self.get("edge") is not None):
@@ -121,7 +122,8 @@ class Vertex(Kind):
 
             text = self.get("value")
             if not isinstance(text, str):
-                raise AnalysisError(f"{self.where}: field 'value' must be a formula as text, e.g. \"3/8 + cos(2*pi/n)/4\"")
+                raise AnalysisError(f"{self.where}: field 'value' must be a formula as text, "
+                                    "e.g. \"3/8 + cos(2*pi/n)/4\"")
             self.expr = read_expression(text, names={"n": n_sym, "c": sp.cos(2 * sp.pi / n_sym)}, free=False,
                                         what=f"{self.where}: field 'value'",
                                         hint="use n, c = cos(2*pi/n), pi and cos, e.g. \"3/8 + cos(2*pi/n)/4\"")
