@@ -307,6 +307,17 @@ def _paper_cases():
             text = (_PAPER_BASE + f'\n[[claims]]\nid = "c1"\nstatement = "s"\nkind = "{name}"\n'
                     + (f'scheme = "{scheme}"\n' if cls.uses_scheme else "") + body + "\n")
             out.append(pytest.param(text, id=f"{name}-{'.'.join(map(str, path))}"))
+    # kind "vertex": the fields of its user rules and the butterfly's tension (not in its example)
+    base = {"lattice": "triangle", "centre": "3/(8*n)", "edge": "3/8; 1/n", "valence": "4",
+            "property": "eigen-conditions"}
+    for key in ("lattice", "centre", "edge", "tension"):
+        for value in values:
+            fields = dict(base, **{key: value})
+            if key == "tension":
+                fields = {"surface": "butterfly", "valence": "4", "property": "C1", "tension": value}
+            body = "\n".join(f"{k} = {_toml(v)}" for k, v in fields.items())
+            text = _PAPER_BASE + f'\n[[claims]]\nid = "c1"\nstatement = "s"\nkind = "vertex"\n{body}\n'
+            out.append(pytest.param(text, id=f"vertex-{key}-{value[:12]}"))
     for field, value in [("mask", f'["{INJECTIONS[0]}", 1]'), ("mask", '["10**10**10", 1]'),
                          ("symbol", json.dumps(INJECTIONS[2])), ("symbol", '"z**(10**9)"'),
                          ("parameters", '{ w = "(0, __import__(\'os\'))" }')]:

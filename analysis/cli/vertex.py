@@ -51,7 +51,8 @@ def register(subparsers) -> None:
                    help="user rules: NAME is a free weight in --centre; print the exact set of its values for "
                         "which Reif's eigen-conditions hold at each valence")
     s.add_argument("--figure", metavar="FILE.png",
-                   help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...)")
+                   help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...); with one valence "
+                        "(--valence N): the characteristic map")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_vertex)
 
@@ -169,6 +170,9 @@ def cmd_vertex(args) -> None:
     if args.figure:
         check_figure(args.figure, "--figure")
     base = _rules(args, None)
+    if args.figure and len(valences) == 1 and base.lattice == "sqrt3":
+        raise AnalysisError("--figure with one valence draws the characteristic map, which is not available for "
+                            "sqrt3: give a valence range (e.g. --valence 3..12) for the eigenvalue figure")
     closed = closed_form_lambda(base)
     from .. import progress
 
@@ -189,7 +193,9 @@ def cmd_vertex(args) -> None:
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
                       "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
                       "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
-    if args.figure:
+    if args.figure and len(valences) == 1:
+        doc["figure"] = _charmap_figure(args, valences[0], entries[0], name)
+    elif args.figure:
         from ..report.vertex_plots import plot_vertex_spectrum
 
         doc["figure"] = plot_vertex_spectrum(entries, args.figure, name)
@@ -199,6 +205,23 @@ def cmd_vertex(args) -> None:
         _print(_summary(name, closed, entries, base.lattice))
         if args.figure:
             _print(f"figure: {args.figure}")
+
+
+def _charmap_figure(args, n: int, entry: dict, name: str) -> str:
+    """The picture of the characteristic map at valence n (block 1's subdominant eigenvector)."""
+    from ..report.vertex_plots import plot_characteristic_map
+    from ..vertex.charpicture import characteristic_map_lines
+    from ..vertex.spectrum import analyse
+
+    rules = _rules(args, n)
+    a = analyse(rules, n, curvature=False)
+    if a.lam is None:
+        raise AnalysisError(f"no characteristic map to draw at n = {n}: the eigenvalues are not isolated")
+    segment = characteristic_map_lines(rules, n, a.lam.ball.real)
+    status = f"C^1: {entry['c1']['status']}" + ("" if a.reif_ok else
+                                                 f"; the map of block 1's leading eigenvector, not a characteristic "
+                                                 f"map: eigen-conditions fail ({a.reif_reason})")
+    return plot_characteristic_map(segment, n, args.figure, name, status)
 
 
 def _cmd_tune(args, valences: list[int]) -> None:

@@ -64,8 +64,9 @@ def _block1(rules: LocalRules, n: int):
     return B
 
 
-def numerical_characteristic_map(rules: LocalRules, n: int, lam: float, resolution: int = RESOLUTION) -> dict:
-    """Discrete Jacobians and winding number of the characteristic net on ``resolution`` rings (floats)."""
+def _phi(rules: LocalRules, n: int, lam: float, resolution: int):
+    """The sampled characteristic map: a function of a lattice point of ring <= resolution, and the
+    eigenvalue used (block 1's eigenvalue of the big local matrix nearest to ``lam``)."""
     import numpy as np
 
     if rules.lattice != "triangle, interpolating" or rules.tension is None:
@@ -90,20 +91,41 @@ def numerical_characteristic_map(rules: LocalRules, n: int, lam: float, resoluti
         d, hx, hy = _tri_home(x, y)
         return w ** d * v[index[(hx, hy)]]
 
-    R = resolution
-    jac = []
+    return phi, complex(vals[i]).real
+
+
+def _annulus(R: int):
+    """The lattice triangles of sector 0 between rings R/2 and R."""
     for x in range(R + 1):
         for y in range(R + 1 - x):
             for tri in (((x, y), (x + 1, y), (x, y + 1)), ((x + 1, y), (x + 1, y + 1), (x, y + 1))):
                 rings = [a + b for a, b in tri]
                 if max(rings) > R or min(rings) < R // 2:
                     continue
-                a, b, c = (phi(*p) for p in tri)
-                jac.append(((b - a).conjugate() * (c - a)).imag)
+                yield tri
+
+
+def net_triangles(rules: LocalRules, n: int, lam: float, resolution: int = RESOLUTION) -> list:
+    """The images of sector 0's lattice triangles in the annulus (floats, for a picture)."""
+    phi, _ = _phi(rules, n, lam, resolution)
+    return [tuple(complex(phi(*p)) for p in tri) for tri in _annulus(resolution)]
+
+
+def numerical_characteristic_map(rules: LocalRules, n: int, lam: float, resolution: int = RESOLUTION) -> dict:
+    """Discrete Jacobians and winding number of the characteristic net on ``resolution`` rings (floats)."""
+    import numpy as np
+
+    phi, used = _phi(rules, n, lam, resolution)
+    w = np.exp(2j * np.pi / n)
+    R = resolution
+    jac = []
+    for tri in _annulus(R):
+        a, b, c = (phi(*p) for p in tri)
+        jac.append(((b - a).conjugate() * (c - a)).imag)
     jac = np.array(jac)
     sign = 1 if jac.max() >= -jac.min() else -1
     regular = bool(np.all(sign * jac > 0))
-    ring = [w ** j * v[index[(R - i, i)]] for j in range(n) for i in range(R)]
+    ring = [w ** j * phi(R - i, i) for j in range(n) for i in range(R)]
     if min(abs(z) for z in ring) < 1e-12 * max(abs(z) for z in ring):
         winding = None                                    # the sampled ring passes through 0
     else:
@@ -113,7 +135,7 @@ def numerical_characteristic_map(rules: LocalRules, n: int, lam: float, resoluti
     return {"status": NUMERICAL, "regular": regular, "jacobian_sign": sign, "winding_number": winding,
             "injective": regular and winding == sign, "resolution": R, "triangles": int(jac.size),
             "min_jacobian_ratio": float((sign * jac).min() / scale),
-            "eigenvalue_used": complex(vals[i]).real,
+            "eigenvalue_used": used,
             "method": "block-1 eigenvector on the R-ring (numpy), interpolating: net points lie on the limit; "
                       "discrete Jacobians on the annulus R/2..R and the ring-R polygon's winding (floats)"}
 

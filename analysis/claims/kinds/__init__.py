@@ -45,13 +45,14 @@ from .regularity import CkRange, Holder, NormTest, Sobolev
 from .smoothness import Smoothness
 from .spectral import EigenvalueInequality
 from .support_steps import SupportAfterSteps
+from .vertex import Vertex
 
 #: kind name -> class, in the order of the ``subdiv new-paper`` template
 KIND_CLASSES: dict[str, type[Kind]] = {k.name: k for k in (
     MaskIdentity, SumRules, Symmetry, Interpolatory, Support, Eigenvalues, Reproduction, NormTest, CkRange, Smoothness, Holder, Sobolev,
     SmoothnessProfile, WeightedSeries, AsymptoticEquivalence, ExponentialReproduction, Inequality, Identity,
     Factorization, EigenvalueInequality, SupportAfterSteps, LimitSymmetry, EndRules, Gibbs, Construction,
-    CurveComparison, AllOf, Cited, Python)}
+    CurveComparison, Vertex, AllOf, Cited, Python)}
 
 
 def kind_class(name: str) -> type[Kind]:
