@@ -383,9 +383,26 @@ def exponential_frequencies(s: LevelDependentScheme, values: Mapping[str, Any] |
 # refinement and curves (float64: numerical)
 # --------------------------------------------------------------------------------------------
 
+_MASK_FLOATS: dict = {}
+
+
 def mask_floats(s: LevelDependentScheme, n: int, values) -> np.ndarray:
-    """The level-n mask in float64 (evaluated at 60 digits, then rounded)."""
-    return np.array([float(sp.N(c, 60)) for c in s.mask_at(n, values)])
+    """The level-n mask in float64 (evaluated at 60 digits, then rounded; remembered per scheme, level
+    and values, since refining several curves with one scheme asks for the same levels)."""
+    try:
+        key = (id(s), int(n), tuple(sorted((str(k), sp.srepr(v) if isinstance(v, sp.Basic) else repr(v))
+                                          for k, v in (values or {}).items())))
+    except TypeError:
+        key = None
+    hit = _MASK_FLOATS.get(key) if key is not None else None
+    if hit is not None and hit[0] is s:
+        return hit[1].copy()
+    out = np.array([float(sp.N(c, 60)) for c in s.mask_at(n, values)])
+    if key is not None:
+        if len(_MASK_FLOATS) > 512:
+            _MASK_FLOATS.clear()
+        _MASK_FLOATS[key] = (s, out.copy())     # the scheme is kept: its id cannot be reused meanwhile
+    return out
 
 
 def refine_closed(s: LevelDependentScheme, points, steps: int, values=None) -> np.ndarray:
@@ -473,8 +490,12 @@ def curve_deviation(s: LevelDependentScheme, curve: str, values=None, *, points:
         if curve == "circle":
             witness["curvature_deviation"] = float((kappa.max() - kappa.min()) / abs(kappa.mean()))
     dense = f(np.linspace(0, 2 * np.pi, 20000, endpoint=False))
-    d1 = np.sqrt(((P[:, None, :] - dense[None, ::5, :]) ** 2).sum(-1)).min(1)
-    d2 = np.sqrt(((dense[::5, None, :] - P[None, :, :]) ** 2).sum(-1)).min(1)
+    # one matrix of squared distances serves both directions (sqrt commutes with min: the same numbers)
+    D = dense[::5]
+    dx = P[:, 0, None] - D[None, :, 0]
+    dy = P[:, 1, None] - D[None, :, 1]
+    S2 = dx * dx + dy * dy
+    d1, d2 = np.sqrt(S2.min(1)), np.sqrt(S2.min(0))
     haus = float(max(d1.max(), d2.max()))
     witness["hausdorff"] = haus
     witness["curvature_range"] = (float(kappa.min()), float(kappa.max()))
