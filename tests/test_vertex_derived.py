@@ -53,6 +53,8 @@ def test_defects_need_second_order_sum_rules():
     # the tensor Haar mask: sum rules of order 1 only, so V_2 is not invariant
     with pytest.raises(AnalysisError, match="sum rules of order 2"):
         defect_functionals(BivariateMask.from_symbol("(1 + z1)*(1 + z2)"), (1, 0))
+    with pytest.raises(AnalysisError, match="2I"):
+        defect_functionals(BivariateMask.from_list("0,0: 1; 1,0: 1", dilation="quincunx"), (1, 0))
 
 
 def test_contraction_tree_bounds_sampled_products():

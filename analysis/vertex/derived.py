@@ -19,7 +19,7 @@ Algorithm
    computes ``h_eps`` exactly and checks ``g_eps = (B h_eps)^T`` exactly.
 2. *Contraction.* ``c(T_eps^T u) = A_eps c(u)`` with ``A_eps = X_eps^T``, ``X_eps = T_eps|V_2``
    (:func:`analysis.bivariate.transition.restricted_transition`). In coordinates ``z = W c`` (``W`` an exact
-   dyadic matrix; a near-extremal ellipsoid of the family, found in floats, only conditions the search)
+   rational matrix; a near-extremal ellipsoid of the family, found in floats, only conditions the search)
    :func:`contraction_certificate` builds a finite complete product tree: every node's product
    ``P_w = W A_{w_L} ... A_{w_1} W^{-1}`` is enclosed in Arb and a node is a leaf when
    ``||P_w||_inf <= r^|w|`` is proven. Every word then splits into leaves and one internal node, so
@@ -73,6 +73,8 @@ MAX_DEPTH = 24
 def _second_difference_family(a):
     from ..bivariate.transition import restricted_transition
 
+    if tuple(map(tuple, a.dilation.matrix)) != ((2, 0), (0, 2)):
+        raise AnalysisError("the divided-difference bounds are for the dilation 2I (dyadic refinement) only")
     return restricted_transition(a, 2)
 
 
@@ -111,8 +113,9 @@ def defect_functionals(a, e: tuple[int, int]) -> dict[str, Any]:
 
 
 def ellipsoid_coordinates(mats) -> "Any":
-    """An exact dyadic ``W`` (``fmpq_mat``) making the family's sum-of-squares ellipsoid round (floats only
-    choose ``W``; every bound proven with it is exact or Arb).
+    """An exact rational ``W`` (``fmpq_mat``, entries with denominators <= 2^40) making the family's
+    sum-of-squares ellipsoid round (:func:`analysis.jsr._search.balancing_transform`; floats only choose ``W``,
+    every bound proven with it is exact or Arb).
 
     >>> from flint import fmpq_mat
     >>> W = ellipsoid_coordinates([fmpq_mat([[1, 0], [0, 1]])])
@@ -174,7 +177,10 @@ def contraction_certificate(mats, r, *, W=None, max_nodes: int = MAX_NODES, max_
     n = mats[0].nrows()
     if W is None:
         W = fmpq_mat([[int(i == j) for j in range(n)] for i in range(n)])
-    Wi = W.inv()
+    try:
+        Wi = W.inv()
+    except ZeroDivisionError:
+        raise AnalysisError("the coordinate matrix W is singular") from None
     old = ctx.prec
     ctx.prec = prec
     try:
