@@ -30,7 +30,7 @@ Algorithm
 
        |D_e f(x) - d_k(Q)| <= 2^k K ||W c(u_k)||_inf,   K = H C / (1 - 2 r),   H = max_eps ||h_eps W^{-1}||_1
 
-   for every x in the closed cell Q (:func:`derivative_error_bound`).
+   for every x in the closed cell Q (:func:`derivative_error_bound`; ``W^{-1}`` and ``H`` enclosed in Arb).
 
 What this does *not* do (the rest of the proof for the characteristic map of the modified butterfly): enclose
 the characteristic map's net in Arb on the rings, cover a fundamental annulus of one sector by cells whose
@@ -148,6 +148,16 @@ def _arb_inf_norm_upper(M) -> Fraction:
     return _upper(best)
 
 
+def _arb_inverse(W):
+    """An Arb enclosure of ``W^{-1}`` (at the current precision); an error when W is not proven invertible."""
+    from flint import arb_mat
+
+    try:
+        return arb_mat(W).inv()
+    except ZeroDivisionError:
+        raise AnalysisError("the coordinate matrix W is not proven invertible") from None
+
+
 def _upper(x) -> Fraction:
     """A rational upper bound of ``|x|`` for an arb ball (its exact upper endpoint, a dyadic)."""
     u = abs(x).upper()
@@ -177,14 +187,11 @@ def contraction_certificate(mats, r, *, W=None, max_nodes: int = MAX_NODES, max_
     n = mats[0].nrows()
     if W is None:
         W = fmpq_mat([[int(i == j) for j in range(n)] for i in range(n)])
-    try:
-        Wi = W.inv()
-    except ZeroDivisionError:
-        raise AnalysisError("the coordinate matrix W is singular") from None
     old = ctx.prec
     ctx.prec = prec
     try:
-        fam = [arb_mat(W * A * Wi) for A in mats]
+        Wi = _arb_inverse(W)
+        fam = [arb_mat(W) * arb_mat(A) * Wi for A in mats]
         C = Fraction(1)
         nodes = leaves = depth = 0
         stack = [((), arb_mat(fmpq_mat([[int(i == j) for j in range(n)] for i in range(n)])))]
@@ -257,14 +264,23 @@ def derivative_error_bound(a, r, *, W=None, holder=None, max_nodes: int = MAX_NO
     if not tree.is_certified:
         return Result(status=INCONCLUSIVE, witness=wit,
                       provenance={**prov, "message": tree.provenance.get("message", "the product tree did not close")})
-    Wi = W.inv()
-    H = {}
-    for e, d in defects.items():
-        best = Fraction(0)
-        for h in d["h"]:
-            row = [sum((h[t] * Wi[t, s] for t in range(len(h))), start=0) for s in range(Wi.ncols())]
-            best = max(best, sum((Fraction(int(abs(v).p), int(abs(v).q)) for v in row), start=Fraction(0)))
-        H[e] = best
+    from flint import arb, ctx
+
+    old = ctx.prec
+    ctx.prec = 128
+    try:
+        Wi = _arb_inverse(W)
+        H = {}
+        for e, d in defects.items():
+            best = Fraction(0)
+            for h in d["h"]:
+                total = arb(0)
+                for s in range(Wi.ncols()):
+                    total += abs(sum((arb(h[t]) * Wi[t, s] for t in range(len(h)) if h[t] != 0), start=arb(0)))
+                best = max(best, _upper(total))
+            H[e] = best
+    finally:
+        ctx.prec = old
     C = tree.value
     K = max(H.values()) * C / (1 - 2 * r)
     wit.update({"C": C, "H": H})
