@@ -148,3 +148,24 @@ def test_butterfly_defects_exact_and_small_tree_inconclusive():
     fam = d["family"]
     t = contraction_certificate([X.transpose() for X in fam.matrices], Fraction(9, 20), max_nodes=5)
     assert t.status == "inconclusive"
+
+
+def test_jacobian_sign_on_cell():
+    """The butterfly reproduces cubics, so the limit of polynomial data is the polynomial itself: a map with a
+    Jacobian of one sign on the cell is proven (after refinement), a fold inside the cell never is."""
+    from analysis.vertex.derived import jacobian_sign_on_cell
+
+    a, k = _bound("butterfly")
+    omega = defect_functionals(a, (1, 0))["family"].omega
+
+    def net(p):
+        return [p(complex(-x, -y)) for x, y in omega]      # u(j) = f_0(-j)
+
+    r = jacobian_sign_on_cell(a, net(lambda z: z + 0.01 * z * z), k, max_depth=6)
+    assert r.status == "certified" and r.value == 1 and r.witness["depth"] >= 3
+    r = jacobian_sign_on_cell(a, net(lambda z: (z.conjugate() + 0.01 * z.conjugate() ** 2)), k, max_depth=6)
+    assert r.status == "certified" and r.value == -1                   # orientation reversed
+    r = jacobian_sign_on_cell(a, net(lambda z: (z - complex(0.5, 0.5)) ** 2), k, max_depth=4)
+    assert r.status == "inconclusive" and r.witness["unproven"] > 0     # J = 0 at the cell's centre
+    with pytest.raises(AnalysisError, match="invariant support"):
+        jacobian_sign_on_cell(a, [0, 1], k)
