@@ -169,3 +169,18 @@ def test_jacobian_sign_on_cell():
     assert r.status == "inconclusive" and r.witness["unproven"] > 0     # J = 0 at the cell's centre
     with pytest.raises(AnalysisError, match="invariant support"):
         jacobian_sign_on_cell(a, [0, 1], k)
+
+
+def test_tube_and_ray():
+    """The tube [p, q] + disk(rad) against the ray from 0 along rho (the winding step of the Zorin check)."""
+    from flint import acb, arb
+
+    from analysis.vertex.zorin import _tube_misses_ray
+
+    one = acb(1)
+    assert _tube_misses_ray(acb(1, 1), acb(3, 2), arb("0.5"), one)          # above the positive axis
+    assert not _tube_misses_ray(acb(1, 1), acb(3, -2), arb("0.5"), one)     # crosses it
+    assert _tube_misses_ray(acb(-2, 1), acb(-3, -2), arb("0.5"), one)       # crosses the negative axis only
+    assert not _tube_misses_ray(acb(1, 1), acb(3, 2), arb(2), one)          # the disk reaches the ray
+    assert _tube_misses_ray(acb(1, -1), acb(3, -2), arb("0.5"), acb(0, 1))  # the ray is the positive imaginary axis
+    assert not _tube_misses_ray(acb(-1, 1), acb(1, 1), arb("0.5"), acb(0, 1))
