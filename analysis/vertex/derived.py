@@ -32,10 +32,9 @@ Algorithm
 
    for every x in the closed cell Q (:func:`derivative_error_bound`; ``W^{-1}`` and ``H`` enclosed in Arb).
 
-What this does *not* do (the rest of the proof for the characteristic map of the modified butterfly): enclose
-the characteristic map's net in Arb on the rings, cover a fundamental annulus of one sector by cells whose
-``i0 - Omega`` avoids the extraordinary vertex, prove the discrete Jacobian minus the propagated error
-positive on every cell, and enclose the boundary curve for the winding number. See ``docs/vertices.md``.
+4. *One cell.* :func:`jacobian_sign_on_cell` proves the Jacobian of the limit of one sign on a cell from the
+   discrete Jacobian minus the propagated error, refining where needed. :mod:`analysis.vertex.zorin` applies
+   it to the characteristic map of the modified butterfly.
 
 Examples
 --------
