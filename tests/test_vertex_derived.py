@@ -184,3 +184,15 @@ def test_tube_and_ray():
     assert not _tube_misses_ray(acb(1, 1), acb(3, 2), arb(2), one)          # the disk reaches the ray
     assert _tube_misses_ray(acb(1, -1), acb(3, -2), arb("0.5"), acb(0, 1))  # the ray is the positive imaginary axis
     assert not _tube_misses_ray(acb(-1, 1), acb(1, 1), arb("0.5"), acb(0, 1))
+
+
+def test_butterfly_neighbourhoods_nested():
+    """Every refinement of a cell of the butterfly uses points inside the convex hull of the cell's
+    neighbourhood (the cover argument of the Zorin check)."""
+    from analysis.bivariate.transition import invariant_support
+    from analysis.vertex.zorin import nested_neighbourhoods
+
+    a = get("butterfly").mask(w="1/16")
+    om = invariant_support(a)
+    assert nested_neighbourhoods(om, a.dilation.digits)
+    assert not nested_neighbourhoods([(x + 3, y) for x, y in om], a.dilation.digits)   # shifted off the origin

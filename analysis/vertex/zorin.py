@@ -40,7 +40,44 @@ from typing import Any
 
 from ..result import INCONCLUSIVE, AnalysisError, Result
 
-__all__ = ["modified_butterfly_zorin"]
+__all__ = ["modified_butterfly_zorin", "nested_neighbourhoods"]
+
+
+def _hull(points):
+    """The convex hull of integer points, counter-clockwise (Andrew's monotone chain, exact)."""
+    pts = sorted(set(points))
+
+    def half(seq):
+        out: list = []
+        for p in seq:
+            while len(out) >= 2 and ((out[-1][0] - out[-2][0]) * (p[1] - out[-2][1])
+                                     - (out[-1][1] - out[-2][1]) * (p[0] - out[-2][0])) <= 0:
+                out.pop()
+            out.append(p)
+        return out
+
+    lower, upper = half(pts), half(reversed(pts))
+    return lower[:-1] + upper[:-1]
+
+
+def nested_neighbourhoods(omega, digits) -> bool:
+    """``(Omega - eps)/2`` lies in ``conv(Omega)`` for every digit (exact): the neighbourhoods of all
+    refinements of a cell stay in the convex hull of its own (step 2 of the module docstring).
+
+    >>> nested_neighbourhoods([(0, 0), (-1, 0), (0, -1), (-1, -1)], [(0, 0), (1, 0), (0, 1), (1, 1)])
+    True
+    >>> nested_neighbourhoods([(0, 0), (1, 0), (0, 1), (1, 1)], [(0, 0), (1, 0), (0, 1), (1, 1)])
+    False
+    """
+    V = _hull(omega)
+    for e in digits:
+        for x, y in omega:
+            q = (Fraction(x - e[0], 2), Fraction(y - e[1], 2))
+            for k in range(len(V)):
+                a, b = V[k], V[(k + 1) % len(V)]
+                if (b[0] - a[0]) * (q[1] - a[1]) - (b[1] - a[1]) * (q[0] - a[0]) < 0:
+                    return False
+    return True
 
 
 def _tube_misses_ray(p, q, rad, rho) -> bool:
@@ -77,6 +114,8 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     fam, B = d["family"], d["basis"]
     omega = fam.omega
     idx = {p: s for s, p in enumerate(omega)}
+    if not nested_neighbourhoods(omega, a.dilation.digits):
+        raise AnalysisError("the refinements' neighbourhoods are not inside the cell's: the cover argument fails")
     rules = modified_butterfly_rules(ring, n, Fraction(tension))
     old = ctx.prec
     ctx.prec = prec
