@@ -126,7 +126,7 @@ ALLOWED_CLOCKS = {
     ("analysis/regularity/sobolev.py", "_exact_route"),
     ("analysis/regularity/sobolev.py", "_ball_route"),
     ("analysis/regularity/sobolev.py", "_autocorrelation_route"),
-    ("analysis/regularity/strips.py", "close_strip"),
+    ("analysis/jsr/parametric.py", "close_family"),
     ("analysis/claims/model.py", "evaluate_claim"),
     ("analysis/cli/report.py", "_report_file"),
     ("analysis/cli/report.py", "cmd_report"),
