@@ -104,3 +104,18 @@ def test_cli_cells_is_an_opt_in_for_the_modified_butterfly():
     assert r.returncode == 2 and r.stderr.startswith("subdiv: error: --charmap-cells applies to")
     r = _cli("--scheme", "modified-butterfly", "--valence", "3..12", "--charmap-cells")
     assert r.returncode == 2 and "at most 4 valences" in r.stderr
+
+
+def test_cli_cells_line():
+    """The line printed under a valence names the verdict, the cells, the sign and the winding."""
+    from analysis.cli.vertex import _cells_line
+
+    wit = {"cells": "108 of 108", "annulus": [8, 16], "cover": True, "jacobian_sign_mask": -1, "winding": True,
+           "subcells": 108}
+    line = _cells_line({"status": "certified", "witness": wit, "provenance": {"message": "x"}})
+    assert "C^1 for generic initial data (Reif's criterion) [certified]: 108 of 108 cells of rings 8..16" in line
+    assert "positive in the chart, winds once" in line
+    line = _cells_line({"status": "inconclusive", "witness": dict(wit, winding=False, jacobian_sign_mask=None),
+                        "provenance": {"message": "not every step was proven: the winding number"}})
+    assert "not every step was proven: the winding number [inconclusive]" in line
+    assert "not one sign" in line and "winding not proven" in line

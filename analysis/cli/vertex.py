@@ -216,6 +216,9 @@ def cmd_vertex(args) -> None:
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
                       "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
                       "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
+    if cells:
+        doc["c1_note"] += ("; --charmap-cells: Zorin's cell test of the modified butterfly's characteristic map, "
+                           "in each valence's charmap_cells (certified: C^1 for generic initial data)")
     if args.figure and len(valences) == 1:
         doc["figure"] = _charmap_figure(args, valences[0], entries[0], name)
     elif args.figure:
@@ -252,7 +255,7 @@ def _cells_line(r: dict) -> str:
     sign = {-1: "positive in the chart", 1: "negative in the chart"}.get(w["jacobian_sign_mask"], "not one sign")
     return (f"      Zorin's cell test: {head} [{r['status']}]: {w['cells']} cells of rings "
             f"{w['annulus'][0]}..{w['annulus'][1]} (cover {'proven' if w['cover'] else 'failed'}), Jacobian "
-            f"{sign}, winds once: {w['winding']}, {w['subcells']} subcells")
+            f"{sign}, {'winds once' if w['winding'] else 'winding not proven'}, {w['subcells']} sub-cells")
 
 
 def _charmap_figure(args, n: int, entry: dict, name: str) -> str:
