@@ -53,6 +53,9 @@ def register(subparsers) -> None:
     s.add_argument("--figure", metavar="FILE.png",
                    help="also draw lambda, mu and lambda^2 against n (png, svg, pdf, ...); with one valence "
                         "(--valence N): the characteristic map")
+    s.add_argument("--charmap-cells", action="store_true",
+                   help="with --scheme modified-butterfly: also run Zorin's cell test of the characteristic "
+                        "map in Arb (certifies C^1; 20-130 s per valence, at most 4 valences)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_vertex)
 
@@ -130,6 +133,13 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
     c1: dict[str, list[int]] = {}
     for e in entries:
         c1.setdefault(e["c1"]["status"], []).append(e["n"])
+    tested = [e for e in entries if "charmap_cells" in e]
+    if tested:
+        by_cells: dict[str, list[int]] = {}
+        for e in tested:
+            by_cells.setdefault(e["charmap_cells"]["status"], []).append(e["n"])
+        lines.append("C^1 for generic initial data by Zorin's cell test (--charmap-cells): "
+                     + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in by_cells.items()))
     if set(c1) == {"certified"}:
         lines.append("C^1: certified at every valence (eigen-conditions and a regular, injective characteristic map)")
     elif any("characteristic_map" in e for e in entries):
@@ -170,6 +180,12 @@ def cmd_vertex(args) -> None:
     if args.figure:
         check_figure(args.figure, "--figure")
     base = _rules(args, None)
+    cells = getattr(args, "charmap_cells", False)
+    if cells and args.scheme != "modified-butterfly":
+        raise AnalysisError("--charmap-cells applies to --scheme modified-butterfly only")
+    if cells and len(valences) > MAX_CELL_VALENCES:
+        raise AnalysisError(f"--charmap-cells takes 20-130 s per valence: give at most {MAX_CELL_VALENCES} "
+                            "valences, e.g. --valence 5..8")
     if args.figure and len(valences) == 1 and base.lattice == "sqrt3":
         raise AnalysisError("--figure with one valence draws the characteristic map, which is not available for "
                             "sqrt3: give a valence range (e.g. --valence 3..12) for the eigenvalue figure")
@@ -187,12 +203,22 @@ def cmd_vertex(args) -> None:
             entries[-1]["timing"] = {"seconds": round(time.perf_counter() - t0, 3)}
             if not args.json:
                 _print(_line(entries[-1]))
+            if cells:
+                t0 = time.perf_counter()
+                with progress.part(f"valence {n}: Zorin's cell test"):
+                    entries[-1]["charmap_cells"] = _zorin(args, n)
+                entries[-1]["charmap_cells"]["timing"] = {"seconds": round(time.perf_counter() - t0, 3)}
+                if not args.json:
+                    _print(_cells_line(entries[-1]["charmap_cells"]))
     name = base.name if base.name != "user" else "user rules"
     doc = {"scheme": name, "rules": base.source, "ring": base.ring, "matrix_size": base.size,
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
                       "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
                       "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
+    if cells:
+        doc["c1_note"] += ("; --charmap-cells: Zorin's cell test of the modified butterfly's characteristic map, "
+                           "in each valence's charmap_cells (certified: C^1 for generic initial data)")
     if args.figure and len(valences) == 1:
         doc["figure"] = _charmap_figure(args, valences[0], entries[0], name)
     elif args.figure:
@@ -205,6 +231,31 @@ def cmd_vertex(args) -> None:
         _print(_summary(name, closed, entries, base.lattice))
         if args.figure:
             _print(f"figure: {args.figure}")
+
+
+#: valences per run of ``--charmap-cells`` (each takes 20-130 s)
+MAX_CELL_VALENCES = 4
+
+
+def _zorin(args, n: int) -> dict:
+    """Zorin's cell test of the modified butterfly's characteristic map at valence n, as JSON."""
+    from fractions import Fraction
+
+    from ..vertex.zorin import modified_butterfly_zorin
+
+    w = _tension(args.tension)
+    tension = Fraction(1, 16) if w is None else Fraction(int(w.p), int(w.q))
+    return modified_butterfly_zorin(n, tension=tension).to_json()
+
+
+def _cells_line(r: dict) -> str:
+    w = r["witness"]
+    head = ("C^1 for generic initial data (Reif's criterion)" if r["status"] == "certified"
+            else r["provenance"]["message"])
+    sign = {-1: "positive in the chart", 1: "negative in the chart"}.get(w["jacobian_sign_mask"], "not one sign")
+    return (f"      Zorin's cell test: {head} [{r['status']}]: {w['cells']} cells of rings "
+            f"{w['annulus'][0]}..{w['annulus'][1]} (cover {'proven' if w['cover'] else 'failed'}), Jacobian "
+            f"{sign}, {'winds once' if w['winding'] else 'winding not proven'}, {w['subcells']} sub-cells")
 
 
 def _charmap_figure(args, n: int, entry: dict, name: str) -> str:

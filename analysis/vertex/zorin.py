@@ -1,22 +1,35 @@
 """Zorin's test of the characteristic map of the modified butterfly at valence n, in Arb: every cell of a
-fundamental annulus, and the winding number of a ring. The computation certifies each of its steps; the
-argument that joins them (below) has not yet been independently reviewed, so the result is *inconclusive*
-and no C^1 verdict is drawn from it.
+fundamental annulus, and the winding number of a ring. When every step below is proven the result is
+*certified*: the characteristic map is regular and injective, so with Reif's eigen-conditions (step 0) the
+scheme is C^1 at valence n for generic initial data (Reif's criterion). n = 6 is the regular case.
 
 Algorithm
 ---------
 Chart: sector 0 in lattice coordinates ``(x, y)`` (``e_0`` at 0 degrees, ``e_1`` at 60; ring = x + y), mask
 coordinates ``(p, q) = (x, -y)`` (the butterfly mask's third direction ``(1, 1)``; this flips orientation).
 
+0. Eigen-structure: :func:`analysis.vertex.spectrum.analyse` on the 3-ring certifies Reif's conditions with
+   lambda = 1/2 exact and simple in block 1; :func:`outer_rings_nilpotent` checks exactly that the
+   ``ring``-ring rules agree with the 3-ring rules on the 3-ring and that every rule of a point of ring
+   ``r >= 4`` uses only sources of rings ``< r``. Block 1 of the ``ring``-ring matrix is then
+   ``[[B3, 0], [X, Y]]`` with ``Y`` strictly lower triangular (by ring), so its characteristic polynomial is
+   ``B3``'s times a power of lambda: 1/2 is an algebraically simple eigenvalue, ``B - I/2`` has rank ``m - 1``,
+   and the solution of step 1 (``m - 1`` equations with a nonsingular minor, one entry fixed to 1) is the
+   eigenvector, whose first six entries are the 3-ring's.
 1. ``v``: an Arb enclosure of block 1's eigenvector for lambda = 1/2 on the ``ring``-ring
    (:func:`analysis.vertex.charmap.eigenvector`); every ring is closed under the rules and the scheme is
    interpolating, so ``Phi(x, y) = w^d v(home)`` at the lattice points (``w = exp(2 pi i/n)``).
-2. Cover: the mask cells with chart corner ``(x, y + 1)``, ``x, y >= 0``, ``lo <= x + y < hi`` are the
-   triangles of sector 0 between rings ``lo`` and ``hi``. Each cell's neighbourhood ``i0 - Omega`` must satisfy
-   ``x + y >= 1`` at every point: its convex hull then lies in the half-plane ``x + y > 0`` (chart sectors -1, 0,
-   1, where the chart is a faithful development of the mesh) at distance > 1/2 from the centre, so no point
-   of any refinement of it is a new point on an edge at the centre, all rules used there are the regular
-   stencil, and ``Phi`` on the cell is the regular butterfly limit of its local net.
+2. Cover: cell ``(x, y)`` is the chart parallelogram with corners ``(x, y)`` and ``(x + 1, y + 1)`` (mask
+   corner ``(x, y + 1)``), split by its diagonal from ``(x + 1, y)`` to ``(x, y + 1)`` into a triangle between
+   rings ``x + y`` and ``x + y + 1`` and one between rings ``x + y + 1`` and ``x + y + 2``. Lemma
+   (:func:`annulus_cells`, :func:`covers_annulus`): with the cells ``x, y >= 0``,
+   ``lo - 1 <= x + y <= hi - 1``, every lattice triangle of sector 0 between rings ``lo`` and ``hi`` is half
+   of some cell; with ``hi = 2 lo``, ``Phi(x/2) = Phi(x)/2`` and the n rotations give the whole punctured
+   plane. Each cell's neighbourhood ``i0 - Omega`` must satisfy ``x + y >= 1`` at every point: its convex hull
+   then lies in the half-plane ``x + y > 0`` (chart sectors -1, 0, 1, where the chart is a faithful
+   development of the mesh) at distance > 1/2 from the centre, so no point of any refinement of it is a new
+   point on an edge at the centre, all rules used there are the regular stencil, and ``Phi`` on the cell is
+   the regular butterfly limit of its local net.
 3. Regularity: :func:`analysis.vertex.derived.jacobian_sign_on_cell` on every cell with one common sign;
    ``Phi(x/2) = Phi(x)/2`` and ``Phi(R x) = w Phi(x)`` carry the sign to the punctured plane.
 4. Winding: the ring-``hi`` arc of sector 0 runs from ``(hi, 0)`` to ``(0, hi)``, with images ``P0`` and
@@ -38,9 +51,68 @@ from __future__ import annotations
 from fractions import Fraction
 from typing import Any
 
-from ..result import INCONCLUSIVE, AnalysisError, Result
+from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
-__all__ = ["modified_butterfly_zorin", "nested_neighbourhoods"]
+__all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "nested_neighbourhoods",
+           "outer_rings_nilpotent"]
+
+
+def annulus_cells(lo: int, hi: int) -> list[tuple[int, int]]:
+    """The cells ``(x, y)``, ``x, y >= 0``, ``lo - 1 <= x + y <= hi - 1`` of step 2 of the module docstring.
+
+    >>> annulus_cells(2, 4)
+    [(0, 1), (0, 2), (0, 3), (1, 0), (1, 1), (1, 2), (2, 0), (2, 1), (3, 0)]
+    """
+    return [(x, y) for x in range(hi) for y in range(hi - x) if x + y >= lo - 1]
+
+
+def _halves(x: int, y: int):
+    """The two lattice triangles of cell ``(x, y)`` (chart coordinates), as frozensets of corners."""
+    return (frozenset({(x, y), (x + 1, y), (x, y + 1)}), frozenset({(x + 1, y), (x, y + 1), (x + 1, y + 1)}))
+
+
+def covers_annulus(cells, lo: int, hi: int) -> bool:
+    """Every lattice triangle of sector 0 (corners ``x, y >= 0``) with all corners on rings ``lo..hi`` is half
+    of one of ``cells`` (exact enumeration; the triangles are ``{(x, y), (x+1, y), (x, y+1)}`` and
+    ``{(x+1, y), (x, y+1), (x+1, y+1)}``, edges along e_0, e_1 and e_1 - e_0).
+
+    >>> covers_annulus(annulus_cells(8, 16), 8, 16)
+    True
+    >>> covers_annulus([(x, y) for x, y in annulus_cells(8, 16) if x + y >= 8], 8, 16)   # ring band 8-9
+    False
+    """
+    have = {t for c in cells for t in _halves(*c)}
+    for x in range(hi + 1):
+        for y in range(hi + 1 - x):
+            for t in _halves(x, y):
+                if all(lo <= a + b <= hi for a, b in t) and t not in have:
+                    return False
+    return True
+
+
+def outer_rings_nilpotent(rules, inner) -> bool:
+    """Step 0 of the module docstring, exact: ``rules`` (on more rings) agree with ``inner`` (the 3-ring rules)
+    on ``inner``'s points, and every rule of a point of ring ``r`` beyond ``inner.ring`` uses only the centre and
+    points of rings ``< r``.
+
+    >>> from analysis.vertex.rules import modified_butterfly_rules
+    >>> outer_rings_nilpotent(modified_butterfly_rules(6, 5), modified_butterfly_rules(3, 5))
+    True
+    """
+    coords, k = rules.coords, len(inner.coords)
+    if tuple(coords[:k]) != tuple(inner.coords) or rules.centre != inner.centre:
+        return False
+    sect, sect3 = rules.sector_rules(), inner.sector_rules()
+    if tuple(sect[:k]) != tuple(sect3) or (rules.centre and rules.rules[0] != inner.rules[0]):
+        return False
+    for i in range(k, len(coords)):
+        r = sum(coords[i])
+        if r <= inner.ring:
+            return False
+        for t in sect[i]:
+            if len(t.source) == 2 and sum(coords[t.source[0]]) >= r:
+                return False
+    return True
 
 
 def _hull(points):
@@ -92,10 +164,13 @@ def _tube_misses_ray(p, q, rad, rho) -> bool:
 
 def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 16, r=Fraction(2, 5),
                              max_depth: int = 8, tension=Fraction(1, 16), prec: int = 128) -> Result:
-    """Steps 1-4 of the module docstring for the modified butterfly at valence ``n``; *inconclusive* always
-    (see the module docstring), with ``witness``: ``cells`` (proven of total), ``jacobian_sign_mask``,
-    ``winding`` (True when step 4 succeeded), ``K``, ``subcells`` (cells examined after refinement).
+    """Steps 0-4 of the module docstring for the modified butterfly at valence ``n``: *certified* (value True,
+    "C^1 for generic initial data (Reif's criterion)") when every step is proven, else *inconclusive*; the
+    ``witness`` has ``eigen`` (Reif's conditions, lambda exact, the outer-ring check), ``cells`` (proven of
+    total), ``cover`` (the lemma of step 2), ``jacobian_sign_mask`` (-1: positive in the chart), ``winding``
+    (True when step 4 succeeded), ``K``, ``subcells`` (cells examined after refinement).
     """
+    import sympy as sp
     from flint import acb, ctx, fmpq
 
     from schemes.surfaces import get
@@ -104,7 +179,19 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     from .charmap import eigenvector
     from .derived import defect_functionals, derivative_error_bound, jacobian_sign_on_cell
     from .rules import _tri_home, modified_butterfly_rules
+    from .spectrum import analyse
 
+    if hi != 2 * lo or lo < 2:
+        raise AnalysisError(f"the annulus must be rings lo..2 lo (Phi(x/2) = Phi(x)/2), not {lo}..{hi}")
+    rules = modified_butterfly_rules(ring, n, Fraction(tension))
+    inner = modified_butterfly_rules(3, n, Fraction(tension))
+    va = analyse(inner, n, curvature=False)
+    eigen = {"reif_status": va.reif_status, "reif_ok": va.reif_ok, "checks": dict(va.checks),
+             "lambda_exact": str(va.lam_exact), "outer_rings_nilpotent": outer_rings_nilpotent(rules, inner)}
+    eigen_ok = (va.reif_ok is True and va.reif_status == "certified" and va.lam_exact is not None
+                and sp.Rational(va.lam_exact) == sp.Rational(1, 2) and eigen["outer_rings_nilpotent"])
+    cells = annulus_cells(lo, hi)
+    cover = covers_annulus(cells, lo, hi)
     a = get("butterfly").mask(w=str(tension))
     bound = derivative_error_bound(a, r, holder=holder_exponent(a, budget=50))
     if not bound.is_certified:
@@ -116,7 +203,6 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     idx = {p: s for s, p in enumerate(omega)}
     if not nested_neighbourhoods(omega, a.dilation.digits):
         raise AnalysisError("the refinements' neighbourhoods are not inside the cell's: the cover argument fails")
-    rules = modified_butterfly_rules(ring, n, Fraction(tension))
     old = ctx.prec
     ctx.prec = prec
     try:
@@ -140,30 +226,54 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
 
         proven = total = sub = 0
         signs = set()
-        for x in range(hi):
-            for y in range(hi - x):
-                if x + y < lo:
-                    continue
-                total += 1
-                res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec)
-                sub += res.witness["cells"]
-                if res.is_certified:
-                    proven += 1
-                    signs.add(res.value)
+        for x, y in cells:
+            total += 1
+            res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec)
+            sub += res.witness["cells"]
+            if res.is_certified:
+                proven += 1
+                signs.add(res.value)
         regular = proven == total and len(signs) == 1
         winding = _winding_once(n, hi, net, phi, fam, B, W, K, idx, max_depth)
     finally:
         ctx.prec = old
-    wit: dict[str, Any] = {"cells": f"{proven} of {total}", "jacobian_sign_mask": signs.pop() if regular else None,
-                           "regular": regular, "winding": winding, "K": K, "subcells": sub,
-                           "ring": ring, "annulus": (lo, hi)}
-    done = regular and winding
-    msg = ("every cell and the winding number proven in Arb (regular and injective by the argument of the "
-           "module docstring); that argument awaits an independent review, so no C^1 verdict is drawn"
-           if done else "not every step was proven")
-    return Result(status=INCONCLUSIVE, witness=wit,
-                  provenance={"method": "Zorin 2000: cell cover of a fundamental annulus, derivative error bounds "
-                                        "of the regular butterfly, winding of a ring", "message": msg})
+    sign = next(iter(signs)) if regular else None
+    wit: dict[str, Any] = {"eigen": eigen, "cells": f"{proven} of {total}", "cover": cover,
+                           "jacobian_sign_mask": sign, "regular": regular, "winding": winding, "K": K,
+                           "subcells": sub, "ring": ring, "annulus": (lo, hi), "regular_valence": n == 6}
+    return _verdict(n, wit, eigen_ok)
+
+
+def _verdict(n: int, wit: dict, eigen_ok: bool) -> Result:
+    """The result of :func:`modified_butterfly_zorin` from its steps: *certified* only when all are proven and
+    the Jacobian's sign agrees with the winding (a mismatch is a contradiction: *inconclusive*).
+
+    >>> w = {"cover": True, "regular": True, "winding": True, "jacobian_sign_mask": -1}
+    >>> _verdict(5, w, True).status, _verdict(5, dict(w, jacobian_sign_mask=1), True).status
+    ('certified', 'inconclusive')
+    >>> _verdict(5, w, False).provenance["message"]
+    "not every step was proven: Reif's eigen-conditions with lambda = 1/2 exact"
+    """
+    cover, regular, winding, sign = wit["cover"], wit["regular"], wit["winding"], wit["jacobian_sign_mask"]
+    # the winding of step 4 is counter-clockwise in the chart: it agrees with a positive chart Jacobian only,
+    # which is sign -1 in the mask's (flipped) coordinates
+    done = eigen_ok and cover and regular and winding and sign == -1
+    prov: dict[str, Any] = {"method": "Zorin 2000: cell cover of a fundamental annulus, derivative error bounds "
+                                      "of the regular butterfly, winding of a ring; Reif's eigen-conditions "
+                                      "(Reif 1995)"}
+    if done:
+        prov["message"] = ("C^1 for generic initial data (Reif's criterion), certified: Reif's eigen-conditions "
+                           "(lambda = 1/2 exact), a regular characteristic map (every cell of the annulus, "
+                           "Jacobian positive in the chart) winding once, all proven"
+                           + (" (n = 6 is the regular case)" if n == 6 else ""))
+        return Result(status=CERTIFIED, value=True, witness=wit, provenance=prov)
+    failed = [name for name, ok in (("Reif's eigen-conditions with lambda = 1/2 exact", eigen_ok),
+                                    ("the cover of the annulus", cover), ("the sign on every cell", regular),
+                                    ("the winding number", winding),
+                                    ("the Jacobian's sign agreeing with the winding", regular and sign == -1))
+              if not ok]
+    prov["message"] = "not every step was proven: " + ", ".join(failed)
+    return Result(status=INCONCLUSIVE, witness=wit, provenance=prov)
 
 
 def _winding_once(n, hi, net, phi, fam, B, W, K, idx, max_depth) -> bool:
