@@ -119,3 +119,14 @@ def test_cli_cells_line():
                         "provenance": {"message": "not every step was proven: the winding number"}})
     assert "not every step was proven: the winding number [inconclusive]" in line
     assert "not one sign" in line and "winding not proven" in line
+
+
+def test_the_regular_mask_is_the_catalogue_butterfly():
+    """zorin.py builds the regular part from the vertex rules' stencil (the engine does not import the
+    catalogue); it must be the catalogue's butterfly mask, coefficient for coefficient, at any tension."""
+    from schemes.surfaces import get
+
+    from analysis.vertex.zorin import regular_butterfly_mask
+
+    for w in ("1/16", "1/20", "-1/7"):
+        assert dict(regular_butterfly_mask(w).coeffs) == dict(get("butterfly").mask(w=w).coeffs)

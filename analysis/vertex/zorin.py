@@ -53,7 +53,7 @@ from typing import Any
 
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
-__all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "nested_neighbourhoods",
+__all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "regular_butterfly_mask", "nested_neighbourhoods",
            "outer_rings_nilpotent"]
 
 
@@ -162,6 +162,29 @@ def _tube_misses_ray(p, q, rad, rho) -> bool:
     return bool(a.real < -rad and b.real < -rad)
 
 
+def regular_butterfly_mask(tension=Fraction(1, 16)):
+    """The regular (valence-6) part of the butterfly family as a bivariate mask with dilation 2I, built from
+    :func:`analysis.vertex.rules.butterfly_stencil` (``a(alpha - 2 beta)`` = the weight of ``beta`` in the rule
+    of ``alpha``, one rule per coset), in the mask coordinates ``(x, -y)`` of the lattice chart — the same mask
+    as the catalogue's ``butterfly`` (a test compares them).
+
+    >>> a = regular_butterfly_mask()
+    >>> a.coeffs[(0, 0)], a.coeffs[(1, 0)], len(a.coeffs)
+    (1, 1/2, 25)
+    """
+    import sympy as sp
+
+    from ..bivariate.mask import BivariateMask
+    from .rules import butterfly_stencil
+
+    coeffs: dict = {}
+    for alpha in ((0, 0), (1, 0), (0, 1), (1, 1)):
+        for weight, beta in butterfly_stencil(*alpha, tension=sp.Rational(str(tension))):
+            k = (alpha[0] - 2 * beta[0], -(alpha[1] - 2 * beta[1]))
+            coeffs[k] = coeffs.get(k, 0) + weight
+    return BivariateMask(coeffs, name="butterfly")
+
+
 def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 16, r=Fraction(2, 5),
                              max_depth: int = 8, tension=Fraction(1, 16), prec: int = 128) -> Result:
     """Steps 0-4 of the module docstring for the modified butterfly at valence ``n``: *certified* (value True,
@@ -172,8 +195,6 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     """
     import sympy as sp
     from flint import acb, ctx, fmpq
-
-    from schemes.surfaces import get
 
     from ..bivariate.holder import holder_exponent
     from .charmap import eigenvector
@@ -192,7 +213,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
                 and sp.Rational(va.lam_exact) == sp.Rational(1, 2) and eigen["outer_rings_nilpotent"])
     cells = annulus_cells(lo, hi)
     cover = covers_annulus(cells, lo, hi)
-    a = get("butterfly").mask(w=str(tension))
+    a = regular_butterfly_mask(tension)
     bound = derivative_error_bound(a, r, holder=holder_exponent(a, budget=50))
     if not bound.is_certified:
         raise AnalysisError("the derivative error bound of the regular part is not certified")
