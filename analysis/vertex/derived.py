@@ -287,6 +287,17 @@ def derivative_error_bound(a, r, *, W=None, holder=None, max_nodes: int = MAX_NO
     return Result(value=K, status=CERTIFIED, witness=wit, provenance=prov)
 
 
+def cell_frame(a, bound: Result, direction):
+    """What a cell test needs from a certified :func:`derivative_error_bound`: ``(K, W, family, basis, omega,
+    index)`` — the constant, the coordinate matrix, the defect family along ``direction`` with its basis, its
+    invariant support and the position of each support point."""
+    if not bound.is_certified:
+        raise AnalysisError("the derivative error bound of the regular part is not certified")
+    d = defect_functionals(a, direction)
+    fam = d["family"]
+    return bound.value, bound.witness["W"], fam, d["basis"], fam.omega, {p: s for s, p in enumerate(fam.omega)}
+
+
 def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cells: int = 5000,
                           prec: int = 128) -> Result:
     """Prove that the Jacobian ``Im(conj(D_e1 f) D_e2 f)`` of the limit ``f`` (complex valued) has one sign on
@@ -315,15 +326,9 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
     """
     from flint import acb, acb_mat, arb, ctx
 
-    if not bound.is_certified:
-        raise AnalysisError("the derivative error bound is not certified")
-    K, W = bound.value, bound.witness["W"]
-    d1 = defect_functionals(a, (1, 0))
-    fam, B = d1["family"], d1["basis"]
-    omega = fam.omega
+    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 0))
     if len(net) != len(omega):
         raise AnalysisError(f"the local net has {len(net)} values, the invariant support {len(omega)} points")
-    idx = {p: s for s, p in enumerate(omega)}
     i0, i1, i2 = idx[(0, 0)], idx[(-1, 0)], idx[(0, -1)]
     old = ctx.prec
     ctx.prec = prec

@@ -198,7 +198,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
 
     from ..bivariate.holder import holder_exponent
     from .charmap import eigenvector
-    from .derived import defect_functionals, derivative_error_bound, jacobian_sign_on_cell
+    from .derived import cell_frame, derivative_error_bound, jacobian_sign_on_cell
     from .rules import _tri_home, modified_butterfly_rules
     from .spectrum import analyse
 
@@ -215,13 +215,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     cover = covers_annulus(cells, lo, hi)
     a = regular_butterfly_mask(tension)
     bound = derivative_error_bound(a, r, holder=holder_exponent(a, budget=50))
-    if not bound.is_certified:
-        raise AnalysisError("the derivative error bound of the regular part is not certified")
-    K, W = bound.value, bound.witness["W"]
-    d = defect_functionals(a, (1, 1))
-    fam, B = d["family"], d["basis"]
-    omega = fam.omega
-    idx = {p: s for s, p in enumerate(omega)}
+    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
     if not nested_neighbourhoods(omega, a.dilation.digits):
         raise AnalysisError("the refinements' neighbourhoods are not inside the cell's: the cover argument fails")
     old = ctx.prec
