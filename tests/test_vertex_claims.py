@@ -93,6 +93,9 @@ def test_a_formula_undefined_at_a_valence_is_refuted_there():
 
 
 def test_an_equal_formula_written_otherwise_is_certified_and_one_outside_arb_is_inconclusive():
+    """Exact equality through the minimal polynomial; a formula the ball evaluator cannot enclose is undecided."""
     assert _verdict("3/8 + (2*cos(pi/n)**2 - 1)/4", "5..7").label == T       # exact: cos(2x) = 2 cos(x)^2 - 1
-    v = _verdict("3/8 + cos(2*pi/n)**(3/2)/4")                                # powers other than 1/2: not enclosed
+    v = _verdict("3/8 + cos(2*pi/n)**(3/2)/4")                      # a rational power of a positive ball: enclosed
+    assert v.label == F and _first_failure(v) == 5
+    v = _verdict("3/8 + cos(2*pi/n)**(3/2)/4", "3..4")              # cos(2 pi/3) < 0: not a real number
     assert v.label == I and "Arb evaluator" in v.summary

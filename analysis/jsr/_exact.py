@@ -120,11 +120,17 @@ class NoEnclosure(ValueError):
 _ARB_FUNCS = {"sin", "cos", "tan", "exp", "log", "atan", "asin", "acos", "sinh", "cosh", "tanh"}
 
 
-def sympy_to_arb(e: sp.Expr) -> arb:
+def sympy_to_arb(e: sp.Expr, known: dict | None = None) -> arb:
     """A rigorous Arb ball containing the real number ``e`` (numbers, +, *, powers, pi, E, sqrt,
-    and the elementary functions in ``_ARB_FUNCS``)."""
+    and the elementary functions in ``_ARB_FUNCS``; ``cos(q pi)`` for rational ``q`` through Arb's exact-argument
+    cosine); ``known`` maps symbols to the balls they stand for."""
+    if known and e in known:
+        return known[e]
     if e.is_Rational:
         return arb(fmpq(int(e.p), int(e.q)))
+    if isinstance(e, sp.cos) and (e.args[0] / sp.pi).is_Rational:
+        q = e.args[0] / sp.pi
+        return arb.cos_pi_fmpq(fmpq(int(q.p), int(q.q)))
     if e is sp.pi:
         return arb.pi()
     if e is sp.E:
@@ -132,16 +138,16 @@ def sympy_to_arb(e: sp.Expr) -> arb:
     if e.is_Add:
         out = arb(0)
         for t in e.args:
-            out += sympy_to_arb(t)
+            out += sympy_to_arb(t, known)
         return out
     if e.is_Mul:
         out = arb(1)
         for t in e.args:
-            out *= sympy_to_arb(t)
+            out *= sympy_to_arb(t, known)
         return out
     if e.is_Pow:
         b, x = e.args
-        bb = sympy_to_arb(b)
+        bb = sympy_to_arb(b, known)
         if x.is_Integer:
             n = int(x)
             return bb ** n if n >= 0 else 1 / (bb ** (-n))
@@ -153,9 +159,9 @@ def sympy_to_arb(e: sp.Expr) -> arb:
             return r ** p if p >= 0 else 1 / (r ** (-p))
         if not bb > 0:
             raise NoEnclosure(f"cannot enclose {e}")
-        return (bb.log() * sympy_to_arb(x)).exp()
+        return (bb.log() * sympy_to_arb(x, known)).exp()
     if isinstance(e, sp.Function) and e.func.__name__ in _ARB_FUNCS and len(e.args) == 1:
-        return getattr(sympy_to_arb(e.args[0]), e.func.__name__)()
+        return getattr(sympy_to_arb(e.args[0], known), e.func.__name__)()
     raise NoEnclosure(f"cannot enclose {e}")
 
 

@@ -91,6 +91,17 @@ class _Echelon:
         return len(self.rows)
 
 
+def _images(frontier, mats, n: int) -> list:
+    """``A v`` for every vector ``v`` of ``frontier`` and every matrix ``A`` (exact, in that order)."""
+    out = []
+    for v in frontier:
+        col = fmpq_mat(n, 1, v)
+        for A in mats:
+            w = A * col
+            out.append([w[a, 0] for a in range(n)])
+    return out
+
+
 def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> list[list[fmpq]]:
     """Basis (rows, reduced echelon form) of the smallest common invariant subspace containing
     ``start``; stops early (returning what it has, of dimension ``>= limit``) once the dimension
@@ -101,12 +112,7 @@ def _krylov(mats: Sequence[fmpq_mat], start: list[fmpq], n: int, limit: int) -> 
     vecs = [start]
     frontier = [start]
     while frontier and len(ech) < limit:
-        new_vecs = []
-        for v in frontier:
-            col = fmpq_mat(n, 1, v)
-            for A in mats:
-                w = A * col
-                new_vecs.append([w[a, 0] for a in range(n)])
+        new_vecs = _images(frontier, mats, n)
         # the new directions: candidates that increased the rank, in order
         frontier = []
         for v in new_vecs:
@@ -165,12 +171,7 @@ def _krylov_guided(mats: Sequence[fmpq_mat], mats_p: Sequence[nmod_mat], start: 
     cols_p = [first]
     frontier = [start]
     while frontier:
-        cands = []
-        for v in frontier:
-            col = fmpq_mat(n, 1, v)
-            for A in mats:
-                w = A * col
-                cands.append([w[a, 0] for a in range(n)])
+        cands = _images(frontier, mats, n)
         cand_p = [mod_col(v) for v in cands]
         if any(c is None for c in cand_p):
             return None

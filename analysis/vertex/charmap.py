@@ -203,6 +203,21 @@ def _split(coeffs: list[list], axis: int) -> tuple[list[list], list[list]]:
     return [p[0] for p in pairs], [p[1] for p in pairs]
 
 
+def _one_sign(jac, first, certified):
+    """``(sign, pieces, regular)``: the sign of the first Bernstein coefficient ``first`` (0 when it is not
+    certainly nonzero) and whether every Jacobian in ``jac`` is certified of that sign by ``certified(J,
+    sign) -> (ok, pieces)`` (stopping at the first failure)."""
+    sign = 1 if first > 0 else (-1 if first < 0 else 0)
+    pieces, regular = 0, sign != 0
+    for J in jac:
+        if not regular:
+            break
+        ok, k = certified(J, sign)
+        pieces += k
+        regular = regular and ok
+    return sign, pieces, regular
+
+
 def _sign_certified(coeffs: list[list], sign: int, depth: int = 0) -> tuple[bool, int]:
     """Is the Bernstein polynomial of one sign on its square? (pieces examined)"""
     flat = [x for row in coeffs for x in row]
@@ -278,14 +293,7 @@ def _segment_verdict(patches, jacobian, n: int, prec: int, kind: str) -> dict:
     from flint import arb
 
     jac = [jacobian(P) for P in patches]
-    sign = 1 if jac[0][0][0] > 0 else (-1 if jac[0][0][0] < 0 else 0)
-    pieces, regular = 0, sign != 0
-    for J in jac:
-        if not regular:
-            break
-        ok, k = _sign_certified(J, sign)
-        pieces += k
-        regular = regular and ok
+    sign, pieces, regular = _one_sign(jac, jac[0][0][0], _sign_certified)
     A, Bq, C = patches
     d = len(A) - 1
     curve = [[A[d][j] for j in range(d + 1)], [Bq[d][j] for j in range(d + 1)],
@@ -300,7 +308,7 @@ def characteristic_map(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> 
     outer boundary equal to that sign) of the characteristic map of quad or triangle rules on the 2-ring at
     valence n, at ``prec`` bits: status certified (regular and injective), refuted (regular, certified
     winding number of the wrong value: not injective) or inconclusive."""
-    from flint import arb, ctx
+    from flint import ctx
 
     if rules.lattice == "dual quad":
         return characteristic_map_doo_sabin(rules, n, lam_ball, prec)
@@ -438,14 +446,7 @@ def characteristic_map_triangle(rules: LocalRules, n: int, lam_ball, prec: int =
         net = _TriNet(rules, n, v, lam_ball)
         patches = [net.bezier_tri(*st) for st in SUBTRIANGLES[1:]]
         jac = [_tri_jacobian(P) for P in patches]
-        sign = 1 if jac[0][0] > 0 else (-1 if jac[0][0] < 0 else 0)
-        pieces, regular = 0, sign != 0
-        for J in jac:
-            if not regular:
-                break
-            ok, k = _tri_sign_certified(J, sign)
-            pieces += k
-            regular = regular and ok
+        sign, pieces, regular = _one_sign(jac, jac[0][0], _tri_sign_certified)
         i4 = bezier_index(4)
         edge = [(0, 4 - t, t) for t in range(5)]                 # from vertex 1 to vertex 2
         curve = [[patches[0][i4.index(e)] for e in edge], [patches[1][i4.index(e)] for e in edge]]
@@ -526,7 +527,7 @@ class _DualNet(_Net):
 def characteristic_map_doo_sabin(rules: LocalRules, n: int, lam_ball, prec: int = 128) -> dict:
     """As :func:`characteristic_map` for Doo–Sabin at an n-gon: the segment is the three level-1 squares
     [1,2]x[0,1], [1,2]x[1,2], [0,1]x[1,2] (primal lattice, sector 0), each a biquadratic patch."""
-    from flint import arb, ctx
+    from flint import ctx
 
     old = ctx.prec
     ctx.prec = prec

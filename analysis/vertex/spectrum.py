@@ -597,49 +597,19 @@ def _exact_eigenspace(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
 
 
 def arb_value(expr: sp.Expr, n: int, prec: int = 128):
-    """An Arb ball for an expression in c = cos(2 pi/n), n and cos(q pi) (q rational) built from rationals, + * / and powers
-    with integer or half-integer exponents; None if it has anything else (or a square root of a
-    ball that may be negative)."""
+    """An Arb ball for an expression in c = cos(2 pi/n) and n (and what
+    :func:`analysis.jsr._exact.sympy_to_arb` encloses: rationals, + * /, powers, pi, elementary functions);
+    None if it has anything else (or a root of a ball that may be negative)."""
     from flint import arb, ctx, fmpq
+
+    from ..jsr._exact import NoEnclosure, sympy_to_arb
 
     old = ctx.prec
     ctx.prec = prec
     try:
         cval = arb.cos_pi_fmpq(fmpq(2, n))
-
-        def ev(e):
-            if e.is_Rational:
-                return arb(int(e.p)) / int(e.q)
-            if e == c or e == C1:
-                return cval
-            if e == n_sym:
-                return arb(n)
-            if isinstance(e, sp.cos) and (e.args[0] / sp.pi).is_Rational:
-                q = e.args[0] / sp.pi
-                return arb.cos_pi_fmpq(fmpq(int(q.p), int(q.q)))
-            if e.is_Add:
-                out = arb(0)
-                for a in e.args:
-                    out += ev(a)
-                return out
-            if e.is_Mul:
-                out = arb(1)
-                for a in e.args:
-                    out *= ev(a)
-                return out
-            if e.is_Pow:
-                b, x = ev(e.base), e.exp
-                if x.is_Integer:
-                    return b ** int(x)
-                if x == sp.Rational(1, 2) and b > 0:
-                    return b.sqrt()
-                if x == sp.Rational(-1, 2) and b > 0:
-                    return 1 / b.sqrt()
-            raise ValueError
-
-        try:
-            return ev(expr)
-        except (ValueError, ZeroDivisionError):
-            return None
+        return sympy_to_arb(expr, {c: cval, C1: cval, n_sym: arb(n)})
+    except (NoEnclosure, ValueError, ZeroDivisionError):
+        return None
     finally:
         ctx.prec = old
