@@ -325,3 +325,14 @@ def test_sum_rule_order_beyond_the_limit_is_refused(monkeypatch):
     monkeypatch.setattr(H, "sum_rules", lambda a: sum_rules(a, max_order=2))
     with pytest.raises(AnalysisError, match="every order up to 2"):
         H.holder_exponent(BivariateMask.from_symbol("(1+z1)**2*(1+z2)**2/(4*z1*z2)"))
+
+
+def test_an_inconclusive_alpha_says_which_budget_it_had(capsys):
+    """The JSR of the quincunx scheme does not close in 3 work units: the text says so and names the budget;
+    with the default budget the same line is certified and carries no such note."""
+    main(["surface", "--scheme", "quincunx-zp", "--budget", "3"])
+    line = next(t for t in capsys.readouterr().out.splitlines() if t.startswith("alpha"))
+    assert "(inconclusive;" in line and "a larger --budget may settle it (now 3)" in line
+    main(["surface", "--scheme", "quincunx-zp"])
+    line = next(t for t in capsys.readouterr().out.splitlines() if t.startswith("alpha"))
+    assert "certified" in line and "--budget" not in line

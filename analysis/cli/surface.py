@@ -121,6 +121,9 @@ def _alpha_text(h) -> str:
     hi = "?" if h.upper is None else (sp.sstr(h.upper) if h.witness.get("alpha_upper_exact")
                                       else f"{float(h.upper):.15g}")
     note = "; the upper end is exact" if h.witness.get("alpha_upper_exact") else ""
+    jsr = h.witness.get("jsr")
+    if h.status == "inconclusive" and jsr is not None and jsr.status == "inconclusive":
+        note += f"; the JSR bounds did not meet: a larger --budget may settle it (now {h.provenance['budget']})"
     return f"alpha in [{lo}, {hi}] ({h.status}{note})"
 
 
