@@ -148,7 +148,12 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
         from ..vertex.valence import NO_CHARACTERISTIC_MAP
 
         why = NO_CHARACTERISTIC_MAP.get(lattice, "the characteristic map is not checked for these rules")
-        lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
+        if "refuted" in c1:
+            lines.append(f"C^1: refuted (not C^1 for generic initial data, certified) at n = {_ranges(c1['refuted'])}"
+                         + (f"; inconclusive at n = {_ranges(c1['inconclusive'])} (eigen-conditions only; {why})"
+                            if "inconclusive" in c1 else ""))
+        else:
+            lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
         sampled = [e for e in entries if e.get("characteristic_map_numerical", {}).get("value")]
         if sampled:
             rings = sampled[0]["characteristic_map_numerical"]["witness"]["resolution"]

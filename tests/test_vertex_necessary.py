@@ -1,0 +1,80 @@
+"""Certified "not C^1" at extraordinary vertices (analysis.vertex.necessary): the original butterfly at
+n = 3 (a Jordan chain of length 3 in block 0: the leading eigenfunction has one sign, winding 0) and at n = 8
+(the dominant eigenvalue simple in block 2: the eigenfunction winds twice); where a hypothesis is missing the
+verdict stays inconclusive and says which."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+import sympy as sp
+
+from analysis.vertex.necessary import HI, HOLDER_BUDGET, R_BOUND, RING, interpolating, not_c1
+from analysis.vertex.rules import butterfly_rules, modified_butterfly_rules, scheme_rules
+from analysis.vertex.spectrum import jordan_ranks
+
+
+def test_interpolating_is_read_from_the_rules():
+    assert interpolating(butterfly_rules(2)) and interpolating(modified_butterfly_rules(3, 5))
+    assert not interpolating(scheme_rules("loop", 2)) and not interpolating(scheme_rules("catmull-clark", 2))
+
+
+def test_jordan_structure_of_the_butterfly_at_valence_3_is_exact():
+    """lambda = 1/4 has algebraic multiplicity 7 on the 2-ring but only 3 eigenvectors: one chain of length 3
+    in block 0 and one of length 2 in blocks 1 and 2 (full matrix: nullity 3)."""
+    quarter = sp.Rational(1, 4)
+    assert jordan_ranks(butterfly_rules(2), 3, 0, quarter, 4) == [4, 3, 2, 1, 1]
+    assert jordan_ranks(butterfly_rules(2), 3, 1, quarter, 3) == [3, 2, 1, 1]
+    assert jordan_ranks(butterfly_rules(2), 3, 1, sp.Rational(1, 8), 1) == [3, 3]      # not an eigenvalue
+
+
+def test_butterfly_is_not_c1_at_valence_3():
+    r = not_c1(butterfly_rules(3), 3)
+    assert r.status == "refuted" and r.value is False
+    w = r.witness
+    assert (w["block"], w["jordan_chain"], w["winding_number"], w["loop_ring"], w["ring"]) == (0, 3, 0, HI, RING)
+    assert "Jordan chain of length 3 in block 0" in w["verdict"] and "winding 0 times" in w["verdict"]
+    assert any("nilpotent" in h for h in w["hypotheses"])
+
+
+def test_butterfly_is_not_c1_at_valence_8_and_the_verdict_reaches_the_command():
+    from analysis.vertex.valence import vertex_results
+
+    res = vertex_results(butterfly_rules(3), 8)
+    c1, nc = res["c1"], res["not_c1"]
+    assert nc.status == "refuted" and (nc.witness["block"], nc.witness["winding_number"]) == (2, 2)
+    assert c1.status == "refuted" and c1.value is False and "Fourier block 2" in c1.witness["verdict"]
+    assert c1.witness["theorem"] == nc.witness["theorem"] and len(c1.witness["hypotheses"]) == 7
+
+
+def test_not_c1_stays_inconclusive_where_a_hypothesis_is_missing():
+    seven = not_c1(butterfly_rules(3), 7)                 # Reif's case: block 1 dominant
+    assert seven.status == "inconclusive" and "block 1" in seven.witness["verdict"]
+    modified = not_c1(modified_butterfly_rules(3, 8), 8)
+    assert modified.status == "inconclusive" and "block 1" in modified.witness["verdict"]
+    loop = not_c1(scheme_rules("loop", 2), 8)
+    assert loop.status == "inconclusive" and "butterfly family only" in loop.witness["verdict"]
+
+
+def test_the_winding_certificate_can_fail():
+    """Without refinement the tubes around the arc's images are too wide to miss the ray: not proven."""
+    from flint import ctx
+
+    from analysis.vertex.charmap import eigenvector
+    from analysis.vertex.derived import cell_frame
+    from analysis.vertex.spectrum import analyse
+    from analysis.vertex.zorin import eigenfunction_nets, regular_bound, winding_of_arc
+
+    a, bound = regular_bound(Fraction(1, 16), R_BOUND, HOLDER_BUDGET)
+    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
+    top = max((e for e in analyse(butterfly_rules(3), 8, curvature=False).eigenvalues if e.k == 2),
+              key=lambda e: float(e.modulus.lower()))
+    old = ctx.prec
+    ctx.prec = 128
+    try:
+        big = butterfly_rules(RING)
+        phi, net = eigenfunction_nets(big, 8, eigenvector(big, 8, top.ball.real, 2), omega, 2)
+        assert winding_of_arc(8, HI, net, phi, fam, B, W, K, idx, 8, 2)
+        assert not winding_of_arc(8, HI, net, phi, fam, B, W, K, idx, 0, 2)
+    finally:
+        ctx.prec = old
