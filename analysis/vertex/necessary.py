@@ -162,12 +162,14 @@ def _leading_block(rules: LocalRules, n: int) -> dict | str:
     if not rest:
         return "no eigenvalue besides 1"
     top = max(rest, key=lambda e: float(e.modulus.lower()))
+    if not (top.modulus < 1 and top.modulus > 0):
+        return "the leading eigenvalue is not certified to lie strictly between 0 and 1 in modulus"
     tied = [e for e in rest if not (e.modulus < top.modulus)]
     if not all(e.real for e in tied):
         return "an eigenvalue of the leading modulus is not certified real"
     if len(tied) == 1 and top.mult == 1:
         if top.k == 0 or 2 <= top.k < n / 2:
-            return {"top": top, "k": top.k, "chain": 1, "ties": {top.k: [top.k + 1, top.k]}}
+            return {"top": top, "k": top.k, "chain": 1, "ties": {}}
         return f"the dominant eigenvalue is simple in block {top.k} (Reif's case when k = 1, not this theorem's)"
     exact = _exact_root(top.factor, top.ball, n, top.k, _siblings(a.eigenvalues, top))
     lam_c1 = _lambda_in_c1(top, exact) if top.k == 1 or (exact is not None and exact.is_Rational) else None
