@@ -34,7 +34,10 @@ def test_butterfly_is_not_c1_at_valence_3():
     w = r.witness
     assert (w["block"], w["jordan_chain"], w["winding_number"], w["loop_ring"], w["ring"]) == (0, 3, 0, HI, RING)
     assert "Jordan chain of length 3 in block 0" in w["verdict"] and "winding 0 times" in w["verdict"]
+    assert "the others (blocks 1, 2) proven equal to lambda exactly, with shorter Jordan chains" in w["verdict"]
     assert any("nilpotent" in h for h in w["hypotheses"])
+    assert "lambda real, 0 < |lambda| < 1 (certified)" in w["hypotheses"]
+    assert isinstance(w["K"], Fraction) and w["K_float"] == float(w["K"])
 
 
 def test_butterfly_is_not_c1_at_valence_8_and_the_verdict_reaches_the_command():
@@ -44,7 +47,9 @@ def test_butterfly_is_not_c1_at_valence_8_and_the_verdict_reaches_the_command():
     c1, nc = res["c1"], res["not_c1"]
     assert nc.status == "refuted" and (nc.witness["block"], nc.witness["winding_number"]) == (2, 2)
     assert c1.status == "refuted" and c1.value is False and "Fourier block 2" in c1.witness["verdict"]
-    assert c1.witness["theorem"] == nc.witness["theorem"] and len(c1.witness["hypotheses"]) == 7
+    assert c1.witness["theorem"] == nc.witness["theorem"] and len(c1.witness["hypotheses"]) == 8
+    # lambda is shown as the root of its factor (cos(2 pi 2/8) = 0 set) in its isolating ball, not rounded
+    assert "lambda = root of 128*lam**3 - 96*lam**2 + 19*lam - 1 in [0.46904152" in nc.witness["verdict"]
 
 
 def test_not_c1_stays_inconclusive_where_a_hypothesis_is_missing():
