@@ -83,3 +83,51 @@ def test_the_winding_certificate_can_fail():
         assert not winding_of_arc(8, HI, net, phi, fam, B, W, K, idx, 0, 2)
     finally:
         ctx.prec = old
+
+
+def test_the_winding_certificate_refuses_a_function_that_changes_sign_at_full_depth():
+    """n = 3, block 0: the eigenfunction minus 4/5 of its value at (5, 0) is positive at (5, 0) and negative at
+    (3, 2), both on ring 5 (interpolating: the net's values are the function's), so it has a zero on the loop:
+    at the full refinement depth of the theorem the test must not prove "one sign"."""
+    from flint import acb, arb, ctx, fmpq
+
+    from analysis.vertex.charmap import eigenvector
+    from analysis.vertex.derived import cell_frame
+    from analysis.vertex.zorin import eigenfunction_nets, regular_bound, winding_of_arc
+
+    a, bound = regular_bound(Fraction(1, 16), R_BOUND, HOLDER_BUDGET)
+    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
+    old = ctx.prec
+    ctx.prec = 128
+    try:
+        big = butterfly_rules(RING)
+        v = eigenvector(big, 3, arb(fmpq(1, 4)), 0)[1:]               # lambda = 1/4 exactly; centre dropped
+        at = {p: big.coords.index(p) for p in ((HI, 0), (3, 2))}
+        shift = acb(fmpq(4, 5)) * v[at[(HI, 0)]]
+        shifted = [x - shift for x in v]
+        assert shifted[at[(HI, 0)]].real > 0 and shifted[at[(3, 2)]].real < 0
+        phi, net = eigenfunction_nets(big, 3, v, omega, 0)
+        assert winding_of_arc(3, HI, net, phi, fam, B, W, K, idx, 8, 0)      # the eigenfunction itself: proven
+        phi, net = eigenfunction_nets(big, 3, shifted, omega, 0)
+        assert not winding_of_arc(3, HI, net, phi, fam, B, W, K, idx, 8, 0)
+    finally:
+        ctx.prec = old
+
+
+def test_jordan_structure_at_valence_3_on_the_full_matrix():
+    """Independent of the Fourier blocks: the full 19 x 19 local matrix on the 3-ring (the rules' own
+    builder), ranks of (S - I/4)^j over Q for j = 0..3 — nullities 3, 6, 7: three chains, of lengths 3, 2, 2."""
+    from flint import fmpq, fmpq_mat
+
+    from analysis.vertex.blocks import local_matrix
+
+    S = local_matrix(butterfly_rules(3), 3)
+    m = S.rows
+    A = fmpq_mat(m, m, [fmpq(int(x.p), int(x.q)) - (fmpq(1, 4) if i == j else 0)
+                        for i, row in enumerate(S.tolist()) for j, x in enumerate(row)])
+    P, ranks = fmpq_mat(m, m, [int(i == j) for i in range(m) for j in range(m)]), []
+    for _ in range(4):
+        ranks.append(P.rank())
+        P = P * A
+    assert (m, ranks) == (19, [19, 16, 13, 12])
+    assert (P * A).rank() == 12                     # j = 4: no longer chain
