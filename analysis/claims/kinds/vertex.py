@@ -36,7 +36,7 @@ certified characteristic map where the module has one). The verdicts:
 * C^1: certified when C^1 is certified at every valence (eigen-conditions and a certified regular,
   injective characteristic map: Reif's sufficient condition); refuted at the first valence where "not C^1
   for generic initial data" is certified (:mod:`analysis.vertex.necessary`: a theorem whose hypotheses are
-  all checked — for the butterfly at n = 3 and n >= 8); inconclusive otherwise, with the reason of the
+  all checked — for the butterfly at n = 3 and 8..50); inconclusive otherwise, with the reason of the
   first undecided valence (e.g. the butterfly's characteristic map, which is not certified).
 * not C^1: certified when "not C^1" is certified at every valence, refuted at a valence where C^1 is
   certified, inconclusive otherwise.
