@@ -167,7 +167,9 @@ def test_butterfly_c1_is_never_certified_and_says_why():
     assert e["curvature"]["value"] == "not applicable"
     bad = valence_entry(scheme_rules("butterfly", 3, 9), 9)
     assert bad["reif"]["status"] == "certified" and bad["reif"]["value"] is False
-    assert bad["c1"]["status"] == "inconclusive" and "eigen-condition fails" in bad["c1"]["witness"]["verdict"]
+    # an eigen-condition fails, and "not C^1" is certified by a theorem whose hypotheses are all checked
+    assert bad["c1"]["status"] == "refuted" and bad["c1"]["value"] is False
+    assert "winds 2 times" in bad["c1"]["witness"]["verdict"] and bad["not_c1"]["witness"]["block"] == 2
 
 
 def test_sampled_characteristic_net_is_numerical_evidence_only():

@@ -16,7 +16,8 @@ DATA = Path(__file__).parent / "data" / "vertex-claims.toml"
 
 T, F, I = "CERTIFIED TRUE", "REFUTED", "INCONCLUSIVE"
 EXPECTED = {"Loop.lambda": T, "Loop.lambda.wrong": F, "CatmullClark.lambda": T, "Loop.C1": T, "Loop.eigen": T,
-            "Butterfly.C1": I, "Butterfly.C1.4": I, "Butterfly.eigen": F, "Warren.eigen": T}
+            "Butterfly.C1": F, "Butterfly.C1.4": I, "Butterfly.eigen": F, "Warren.eigen": T,
+            "Butterfly.notC1.3": T, "Butterfly.notC1.4": I, "Warren.C1.3": I}
 
 
 @pytest.fixture(scope="module")
@@ -41,11 +42,22 @@ def test_refutations_name_the_first_failing_valence_and_the_reason(verdicts):
 
 
 def test_failed_eigen_conditions_leave_c1_undecided_and_say_what_failed(verdicts):
-    """Reif's conditions are sufficient; their certified failure is not a certified "not C^1" (that would
-    rest on Zorin's hypotheses, which are not checked), so the C^1 claim stays open, naming the failure."""
-    v = verdicts["Butterfly.C1"]
-    assert "n = 3" in v.summary and "lambda is not double" in v.summary and "fail, certified" in v.summary
+    """Reif's conditions are sufficient; their certified failure is not by itself a certified "not C^1"
+    (Warren's weight at n = 3: no not-C^1 theorem with checked hypotheses applies to Loop-type rules), so
+    the C^1 claim stays open, naming the failure."""
+    v = verdicts["Warren.C1.3"]
+    assert "n = 3" in v.summary and "fail, certified" in v.summary and "no not-C^1 theorem" in v.summary
     assert "not C^1" in v.settle
+
+
+def test_butterfly_c1_is_refuted_by_a_checked_theorem(verdicts):
+    """The butterfly at n = 3: lambda = 1/4 has a Jordan chain of length 3 in block 0 whose eigenfunction has
+    one sign around the vertex (analysis.vertex.necessary): "C^1 at 3..8" is refuted at n = 3, "not C^1 at 3"
+    is certified, "not C^1 at 4" stays open (Reif's conditions hold there)."""
+    v = verdicts["Butterfly.C1"]
+    assert _first_failure(v) == 3 and "Jordan chain of length 3" in v.summary and "not C^1" in v.corrected
+    assert "n = 3" in verdicts["Butterfly.notC1.3"].summary
+    assert "n = 4" in verdicts["Butterfly.notC1.4"].summary
 
 
 def test_undecided_c1_says_why(verdicts):

@@ -148,7 +148,12 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
         from ..vertex.valence import NO_CHARACTERISTIC_MAP
 
         why = NO_CHARACTERISTIC_MAP.get(lattice, "the characteristic map is not checked for these rules")
-        lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
+        if "refuted" in c1:
+            lines.append(f"C^1: refuted (not C^1 for generic initial data, certified) at n = {_ranges(c1['refuted'])}"
+                         + (f"; inconclusive at n = {_ranges(c1['inconclusive'])} (eigen-conditions only; {why})"
+                            if "inconclusive" in c1 else ""))
+        else:
+            lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
         sampled = [e for e in entries if e.get("characteristic_map_numerical", {}).get("value")]
         if sampled:
             rings = sampled[0]["characteristic_map_numerical"]["witness"]["resolution"]
@@ -215,7 +220,10 @@ def cmd_vertex(args) -> None:
            "closed_form": {k: v for k, v in closed.items() if k != "expr"}, "valences": entries,
            "c1_note": "C^1 is certified only with a certified regular and injective characteristic map "
                       "(checked for Loop- and Catmull-Clark-type rules on the 2-ring and for Doo-Sabin; not for "
-                      "the butterfly family or sqrt3); otherwise the verdict is inconclusive"}
+                      "the butterfly family or sqrt3); refuted (not C^1 for generic initial data) only where "
+                      "analysis.vertex.necessary proves it at that valence, by a theorem whose hypotheses are all "
+                      "checked (so far the original butterfly at n = 3 and 8..50); otherwise the verdict is "
+                      "inconclusive"}
     if cells:
         doc["c1_note"] += ("; --charmap-cells: Zorin's cell test of the modified butterfly's characteristic map, "
                            "in each valence's charmap_cells (certified: C^1 for generic initial data)")

@@ -75,7 +75,11 @@ def eigenvector(rules: LocalRules, n: int, lam_ball, k: int = 1) -> list:
     lambda: the characteristic map's), normalised so that one entry is 1 (the first one that works): the
     remaining entries solve all but one equation of ``(B - lambda I) v = 0``, for every lambda in the ball
     (a solve that succeeds proves the reduced system nonsingular there, so the eigenvalue is geometrically
-    simple in the block)."""
+    simple in the block).
+
+    The dropped equation is not checked: the result encloses an eigenvector only if ``lam_ball`` contains the
+    true eigenvalue (then that equation holds there, as ``B - lambda I`` is singular). Callers pass an
+    isolating ball of a certified eigenvalue of the block (:func:`analysis.vertex.spectrum.analyse`)."""
     from flint import acb, acb_mat
 
     B = fourier_block(rules, k, n)

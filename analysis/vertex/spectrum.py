@@ -554,6 +554,50 @@ def _exact_eigenspace(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
     Q(zeta), zeta = exp(2 pi i/n) (w = zeta^k, C1 = (zeta + 1/zeta)/2; mu a polynomial in C1), with sympy's
     DomainMatrix; None if an entry is not a rational polynomial in w and C1."""
     from flint import acb, fmpq
+
+    got = _exact_shifted_block(rules, n, k, mu_c1)
+    if got is None:
+        return None
+    K, M = got
+    size = M.shape[0]
+    kernel = M.nullspace().to_Matrix()
+    z = acb(fmpq(2, n)).exp_pi_i()
+    basis = []
+    for r in range(kernel.rows):
+        vec = []
+        for j in range(size):
+            x = K.from_sympy(kernel[r, j])
+            coeffs = [sp.Rational(q) for q in x.to_list()]
+            val = acb(0)
+            for q in coeffs:
+                val = val * z + acb(fmpq(int(q.p), int(q.q)))
+            vec.append(val)
+        basis.append(vec)
+    return size, basis
+
+
+def jordan_ranks(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr, upto: int) -> list[int] | None:
+    """``[size, rank(B_k - mu I), rank((B_k - mu I)^2), ..., rank((B_k - mu I)^upto)]``, exact over
+    Q(exp(2 pi i/n)) (mu a polynomial in C1): the Jordan structure of mu in block k (the number of Jordan
+    blocks of size >= j is ``r_(j-1) - r_j``); None if an entry is not a rational polynomial in w and C1.
+
+    >>> from analysis.vertex.rules import butterfly_rules
+    >>> jordan_ranks(butterfly_rules(2), 3, 0, sp.Rational(1, 4), 4)
+    [4, 3, 2, 1, 1]
+    """
+    got = _exact_shifted_block(rules, n, k, mu_c1)
+    if got is None:
+        return None
+    _, M = got
+    ranks, P = [M.shape[0]], M
+    for _ in range(upto):
+        ranks.append(P.rank())
+        P = P * M
+    return ranks
+
+
+def _exact_shifted_block(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
+    """``(K, B_k - mu I)`` as a DomainMatrix over ``K = Q(exp(2 pi i/n))``, or None (see :func:`_exact_eigenspace`)."""
     from sympy.polys.matrices import DomainMatrix
 
     from .blocks import _laurent, w
@@ -580,20 +624,7 @@ def _exact_eigenspace(rules: LocalRules, n: int, k: int, mu_c1: sp.Expr):
         rows = [[elem(B[i, j]) - (mu if i == j else K.zero) for j in range(size)] for i in range(size)]
     except (sp.PolificationFailed, sp.CoercionFailed, sp.GeneratorsNeeded):
         return None
-    kernel = DomainMatrix(rows, (size, size), K).nullspace().to_Matrix()
-    z = acb(fmpq(2, n)).exp_pi_i()
-    basis = []
-    for r in range(kernel.rows):
-        vec = []
-        for j in range(size):
-            x = K.from_sympy(kernel[r, j])
-            coeffs = [sp.Rational(q) for q in x.to_list()]
-            val = acb(0)
-            for q in coeffs:
-                val = val * z + acb(fmpq(int(q.p), int(q.q)))
-            vec.append(val)
-        basis.append(vec)
-    return size, basis
+    return K, DomainMatrix(rows, (size, size), K)
 
 
 def arb_value(expr: sp.Expr, n: int, prec: int = 128):

@@ -12,8 +12,10 @@ injective characteristic map (:mod:`.charmap`: quad and triangle rules on the 2-
 certified C^1 for generic initial data (Reif 1995, a sufficient condition); a regular but not injective
 characteristic map is reported inconclusive (the sufficient condition fails); without the characteristic map (rules on the 1-ring) it is
 "inconclusive: eigen-conditions hold, characteristic map not checked"; where an eigen-condition fails
-(certified), the standard C^1 test does not apply, which is reported, not turned into a claim that the
-surface is not C^1.
+(certified), the standard C^1 test does not apply; the verdict is then *refuted* (not C^1 for generic
+initial data) only where :mod:`.necessary` proves it with a theorem whose hypotheses are all checked (the
+butterfly family: the leading eigenfunction does not wind once around the vertex), and otherwise stays
+inconclusive with the missing hypothesis.
 
 Curvature (J. Peters, U. Reif, Shape characterization of subdivision surfaces — basic principles, CAGD
 21 (2004); K. Karčiauskas, J. Peters, U. Reif, Shape characterization of subdivision surfaces — case
@@ -89,11 +91,16 @@ def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
             "factors": [str(g.as_expr()) for g, _ in fl if g.degree(lam) > 0]}
 
 
-def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = "") -> tuple[str, str]:
+def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = "",
+               necessary: Result | None = None) -> tuple[str, str]:
     """The C^1 verdict: certified only with the eigen-conditions *and* a certified regular, injective
     characteristic map, and then for generic initial data (Reif 1995: a sufficient condition). A regular
     map that is certified not injective makes Reif's sufficient condition fail; that is reported
-    inconclusive, not as a proof that the scheme is not C^1 (no necessity theorem is applied here)."""
+    inconclusive, not as a proof that the scheme is not C^1. Refuted (not C^1 for generic initial data) only
+    by ``necessary``, a *refuted* :func:`analysis.vertex.necessary.not_c1` (a theorem whose hypotheses are all
+    checked); where it is inconclusive, its missing hypothesis is added to the verdict."""
+    if necessary is not None and necessary.status == REFUTED:
+        return REFUTED, necessary.witness["verdict"]
     if a.reif_ok and charmap is not None:
         if charmap["status"] == CERTIFIED:
             return CERTIFIED, ("C^1 for generic initial data (Reif 1995: eigen-conditions; characteristic map "
@@ -107,7 +114,9 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = ""
         why = NO_CHARACTERISTIC_MAP.get(lattice, "characteristic map not checked")
         return INCONCLUSIVE, f"inconclusive: eigen-conditions hold, {why}"
     if a.reif_status == CERTIFIED:
-        return INCONCLUSIVE, f"inconclusive: an eigen-condition fails ({a.reif_reason}); the standard C^1 test does not apply"
+        why = f" ({necessary.witness['verdict']})" if necessary is not None else ""
+        return INCONCLUSIVE, (f"inconclusive: an eigen-condition fails ({a.reif_reason}); the standard C^1 test "
+                              f"does not apply{why}")
     return INCONCLUSIVE, "inconclusive: eigen-conditions not decided"
 
 
@@ -173,8 +182,16 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
         out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
                                            witness={k: v for k, v in cm.items() if k not in ("status", "method")},
                                            provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
-    status, verdict = c1_verdict(a, cm, rules.lattice)
+    nc = None
+    if a.reif_status == CERTIFIED and a.reif_ok is False and rules.lattice == "triangle, interpolating":
+        from .necessary import not_c1
+
+        nc = not_c1(rules, n)
+        out["not_c1"] = nc
+    status, verdict = c1_verdict(a, cm, rules.lattice, nc)
     c1_witness = {"verdict": verdict}
+    if status == REFUTED:
+        c1_witness.update({k: nc.witness[k] for k in ("theorem", "hypotheses")})
     if a.reif_ok and rules.lattice == "triangle, interpolating":
         from .netmap import numerical_characteristic_map
 

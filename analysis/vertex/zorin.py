@@ -49,12 +49,13 @@ J. Peters, U. Reif, Subdivision Surfaces, Springer 2008.
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import lru_cache
 from typing import Any
 
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
-__all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "regular_butterfly_mask", "nested_neighbourhoods",
-           "outer_rings_nilpotent"]
+__all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "regular_butterfly_mask",
+           "nested_neighbourhoods", "outer_rings_nilpotent", "eigenfunction_nets", "winding_of_arc", "regular_bound"]
 
 
 def annulus_cells(lo: int, hi: int) -> list[tuple[int, int]]:
@@ -185,6 +186,18 @@ def regular_butterfly_mask(tension=Fraction(1, 16)):
     return BivariateMask(coeffs, name="butterfly")
 
 
+@lru_cache(maxsize=8)
+def regular_bound(tension=Fraction(1, 16), r=Fraction(2, 5), budget: int = 50):
+    """``(mask, bound)``: the regular butterfly mask of ``tension`` and its certified (or not)
+    :func:`analysis.vertex.derived.derivative_error_bound` for the contraction factor ``r``, the Hölder exponent
+    computed with ``budget`` (cached: one computation per process and arguments)."""
+    from ..bivariate.holder import holder_exponent
+    from .derived import derivative_error_bound
+
+    a = regular_butterfly_mask(tension)
+    return a, derivative_error_bound(a, Fraction(r), holder=holder_exponent(a, budget=budget))
+
+
 def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 16, r=Fraction(2, 5),
                              max_depth: int = 8, tension=Fraction(1, 16), prec: int = 128) -> Result:
     """Steps 0-4 of the module docstring for the modified butterfly at valence ``n``: *certified* (value True,
@@ -196,10 +209,9 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     import sympy as sp
     from flint import acb, ctx, fmpq
 
-    from ..bivariate.holder import holder_exponent
     from .charmap import eigenvector
-    from .derived import cell_frame, derivative_error_bound, jacobian_sign_on_cell
-    from .rules import _tri_home, modified_butterfly_rules
+    from .derived import cell_frame, jacobian_sign_on_cell
+    from .rules import modified_butterfly_rules
     from .spectrum import analyse
 
     if hi != 2 * lo or lo < 2:
@@ -213,8 +225,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
                 and sp.Rational(va.lam_exact) == sp.Rational(1, 2) and eigen["outer_rings_nilpotent"])
     cells = annulus_cells(lo, hi)
     cover = covers_annulus(cells, lo, hi)
-    a = regular_butterfly_mask(tension)
-    bound = derivative_error_bound(a, r, holder=holder_exponent(a, budget=50))
+    a, bound = regular_bound(tension, r, 50)
     K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
     if not nested_neighbourhoods(omega, a.dilation.digits):
         raise AnalysisError("the refinements' neighbourhoods are not inside the cell's: the cover argument fails")
@@ -222,22 +233,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
     ctx.prec = prec
     try:
         v = eigenvector(rules, n, acb(fmpq(1, 2)))
-        index = {p: i for i, p in enumerate(rules.coords)}
-        rot = [acb(fmpq(2 * k, n)).exp_pi_i() for k in range(n)]
-
-        def phi(x, y):
-            if (x, y) == (0, 0):
-                return acb(0)
-            k, hx, hy = _tri_home(x, y)
-            if (hx, hy) not in index:
-                raise AnalysisError(f"the point ({x}, {y}) is outside the {ring}-ring")
-            return rot[k % n] * v[index[(hx, hy)]]
-
-        def net(x, y):
-            cx, cy = x, y + 1
-            if min(cx - jx + cy + jy for jx, jy in omega) < 1:
-                raise AnalysisError(f"the neighbourhood of the cell ({x}, {y}) comes too close to the centre")
-            return [phi(cx - jx, cy + jy) for jx, jy in omega]
+        phi, net = eigenfunction_nets(rules, n, v, omega)
 
         proven = total = sub = 0
         signs = set()
@@ -249,7 +245,7 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
                 proven += 1
                 signs.add(res.value)
         regular = proven == total and len(signs) == 1
-        winding = _winding_once(n, hi, net, phi, fam, B, W, K, idx, max_depth)
+        winding = winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth)
     finally:
         ctx.prec = old
     sign = next(iter(signs)) if regular else None
@@ -291,13 +287,46 @@ def _verdict(n: int, wit: dict, eigen_ok: bool) -> Result:
     return Result(status=INCONCLUSIVE, witness=wit, provenance=prov)
 
 
-def _winding_once(n, hi, net, phi, fam, B, W, K, idx, max_depth) -> bool:
-    """Step 4 of the module docstring: the image of the sector-0 arc of ring ``hi`` misses the ray from 0 at
-    the angle ``arg P0 + pi + pi/n``, proven with tubes refined along the cells' diagonals."""
+def eigenfunction_nets(rules, n: int, v: list, omega, k: int = 1):
+    """``(phi, net)`` for the eigenfunction of Fourier block ``k`` with eigenvector ``v`` (Arb entries in the order
+    of ``rules.coords``; no centre entry): ``phi(x, y) = w^(k d) v(home)`` at the chart point ``(x, y)`` of sector
+    ``d`` (``w = exp(2 pi i/n)``; the scheme is interpolating, so this is the eigenfunction's value there) and
+    ``net(x, y)``, the local net of cell ``(x, y)`` (step 2 of the module docstring), which must stay at
+    ``x + y >= 1``."""
+    from flint import acb, fmpq
+
+    from .rules import _tri_home
+
+    index = {p: i for i, p in enumerate(rules.coords)}
+    rot = [acb(fmpq(2 * k * d, n)).exp_pi_i() for d in range(n)]
+
+    def phi(x, y):
+        if (x, y) == (0, 0):
+            return acb(0)
+        d, hx, hy = _tri_home(x, y)
+        if (hx, hy) not in index:
+            raise AnalysisError(f"the point ({x}, {y}) is outside the {rules.ring}-ring")
+        return rot[d % n] * v[index[(hx, hy)]]
+
+    def net(x, y):
+        cx, cy = x, y + 1
+        if min(cx - jx + cy + jy for jx, jy in omega) < 1:
+            raise AnalysisError(f"the neighbourhood of the cell ({x}, {y}) comes too close to the centre")
+        return [phi(cx - jx, cy + jy) for jx, jy in omega]
+
+    return phi, net
+
+
+def winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth, k: int = 1) -> bool:
+    """Step 4 of the module docstring for the eigenfunction of Fourier block ``k`` (``Phi(R x) = w^k Phi(x)``):
+    the image of the sector-0 arc of ring ``hi`` (from ``P0 = Phi(hi, 0)`` to ``w^k P0``) misses the ray from 0
+    at the angle ``arg P0 + pi + k pi/n``, proven with tubes refined along the cells' diagonals. Then the arc's
+    argument increases by exactly ``2 pi k/n`` (the only value of ``2 pi k/n + 2 pi j`` within pi of
+    ``k pi/n``), and the closed ring (the n rotations of the arc) winds exactly k times around 0."""
     from flint import acb, acb_mat, arb, fmpq
 
     P0 = phi(hi, 0)
-    rho = -P0 * acb(fmpq(1, n)).exp_pi_i()
+    rho = -P0 * acb(fmpq(k, n)).exp_pi_i()
     rho = rho / abs(rho)
     Tt = [acb_mat(T.transpose()) for T in fam.full]
     WBt = acb_mat(W * B.transpose())

@@ -6,6 +6,7 @@ regular stencils of Loop or Catmull–Clark (``lattice`` and ``centre``, optiona
 as ``subdiv vertex --lattice ... --centre ... --edge ...``). ``property`` is one of
 
 * ``"C1"``: C^1 at every valence of the range, for generic initial data;
+* ``"not C1"``: not C^1 at any valence of the range, for generic initial data;
 * ``"eigen-conditions"``: Reif's eigen-conditions (1 simple; lambda double, real, positive, semisimple;
   every other eigenvalue strictly smaller in modulus) at every valence;
 * ``"subdominant eigenvalue"`` with ``value = "EXPR"``: lambda(n) = EXPR at every valence, EXPR an
@@ -33,12 +34,12 @@ of the local subdivision matrix) and, for C^1, :func:`analysis.vertex.valence.ve
 certified characteristic map where the module has one). The verdicts:
 
 * C^1: certified when C^1 is certified at every valence (eigen-conditions and a certified regular,
-  injective characteristic map: Reif's sufficient condition); refuted at the first valence where an
-  eigen-condition is certified to fail — the eigen-conditions are necessary for C^1 for generic initial
-  data (with lambda not double, or a block other than 1 dominant, generic data give a limit surface that
-  is a non-flat cone or covers its tangent plane more than once: Reif 1995, Zorin 2000); inconclusive
-  otherwise, with the reason of the first undecided valence (e.g. the butterfly's characteristic map, which
-  is not certified).
+  injective characteristic map: Reif's sufficient condition); refuted at the first valence where "not C^1
+  for generic initial data" is certified (:mod:`analysis.vertex.necessary`: a theorem whose hypotheses are
+  all checked — for the butterfly at n = 3 and 8..50); inconclusive otherwise, with the reason of the
+  first undecided valence (e.g. the butterfly's characteristic map, which is not certified).
+* not C^1: certified when "not C^1" is certified at every valence, refuted at a valence where C^1 is
+  certified, inconclusive otherwise.
 * eigen-conditions: certified / refuted at the first valence where they certainly fail / inconclusive.
 * subdominant eigenvalue: at each valence ``E = EXPR(n)`` is compared with lambda, a root of the exact
   factor ``F(lam, cos(2 pi/n))`` of block 1 isolated in an Arb ball: if E's Arb enclosure misses that
@@ -65,7 +66,7 @@ from .base import Kind, evidence
 
 #: the largest valence a paper-file claim may ask for
 MAX_CLAIM_VALENCE = 50
-PROPERTIES = ("C1", "eigen-conditions", "subdominant eigenvalue")
+PROPERTIES = ("C1", "not C1", "eigen-conditions", "subdominant eigenvalue")
 _RANGE = re.compile(r"\s*(\d{1,3})\s*(?:\.\.\s*(\d{1,3})\s*)?")
 
 
@@ -77,7 +78,7 @@ class Vertex(Kind):
                "or the subdominant eigenvalue in closed form in n")
     uses_scheme = False
     required = {"valence": "the valences, \"A..B\" or one integer (3 <= A <= B <= 50)",
-                "property": "\"C1\", \"eigen-conditions\" or \"subdominant eigenvalue\""}
+                "property": "\"C1\", \"not C1\", \"eigen-conditions\" or \"subdominant eigenvalue\""}
     optional = {"surface": "a scheme of `subdiv vertex`: loop, loop-warren, catmull-clark, doo-sabin, butterfly, "
                            "modified-butterfly, sqrt3",
                 "lattice": "user rules instead of surface: triangle (Loop's regular stencils) or quad "
@@ -177,7 +178,40 @@ class Vertex(Kind):
         prop = self.get("property")
         if prop == "subdominant eigenvalue":
             return self._eigenvalue()
+        if prop == "not C1":
+            return self._not_c1()
         return self._conditions(c1=prop == "C1")
+
+    def _not_c1(self) -> Verdict:
+        """Not C^1 (for generic initial data) at every valence: certified where
+        :func:`analysis.vertex.valence.vertex_results` refutes C^1 at each, refuted where it certifies C^1
+        at one, inconclusive otherwise."""
+        from ...vertex.valence import vertex_results
+
+        rows, results = [], []
+        for n in self.valences:
+            rules = self._rules(n)
+            rules.check_valence(n)
+            r = vertex_results(rules, n)["c1"]
+            verdict = r.witness.get("verdict") or ""
+            if r.status == CERTIFIED and r.value is True:
+                rows.append((str(n), "C^1", verdict))
+                return self.refuted(f"{self.scheme_text()} is C^1 at n = {n}: {verdict}",
+                                    corrected=f"{self.scheme_text()} is C^1 at n = {n} (generic initial data)",
+                                    evidence=[evidence(f"C^1 at n = {n}", r, text=verdict), _table(rows)],
+                                    numbers=[Number("first C^1 valence", sp.Integer(n))])
+            if r.status != REFUTED:
+                rows.append((str(n), "undecided", verdict))
+                return self.inconclusive(f"not C^1 of {self.scheme_text()} not decided at n = {n}: {verdict}",
+                                         settle="a not-C^1 theorem whose hypotheses are certified at this valence",
+                                         evidence=[_table(rows)])
+            rows.append((str(n), "not C^1", verdict))
+            results.append(r)
+        at = f"every valence {self.span()}" if len(self.valences) > 1 else self.span()
+        return self.certified(f"{self.scheme_text()} is not C^1 (generic initial data) at {at}",
+                              evidence=[evidence(f"not C^1 at {self.span()}", results[-1],
+                                                 text=f"certified at each of {len(results)} valences"),
+                                        _table(rows)])
 
     def _conditions(self, c1: bool) -> Verdict:
         from ...vertex.valence import vertex_results
@@ -193,14 +227,21 @@ class Vertex(Kind):
                 why = reif.witness["reason"]
                 rows.append((str(n), "fails", why))
                 ev = evidence(f"Reif's eigen-conditions at n = {n}", reif, text=why)
+                if c1 and res["c1"].status == REFUTED:
+                    verdict = res["c1"].witness["verdict"]
+                    return self.refuted(
+                        f"C^1 of {self.scheme_text()} fails at n = {n}: {verdict}",
+                        corrected=f"{self.scheme_text()} is not C^1 at n = {n} for generic initial data",
+                        evidence=[evidence(f"not C^1 at n = {n}", res["c1"], text=verdict), ev, _table(rows)],
+                        numbers=[Number("first failing valence", sp.Integer(n))])
                 if c1:
-                    # the failure is certified, but "not C^1" would rest on hypotheses this tool does not
-                    # check (Zorin's necessity argument assumes the eigenfunctions independent on the ring),
-                    # so the claim stays undecided, as in `subdiv vertex`
+                    # the failure of an eigen-condition is certified, but "not C^1" needs a theorem whose
+                    # hypotheses are checked (analysis.vertex.necessary); where none applies the claim stays
+                    # undecided, as in `subdiv vertex`
                     return self.inconclusive(
                         f"C^1 of {self.scheme_text()} not decided at n = {n}: Reif's eigen-conditions fail, "
-                        f"certified ({why}); Reif's sufficient test does not apply, and their failure proves "
-                        "'not C^1' only under hypotheses not checked here (Zorin 2000)",
+                        f"certified ({why}); Reif's sufficient test does not apply, and no not-C^1 theorem has "
+                        f"all its hypotheses checked here ({res['c1'].witness['verdict']})",
                         settle="a certified proof that the limit surface is not C^1 at this valence (e.g. the "
                                "dominant block's map certified to cover the tangent plane twice)",
                         evidence=[ev, _table(rows)])
