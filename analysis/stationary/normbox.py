@@ -137,12 +137,21 @@ class ParametricNorm:
         prod = None
         for level in range(L):
             step = arity ** level
-            coeffs = [0] * ((len(ints) - 1) * step * K + K)
+            if prod is None:
+                coeffs = [0] * ((len(ints) - 1) * step * K + K)
+                for i, cs in enumerate(ints):
+                    for e, v in enumerate(cs):
+                        coeffs[i * step * K + e] = v
+                prod = fmpz_poly(coeffs)
+                continue
+            # times a(z^step): a sum of shifted copies of prod (the factor is sparse: a dense product
+            # would multiply through its long runs of zeros)
+            nxt = None
             for i, cs in enumerate(ints):
-                for e, v in enumerate(cs):
-                    coeffs[i * step * K + e] = v
-            f = fmpz_poly(coeffs)
-            prod = f if prod is None else prod * f
+                if cs:
+                    term = (prod * fmpz_poly(cs)).left_shift(i * step * K)
+                    nxt = term if nxt is None else nxt + term
+            prod = nxt
         flat = [int(x) for x in prod.coeffs()]
         flat += [0] * (-len(flat) % K)
         mod = arity ** L
