@@ -63,8 +63,11 @@ def test_local_processes_equal_serial(serial):
 
 
 def test_dask_cluster_equals_serial(serial):
+    """Two Dask workers over TCP (tasks and results are pickled through the scheduler, results come back
+    in completion order); the workers are threads of this process (``processes=False``): a worker
+    process would only add its start-up imports, not another code path of the engine."""
     import distributed   # a test dependency: the Dask path must run in CI, not be skipped
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp",
                                   dashboard_address=None) as cluster:
         address = cluster.scheduler_address          # "tcp://127.0.0.1:PORT"
         r = holder_atlas(FAMILY, executor="dask://" + address.split("://", 1)[1], **GRID)

@@ -154,12 +154,17 @@ def test_report_json_writes_to_output_folder(tmp_path):
 
 
 @pytest.mark.slow
-def test_atlas_json_on_a_dask_cluster():
+def test_atlas_json_on_a_dask_cluster(capfd):
+    """The command in this process (file descriptors captured), its two Dask workers threads of it
+    talking TCP (``processes=False``): whatever a worker prints meets the same stdout guard."""
     distributed = pytest.importorskip("distributed")   # a test dependency ([test] extra)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False, protocol="tcp",
                                   dashboard_address=None) as cluster:
         address = cluster.scheduler_address.split("://", 1)[1]
-        data = run_json(*ATLAS, "--executor", f"dask://{address}", "--json")
+        r = run_cli(capfd, *ATLAS, "--executor", f"dask://{address}", "--json")
+    assert r.returncode == 0, r.stderr
+    assert "Traceback" not in r.stderr
+    data = json.loads(r.stdout)            # the whole of stdout: exactly one JSON document
     assert data["witness"]["executor"].startswith("dask cluster at tcp://")
     assert data["witness"]["counts"]["samples"] == 6
 

@@ -1,5 +1,7 @@
 """The exact one-parameter norm sets (acceptance figures of issue 2)."""
 
+import functools
+
 import pytest
 import sympy as sp
 from hypothesis import given, settings, strategies as st
@@ -51,10 +53,22 @@ def test_seed004_t_nu_L1_sets(m, lo, hi):
     assert (a.expr, b.expr) == (lo, hi)
 
 
+@functools.lru_cache(maxsize=None)
+def _dfh_set_m3_L2():
+    """The exact set, computed once for all examples below (each example checks one point of it)."""
+    return norm_solution_set(dfh(), m=3, L=2).value
+
+
+@functools.lru_cache(maxsize=None)
+def _t_nu_pieces(m: int, L: int):
+    """The exact piecewise norm, computed once per (m, L) for all examples below."""
+    return norm_function(t_nu(), m, L).value
+
+
 @given(st.fractions(min_value=-1, max_value=Q(1, 20), max_denominator=2000))
 @settings(max_examples=40, deadline=None)
 def test_set_membership_agrees_with_direct_norm_seed003(omega):
-    s = norm_solution_set(dfh(), m=3, L=2).value
+    s = _dfh_set_m3_L2()
     direct = difference_norm(dfh().subs({"omega": omega}), 3, 2).value
     assert s.contains(Q(omega.numerator, omega.denominator)) == (direct < 1)
 
@@ -63,7 +77,7 @@ def test_set_membership_agrees_with_direct_norm_seed003(omega):
 @settings(max_examples=40, deadline=None)
 def test_piecewise_norm_agrees_with_direct_norm(v, m, L):
     q = Q(v.numerator, v.denominator)
-    pieces = norm_function(t_nu(), m, L).value
+    pieces = _t_nu_pieces(m, L)
     direct = difference_norm(t_nu().subs({"nu": q}), m, L).value
     from analysis.algebra.algebraic import RealAlgebraic
     x = RealAlgebraic.rational(q)

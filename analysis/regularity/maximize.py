@@ -52,7 +52,6 @@ Trans. Comput. 66 (2017) (ball eigenvalue enclosures, ``acb_mat_eig_multiple``).
 
 from __future__ import annotations
 
-import itertools
 import math
 import time
 from fractions import Fraction
@@ -77,11 +76,6 @@ __all__ = ["maximize_holder"]
 #: at the exceptional parameters are charged what :func:`holder_exponent` spent
 FLOAT_ALPHA_UNITS = 6
 BOUND_UNITS_PER_WORD = 2
-
-
-def _words(L: int):
-    for n in range(1, L + 1):
-        yield from itertools.product((0, 1), repeat=n)
 
 
 class _Family:
@@ -144,14 +138,29 @@ class _Family:
             flint.ctx.prec = old
 
 
+def word_radii(T, L: int):
+    """``(w, rho(T_w))`` in floats for every word ``w`` over ``range(len(T))`` of length 1..L, in
+    ``itertools.product`` order, ``T_w = T[w[-1]] ... T[w[0]]``. The products of one length are
+    stacked and their eigenvalues computed in one LAPACK call each: the same products and
+    eigenvalues, matrix by matrix, as one call per word."""
+    m = len(T)
+    level = np.eye(T[0].shape[0])[None]          # the products of the words of the previous length
+    words = [()]
+    for n in range(1, L + 1):
+        nxt = np.empty((len(level) * m,) + level.shape[1:])
+        for e in range(m):
+            nxt[e::m] = T[e] @ level
+        words = [w + (e,) for w in words for e in range(m)]
+        radii = np.abs(np.linalg.eigvals(nxt))
+        for w, row in zip(words, radii):
+            yield w, max(row)
+        level = nxt
+
+
 def _float_alpha(F: _Family, t: float, L: int) -> tuple[float, tuple]:
     T = F.floats(t)
     best, word = -math.inf, ()
-    prods = {(): np.eye(T[0].shape[0])}
-    for w in _words(L):
-        P = T[w[-1]] @ prods[w[:-1]]
-        prods[w] = P
-        r = max(abs(np.linalg.eigvals(P)))
+    for w, r in word_radii(T, L):
         if r > 0:
             v = math.log2(r) / len(w)
             if v > best + 1e-12:

@@ -114,19 +114,12 @@ class _BoxFamily:
             flint.ctx.prec = old
 
 
-def _words(m: int, L: int):
-    for n in range(1, L + 1):
-        yield from itertools.product(range(m), repeat=n)
-
-
 def _float_alpha(F: _BoxFamily, t, L: int):
+    from .maximize import word_radii
+
     T = F.floats(t)
     best, word = -math.inf, ()
-    prods = {(): np.eye(F.n)}
-    for w in _words(F.m, L):
-        P = T[w[-1]] @ prods[w[:-1]]
-        prods[w] = P
-        r = max(abs(np.linalg.eigvals(P)))
+    for w, r in word_radii(T, L):
         if r > 0:
             v = math.log(r, F.m) / len(w)
             if v > best + 1e-12:
