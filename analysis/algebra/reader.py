@@ -38,19 +38,19 @@ Examples
 >>> read_expression("__import__('os').system('true')")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "__import__('os').system('true')": an attribute (x.y) is not allowed
+analysis.algebra.limits.InputError: cannot read "__import__('os').system('true')": an attribute (x.y) is not allowed
 >>> read_expression("1//2")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "1//2": '//' is not allowed: write / (exact division), e.g. 1/2
+analysis.algebra.limits.InputError: cannot read "1//2": '//' is not allowed: write / (exact division), e.g. 1/2
 >>> read_expression("10**10**10")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "10**10**10": the exponent 10000000000 exceeds the limit 10000 (limit 'exponent')
+analysis.algebra.limits.InputError: cannot read "10**10**10": the exponent 10000000000 exceeds the limit 10000 (limit 'exponent')
 >>> read_expression("abc", free=False, what="mask coefficient")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: unknown name 'abc' in mask coefficient "abc": give its value with --param abc=VALUE, or correct the typo
+analysis.algebra.limits.InputError: unknown name 'abc' in mask coefficient "abc": give its value with --param abc=VALUE, or correct the typo
 
 Algorithm
 ---------
@@ -599,7 +599,7 @@ def as_expr(x: Any, *, what: str = "", names: Mapping[str, sp.Expr] | None = Non
     >>> as_expr(("1", "2"))
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: expected one number or formula, not a tuple
+    analysis.algebra.limits.InputError: expected one number or formula, not a tuple
     """
     if isinstance(x, sp.Basic):
         return x
@@ -637,7 +637,7 @@ def exact_number(x: Any, *, what: str = "number") -> sp.Expr:
     >>> exact_number("w")
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: unknown name 'w' in number "w": a number is expected here
+    analysis.algebra.limits.InputError: unknown name 'w' in number "w": a number is expected here
     """
     if isinstance(x, float):
         if x != x or x in (float("inf"), float("-inf")):

@@ -103,7 +103,7 @@ def read_number(text: str, what: str, *, real: bool = True, infinity: bool = Fal
     >>> read_number("I", "--param w")
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: --param w must be a real number, not I
+    analysis.algebra.limits.InputError: --param w must be a real number, not I
     """
     import sympy as sp
 

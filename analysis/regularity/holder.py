@@ -103,6 +103,7 @@ def holder_exponent(a: Any, *, arity: int = 2, budget: int | None = None, max_le
     >>> r = holder_exponent(schemes.get("daubechies-6"))                  # Arb ball mask
     >>> r.status, round(float(r.lower), 9)
     ('certified', 1.087833926)
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> holder_exponent(LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)"), arity=3).value   # ternary cubic B-spline
     3
     """
@@ -163,7 +164,7 @@ def _approximate_route(m, **kw) -> Result:
     prec = 128 + 4 * N
     h = ball_route(m.enclosure(prec), sum_rules=N, prec=prec, **kw)
     lower, upper, message = h.lower, h.upper, m.description()
-    ceiling = upper is not None and upper >= N
+    ceiling = upper is not None and bool(upper >= N)      # a JSON true/false (it was sympy's "False" text)
     if ceiling:
         upper = None
         message += (f"; alpha of these masks is >= {float(lower):.10g} only: {N} - log2 rho reaches its ceiling {N} "
@@ -299,6 +300,7 @@ def smoothness(a: Any, j: int, *, arity: int = 2, budget: int = EXACT_BUDGET, ma
     check. The two are kept apart because their witnesses (which test decided, in which words) are
     what the reports and goldens of each arity record; ``max_L``/``max_word`` apply to ``m > 2``.
 
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> smoothness(LaurentSymbol.from_mask([1, 2]), 0, arity=3).witness["reason"]
     'not convergent: a(exp(2*pi*i/3)) = sqrt(3)*I != 0; a(exp(4*pi*i/3)) = -sqrt(3)*I != 0'
     """
