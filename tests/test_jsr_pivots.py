@@ -4,7 +4,7 @@
 the invariant polytope's basis of vertices, and so its vertices, certificate and printed bounds, were
 computed with those. Compared on generic matrices, small-integer matrices with many exactly tied
 column norms, unit columns next to generic ones (the polytope's interior fillers), and a vertex matrix
-of a Daubechies polytope; wide and complex matrices take SciPy's route.
+of a Daubechies polytope; large, wide and complex matrices take SciPy's route.
 """
 
 from __future__ import annotations
@@ -13,11 +13,16 @@ import numpy as np
 import pytest
 import scipy.linalg
 
-from analysis.jsr._pivots import UNBLOCKED, qr_pivots
+from analysis.jsr._pivots import UNBLOCKED, WIDTH, _dlaqp2, qr_pivots
 
 
 def lapack(A):
     return scipy.linalg.qr(A, pivoting=True, mode="economic")[2]
+
+
+def numpy_pivots(A):
+    """The numpy algorithm itself, whatever the shape (qr_pivots hands wide matrices to LAPACK)."""
+    return _dlaqp2(np.array(A, dtype=float, order="F"))
 
 
 def _cases():
@@ -38,6 +43,7 @@ def _cases():
 
 @pytest.mark.parametrize("A", [c[1] for c in _cases()], ids=[c[0] for c in _cases()])
 def test_pivots_are_lapacks(A):
+    assert numpy_pivots(A).tolist() == lapack(A).tolist()
     assert qr_pivots(A).tolist() == lapack(A).tolist()
 
 
@@ -59,14 +65,17 @@ def test_pivots_of_a_daubechies_polytope():
         holder_exponent(schemes.get("daubechies-12"))
     finally:
         P.qr_pivots = real
-    assert len(seen) > 5
+    assert len(seen) > 5 and any(A.shape[1] <= WIDTH * A.shape[0] for A, _ in seen)
     for A, piv in seen:
         assert piv.tolist() == lapack(A).tolist()
+        assert numpy_pivots(A).tolist() == lapack(A).tolist()
 
 
-def test_wide_and_complex_matrices_go_to_scipy():
+def test_large_wide_and_complex_matrices_go_to_scipy():
     rng = np.random.default_rng(1)
     A = rng.standard_normal((UNBLOCKED + 1, UNBLOCKED + 5))
     assert qr_pivots(A).tolist() == lapack(A).tolist()
+    W = rng.standard_normal((3, 3 * WIDTH + 1))
+    assert qr_pivots(W).tolist() == lapack(W).tolist()
     Z = rng.standard_normal((4, 9)) + 1j * rng.standard_normal((4, 9))
     assert qr_pivots(Z).tolist() == lapack(Z).tolist()

@@ -4,8 +4,9 @@ The invariant polytope picks a basis of vertices by the pivots of a pivoted QR o
 (``scipy.linalg.qr(V, pivoting=True)``, LAPACK ``dgeqp3``). Importing ``scipy.linalg`` costs about
 0.3 s of a command that computes for 0.02 s (``subdiv holder --scheme daubechies-8``), so the pivots
 are computed here by the same algorithm: LAPACK's unblocked ``dlaqp2``, which ``dgeqp3`` runs when
-``min(rows, columns)`` is at most its block size 32 (every polytope of a univariate scheme up to
-dimension 32). Larger matrices go to scipy.
+``min(rows, columns)`` is at most its block size 32, for polytopes with up to six vertices per
+dimension (a small polytope, such as the six vertices of D8's, imports no scipy). Larger and
+wider matrices go to LAPACK, which is faster per call once imported.
 
 Examples
 --------
@@ -50,6 +51,10 @@ import numpy as np
 
 #: ``min(rows, columns)`` up to which ``dgeqp3`` runs the unblocked ``dlaqp2`` (its block size ``nb``)
 UNBLOCKED = 32
+#: at most this many columns per row are pivoted here. A polytope with more vertices than six times
+#: its dimension solves small LPs through SciPy's HiGHS (:func:`analysis.jsr._lp.small_lp`), so SciPy
+#: is imported by then, and LAPACK's pivots cost a fifth of these per call
+WIDTH = 6
 
 #: LAPACK's ``dlamch('Epsilon')`` (relative machine precision, rounding: 2^-53)
 _EPS = 2.0 ** -53
@@ -81,11 +86,11 @@ def _lapy2(x: float, y: float) -> float:
 
 def qr_pivots(A: np.ndarray) -> np.ndarray:
     """The column permutation ``piv`` of ``scipy.linalg.qr(A, pivoting=True)`` (0-based), computed
-    in numpy for a real float64 ``A`` with ``min(A.shape) <= UNBLOCKED``, by scipy otherwise (complex
-    vertex matrices, large ones; see the module docstring)."""
+    in numpy for a real float64 ``A`` (``m x n``) with ``min(m, n) <= UNBLOCKED`` and ``n <= WIDTH m``,
+    by scipy otherwise (complex vertex matrices, large or wide ones; see the module docstring)."""
     A = np.asarray(A)
     m, n = A.shape
-    if A.dtype != np.float64 or min(m, n) > UNBLOCKED or not np.all(np.isfinite(A)):
+    if A.dtype != np.float64 or min(m, n) > UNBLOCKED or n > WIDTH * m or not np.all(np.isfinite(A)):
         return _scipy_pivots(A)
     try:
         return _dlaqp2(np.array(A, dtype=float, order="F"))
@@ -103,67 +108,69 @@ def _dlaqp2(A: np.ndarray) -> np.ndarray:
     """LAPACK ``dgeqp3`` with every column free and ``dlaqp2`` for all of them; ``A`` is overwritten.
     The norm updates of one step are done for all columns at once (the same operations, elementwise)."""
     m, n = A.shape
-    jpvt = np.arange(n)
+    jpvt = list(range(n))
     vn1 = _nrm2(A)
     vn2 = vn1.copy()
-    for i in range(min(m, n)):
-        pvt = i + int(np.argmax(vn1[i:]))          # idamax: the first largest
-        if pvt != i:
-            A[:, [i, pvt]] = A[:, [pvt, i]]
-            jpvt[[i, pvt]] = jpvt[[pvt, i]]
-            vn1[pvt] = vn1[i]
-            vn2[pvt] = vn2[i]
-        tau = _dlarfg(A, i) if i < m - 1 else 0.0
-        if i < n - 1 and tau != 0.0:
-            aii = A[i, i]
-            A[i, i] = 1.0
-            _dlarf_left(A, i, tau)
-            A[i, i] = aii
-        j = i + 1 + np.flatnonzero(vn1[i + 1:] != 0.0)
-        if len(j) == 0:
-            continue
-        ratio = np.abs(A[i, j]) / vn1[j]
-        temp = np.maximum(1.0 - ratio * ratio, 0.0)
-        q = vn1[j] / vn2[j]
-        temp2 = temp * (q * q)
-        again = temp2 <= _TOL3Z
-        keep = j[~again]
-        vn1[keep] = vn1[keep] * np.sqrt(temp[~again])
-        redo = j[again]
-        if len(redo):
-            vn1[redo] = _nrm2(A[i + 1:, redo]) if i < m - 1 else 0.0
-            vn2[redo] = vn1[redo]
-    return jpvt
+    with np.errstate(divide="ignore", invalid="ignore"):       # 0/0 on the columns whose norm is 0
+        for i in range(min(m, n)):
+            pvt = i + int(vn1[i:].argmax())                    # idamax: the first largest
+            if pvt != i:
+                col = A[:, i].copy()
+                A[:, i] = A[:, pvt]
+                A[:, pvt] = col
+                jpvt[i], jpvt[pvt] = jpvt[pvt], jpvt[i]
+                vn1[pvt] = vn1[i]
+                vn2[pvt] = vn2[i]
+            tau = _dlarfg(A, i) if i < m - 1 else 0.0
+            if i == n - 1:
+                break
+            if tau != 0.0:
+                aii = A[i, i]
+                A[i, i] = 1.0
+                _dlarf_left(A, i, tau)
+                A[i, i] = aii
+            v1, v2 = vn1[i + 1:], vn2[i + 1:]
+            ratio = np.abs(A[i, i + 1:]) / v1
+            temp = np.maximum(1.0 - ratio * ratio, 0.0)
+            q = v1 / v2
+            again = temp * (q * q) <= _TOL3Z
+            again &= v1 != 0.0
+            np.copyto(v1, v1 * np.sqrt(temp), where=(v1 != 0.0) & ~again)
+            if again.any():
+                redo = np.flatnonzero(again)
+                v1[redo] = _nrm2(A[i + 1:, i + 1 + redo]) if i < m - 1 else 0.0
+                v2[redo] = v1[redo]
+    return np.array(jpvt)
 
 
 def _dlarfg(A: np.ndarray, i: int) -> float:
     """``dlarfg`` on ``alpha = A[i, i]``, ``x = A[i+1:, i]`` (overwritten by ``v[1:]``); returns ``tau``."""
-    alpha = A[i, i]
+    alpha = float(A[i, i])
     x = A[i + 1:, i]
-    xnorm = float(_nrm2(x))
+    xl = x.astype(np.longdouble)
+    xnorm = float(np.sqrt(np.dot(xl, xl)))
     if xnorm == 0.0:
         return 0.0
     beta = -math.copysign(_lapy2(alpha, xnorm), alpha)
     if abs(beta) < _SAFMIN:
         raise _Rescale
     tau = (beta - alpha) / beta
-    A[i + 1:, i] = x * (1.0 / (alpha - beta))
+    x *= 1.0 / (alpha - beta)
     A[i, i] = beta
     return tau
 
 
 def _dlarf_left(A: np.ndarray, i: int, tau: float) -> None:
     """``dlarf('Left')``: ``C = (I - tau v v^T) C`` on ``C = A[i:, i+1:]``, ``v = A[i:, i]``, over the
-    rows up to the last nonzero of ``v`` and the columns up to the last nonzero one of ``C``."""
+    rows up to the last nonzero of ``v``. (LAPACK also skips the trailing zero columns of ``C``: on
+    them the update changes at most the sign of a zero.)"""
     v = A[i:, i]
     lastv = len(v)
     while lastv > 0 and v[lastv - 1] == 0.0:
         lastv -= 1
-    C = A[i:i + lastv, i + 1:]
-    nz = np.flatnonzero(np.any(C != 0.0, axis=0))
-    if lastv == 0 or len(nz) == 0:
+    if lastv == 0:
         return
-    lastc = int(nz[-1]) + 1
     vv = v[:lastv]
-    w = vv @ C[:, :lastc]
-    C[:, :lastc] -= np.outer(vv, tau * w)
+    C = A[i:i + lastv, i + 1:]
+    w = vv @ C
+    C -= vv[:, None] * (tau * w)
