@@ -32,8 +32,10 @@ COMMANDS = (
     ("list",),
     ("holder", "--help"),
     ("holder", "--mask", "1/4,3/4,3/4,1/4"),
+    ("holder", "--mask", "-1/16,0,9/16,1,9/16,0,-1/16", "--start", "-3"),
     ("holder", "--scheme", "chaikin"),
     ("holder", "--scheme", "daubechies-8"),
+    ("holder", "--scheme", "daubechies-8", "--json"),
 )
 
 
@@ -68,12 +70,12 @@ def main(argv=None) -> None:
           f"{Path(sys.executable).name} {sys.version.split()[0]}")
     roots = [("before", Path(args.before).resolve())] if args.before else []
     roots.append(("after" if args.before else "this", ROOT))
-    head = f"{'command':46s}" + "".join(f" {name + ' CPU':>11s} {name + ' wall':>12s}" for name, _ in roots)
+    head = f"{'command':66s}" + "".join(f" {name + ' CPU':>11s} {name + ' wall':>12s}" for name, _ in roots)
     if args.before:
         head += f" {'CPU ratio':>10s}"
     print(head)
     for cmd in COMMANDS:
-        row = f"{'subdiv ' + ' '.join(cmd):46s}"
+        row = f"{'subdiv ' + ' '.join(cmd):66s}"
         cpus = []
         for _, root in roots:
             cpu, wall = measure(root, cmd, args.runs)

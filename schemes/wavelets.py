@@ -68,11 +68,8 @@ import functools
 from math import comb
 
 import flint
-import mpmath
-import sympy as sp
 
 from analysis.result import AnalysisError
-from analysis.algebra.symbol import LaurentSymbol, Z
 
 from .catalogue import LazyEntries, NumericSchemeEntry
 
@@ -174,10 +171,13 @@ def daubechies_mask_mpmath(N: int, dps: int = 50) -> list:
     Midpoints of :func:`daubechies_enclosure` balls of radius ``< 10^-(dps+5)``, converted
     exactly (the midpoint of an Arb ball is a binary floating point number).
 
+    >>> import mpmath
     >>> with mpmath.workdps(30):
     ...     print(daubechies_mask_mpmath(2, 30)[3])
     -0.183012701892219323381861585376
     """
+    import mpmath
+
     prec = int(dps * 3.33) + 20
     out = []
     with mpmath.workprec(prec + 64):
@@ -196,7 +196,7 @@ def daubechies_mask_float(N: int) -> list[float]:
     return [float(b.mid()) for b in daubechies_enclosure(N, 60)]
 
 
-def daubechies_exact_symbol(N: int) -> LaurentSymbol:
+def daubechies_exact_symbol(N: int):
     """The exact D2N symbol, for N = 1 (Haar, over QQ) and N = 2 (D4, over QQ(sqrt 3)).
 
     Computed with the same extremal-phase root choice as the enclosures (the roots of
@@ -206,6 +206,10 @@ def daubechies_exact_symbol(N: int) -> LaurentSymbol:
     >>> daubechies_exact_symbol(2).mask
     (1/4 + sqrt(3)/4, sqrt(3)/4 + 3/4, 3/4 - sqrt(3)/4, 1/4 - sqrt(3)/4)
     """
+    import sympy as sp
+
+    from analysis.algebra.symbol import LaurentSymbol, Z
+
     if N == 1:
         return LaurentSymbol.from_mask([1, 1], start=0)
     if N != 2:

@@ -2,8 +2,8 @@
 
 ``subdiv --help``, ``subdiv holder --help`` and ``subdiv list`` import no sympy, numpy, scipy,
 matplotlib, flint, mpmath, tqdm or dask and none of the claims/report layers; a small ``holder``
-imports no scipy.optimize, matplotlib, claims or report module (Chaikin's scheme, solved exactly at
-its first product, no scipy at all). Each command runs as ``python -m analysis ...`` does (runpy) in
+imports no scipy, matplotlib, claims or report module, and a catalogue entry known by Arb balls
+(daubechies-8) no sympy either. Each command runs as ``python -m analysis ...`` does (runpy) in
 a fresh interpreter from the checkout, and ``sys.modules`` is read when it ends, so that the test
 sees what a user's ``subdiv ...`` imports. (``-X importtime`` does not log the modules imported by
 ``importlib.import_module``.) Timings are in ``benchmarks/bench_startup.py``, not here.
@@ -96,20 +96,27 @@ def test_building_the_parser_imports_no_engine():
     assert {m for m in mods if m.startswith("analysis.") and not m.startswith("analysis.cli")} <= {"analysis.result", "analysis._lazy"}
 
 
-@pytest.mark.parametrize("argv, scipy_ok", [
-    (["holder", "--mask", "1/4,3/4,3/4,1/4"], False),
-    (["holder", "--scheme", "chaikin", "--json"], False),
-    (["holder", "--scheme", "daubechies-8"], True),
+@pytest.mark.parametrize("argv, exact", [
+    (["holder", "--mask", "1/4,3/4,3/4,1/4"], True),
+    (["holder", "--scheme", "chaikin", "--json"], True),
+    (["holder", "--scheme", "daubechies-8"], False),
 ], ids=["mask", "chaikin", "daubechies-8"])
-def test_small_holder_imports_only_what_it_uses(argv, scipy_ok):
+def test_small_holder_imports_only_what_it_uses(argv, exact):
+    """An exact mask reads its symbol with sympy; a catalogue entry known by Arb balls
+    (daubechies-8) needs no sympy at all, and its invariant polytope picks its bases without
+    scipy (the pivots in numpy, the LPs through HiGHS)."""
     mods = imported(*argv)
-    assert "sympy" in mods and "analysis.regularity.holder" in mods         # it did compute
-    unused = ("scipy.optimize", "matplotlib", "tqdm", "dask", "clarabel", *UPPER,
+    assert "analysis.regularity.holder" in mods and "analysis.jsr" in mods      # it did compute
+    unused = ("scipy", "matplotlib", "tqdm", "dask", "clarabel", *UPPER,
               "analysis.regularity.atlas", "analysis.regularity.ranges", "analysis.regularity.sobolev",
               "analysis.nonuniform", "schemes.seed003", "schemes.seed004")
     assert not loaded(mods, unused), loaded(mods, unused)
-    if not scipy_ok:
-        assert not loaded(mods, ("scipy",)), loaded(mods, ("scipy",))
+    if exact:
+        assert "sympy" in mods
+    else:
+        assert "analysis.jsr._polytope" in mods and "flint" in mods             # the ball route ran
+        assert not loaded(mods, ("sympy", "analysis.algebra.symbol", "analysis.algebra.reader")), \
+            loaded(mods, ("sympy", "analysis.algebra.symbol", "analysis.algebra.reader"))
 
 
 def test_parser_guard_applies_when_a_command_imports_sympy_late(tmp_path):

@@ -64,40 +64,9 @@ from __future__ import annotations
 import sympy as sp
 
 from .algebraic import RealAlgebraic
-from .reader import LIMITS, InputError
+from .limits import arity_key, check_arity  # noqa: F401  (re-exported: the arity of every analysis)
 from ..result import CERTIFIED, AnalysisError, Result
 from .symbol import LaurentSymbol, Z
-
-
-def check_arity(m) -> int:
-    """``m`` as an int ``>= 2``, else a one-line :class:`AnalysisError`.
-
-    >>> check_arity(3)
-    3
-    >>> check_arity(1)
-    Traceback (most recent call last):
-    ...
-    analysis.result.AnalysisError: the arity must be an integer >= 2, not 1
-    """
-    if isinstance(m, bool) or not isinstance(m, int):
-        try:
-            if isinstance(m, str) and m.strip().lstrip("+").isdigit():
-                m = int(m)
-            else:
-                raise ValueError
-        except ValueError:
-            raise AnalysisError(f"the arity must be an integer >= 2, not {m!r}") from None
-    if m < 2:
-        raise AnalysisError(f"the arity must be an integer >= 2, not {m!r}")
-    if m > LIMITS.arity:
-        raise InputError(f"the arity {m} exceeds the limit {LIMITS.arity} (limit 'arity')", "limit")
-    return m
-
-
-def arity_key(m: int) -> dict:
-    """``{"arity": m}`` for ``m > 2`` and ``{}`` for ``m = 2``: the provenance entry of a result (binary
-    results carry no arity key, so their JSON and reports read as they always have)."""
-    return {} if m == 2 else {"arity": m}
 
 
 def q_symbol(m: int) -> LaurentSymbol:

@@ -38,19 +38,19 @@ Examples
 >>> read_expression("__import__('os').system('true')")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "__import__('os').system('true')": an attribute (x.y) is not allowed
+analysis.algebra.limits.InputError: cannot read "__import__('os').system('true')": an attribute (x.y) is not allowed
 >>> read_expression("1//2")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "1//2": '//' is not allowed: write / (exact division), e.g. 1/2
+analysis.algebra.limits.InputError: cannot read "1//2": '//' is not allowed: write / (exact division), e.g. 1/2
 >>> read_expression("10**10**10")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: cannot read "10**10**10": the exponent 10000000000 exceeds the limit 10000 (limit 'exponent')
+analysis.algebra.limits.InputError: cannot read "10**10**10": the exponent 10000000000 exceeds the limit 10000 (limit 'exponent')
 >>> read_expression("abc", free=False, what="mask coefficient")
 Traceback (most recent call last):
 ...
-analysis.algebra.reader.InputError: unknown name 'abc' in mask coefficient "abc": give its value with --param abc=VALUE, or correct the typo
+analysis.algebra.limits.InputError: unknown name 'abc' in mask coefficient "abc": give its value with --param abc=VALUE, or correct the typo
 
 Algorithm
 ---------
@@ -72,53 +72,15 @@ from __future__ import annotations
 
 import ast
 import re
-from dataclasses import dataclass
 from fractions import Fraction
 from typing import Any, Callable, Mapping
 
 import sympy as sp
 
 from ..result import AnalysisError
+from .limits import LIMITS, InputError, Limits  # noqa: F401  (the reader's errors and limits)
 
 
-class InputError(AnalysisError):
-    """A text that is not a formula of the input grammar, or that exceeds a limit.
-
-    ``kind`` says which (``"syntax"``, ``"name"``, ``"limit"``, ``"value"``) and goes into the
-    ``--json`` error document."""
-
-    def __init__(self, message: str, kind: str = "syntax"):
-        super().__init__(message)
-        self.kind = kind
-
-
-@dataclass(frozen=True)
-class Limits:
-    """The sizes one text may ask for. Each is checked before the work it bounds is done."""
-
-    #: characters of one formula
-    text: int = 100_000
-    #: nesting depth of the formula (parentheses and function calls; ``a+b+c`` counts once)
-    depth: int = 100
-    #: digits of one number as typed
-    digits: int = 2_000
-    #: |k| of a numeric power ``x**k`` (and of the decimal exponent in ``1e-5``)
-    exponent: int = 10_000
-    #: bits of any exact rational built while reading (about 4 000 decimal digits: every number
-    #: read can still be printed, Python's str(int) stops at 4 300 digits)
-    bits: int = 13_000
-    #: polynomial degree of the formula in its names (``(1+z)**40`` has degree 40)
-    degree: int = 2_000
-    #: characters of a name
-    name: int = 64
-    #: coefficients of a mask, entries of a stencil, values of a list typed in one option
-    coefficients: int = 1_000
-    #: the arity m of an m-ary scheme (transition operators have m matrices of size ~ support/(m-1))
-    arity: int = 32
-
-
-#: The limits of :func:`read_expression`; docs/input.md lists them.
-LIMITS = Limits()
 
 
 def _sqrt(x):
@@ -637,7 +599,7 @@ def as_expr(x: Any, *, what: str = "", names: Mapping[str, sp.Expr] | None = Non
     >>> as_expr(("1", "2"))
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: expected one number or formula, not a tuple
+    analysis.algebra.limits.InputError: expected one number or formula, not a tuple
     """
     if isinstance(x, sp.Basic):
         return x
@@ -675,7 +637,7 @@ def exact_number(x: Any, *, what: str = "number") -> sp.Expr:
     >>> exact_number("w")
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: unknown name 'w' in number "w": a number is expected here
+    analysis.algebra.limits.InputError: unknown name 'w' in number "w": a number is expected here
     """
     if isinstance(x, float):
         if x != x or x in (float("inf"), float("-inf")):

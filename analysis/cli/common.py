@@ -103,7 +103,7 @@ def read_number(text: str, what: str, *, real: bool = True, infinity: bool = Fal
     >>> read_number("I", "--param w")
     Traceback (most recent call last):
     ...
-    analysis.algebra.reader.InputError: --param w must be a real number, not I
+    analysis.algebra.limits.InputError: --param w must be a real number, not I
     """
     import sympy as sp
 
@@ -148,11 +148,11 @@ def _catalogue_arity(name: str, level: bool = False) -> int:
 def scheme_arity(args, level: bool = False) -> int:
     """The arity of the scheme input: ``--arity M`` (an integer >= 2), else the catalogue entry's
     arity, else 2. A ``--arity`` that contradicts the entry's is an error (issue 12)."""
-    from ..algebra.factorization import check_arity
-
     text = getattr(args, "arity", None)
     given = None
     if text is not None:
+        from ..algebra.factorization import check_arity
+
         try:
             given = check_arity(int(str(text).strip()))
         except ValueError:

@@ -37,6 +37,16 @@ def _fmt(x, side: str | None = None, digits: int = 10) -> str:
     return hi if 2 * _as_fraction(x, "lower") >= q else lo
 
 
+def _sstr(x) -> str:
+    """sympy's ``sstr`` of an exact value; text, ints and Fractions (the ball route's numbers) read the
+    same without importing sympy."""
+    if isinstance(x, (str, int, Fraction)):
+        return str(x)
+    import sympy as sp
+
+    return sp.sstr(x)
+
+
 def _numeric_entry(args):
     """The catalogue entry when --scheme names a scheme known only by enclosures (Daubechies)."""
     if getattr(args, "scheme", None) is None:
@@ -96,8 +106,6 @@ def _part(name: str, compute, lines: list, data: dict, args=None) -> None:
 
 
 def _alpha_part(args, a, budget):
-    import sympy as sp
-
     from ..regularity import NotConvergent
 
     try:
@@ -120,7 +128,7 @@ def _alpha_part(args, a, budget):
         return lines, data
     lines = []
     if h.value is not None:
-        lines.append(f"Hölder exponent alpha = {sp.sstr(h.value)} exactly   [{h.status}]")
+        lines.append(f"Hölder exponent alpha = {_sstr(h.value)} exactly   [{h.status}]")
     elif h.upper is None and h.lower is not None:
         lines.append(f"Hölder exponent alpha >= {_fmt(h.lower, 'lower')}   [{h.status}: a lower bound, not the value]")
     else:
@@ -128,12 +136,12 @@ def _alpha_part(args, a, budget):
     w = h.witness
     prod = w.get("product")
     _row(args, "alpha", h, witness=(f"k = {w['k']}, spectrum-maximizing product T_{''.join(map(str, prod))}"
-                                    + (f"; alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None
+                                    + (f"; alpha = {_sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None
                                        and h.value is None else "")
                                     if prod and w.get("k") is not None else h.provenance.get("method", "")))
     if prod and w.get("k") is not None:
         lines.append(f"  c(z) = 2^{w['k']} a(z)/(1+z)^{w['k'] + 1};  spectrum-maximizing product T_{''.join(map(str, prod))}"
-                     + (f";  alpha = {sp.sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
+                     + (f";  alpha = {_sstr(w['alpha_exact'])}" if w.get("alpha_exact") is not None else ""))
     if "message" in h.provenance:
         lines.append(f"  {h.provenance['message']}")
     if (every := w.get("every_convergent_mask")) is not None:
@@ -269,8 +277,6 @@ def _stability_part(args, a, budget):
     When the shifts are unstable, phi_a = q(tau) phi_b / q(1) is a finite combination of shifts
     of the stable phi_b, and phi_a is one limit of the scheme, so its exponent is >= alpha.
     """
-    import sympy as sp
-
     from ..regularity.stability import stable_shifts
 
     st = stable_shifts(a)
@@ -284,7 +290,7 @@ def _stability_part(args, a, budget):
     elif st.value is False:
         parts = []
         for h in w.get("symmetric_zeros_on_circle", []):
-            parts.append(f"symmetric zeros on the unit circle (H(z^2) | a(z), H = {sp.sstr(h)})")
+            parts.append(f"symmetric zeros on the unit circle (H(z^2) | a(z), H = {_sstr(h)})")
         for n in w.get("blocking_cycles", []):
             parts.append(f"the blocking cycle {_cycle_text(n)} (Phi_{2 * n} | a)")
         lines = [f"basic limit function: shifts unstable [{st.status}]: a(z) has " + " and ".join(parts)

@@ -5,7 +5,7 @@ subdivision scheme with difference mask ``c`` and transition matrices ``T_0, T_1
 exponent is ``alpha = k - log2 JSR(T_0, T_1)`` (see ``DESIGN.md``).
 
 Main entry point: :func:`jsr_bounds` returns a :class:`~analysis.result.Result` with a rigorous
-interval ``[lower, upper]`` (sympy Rationals), a status, the witness product and polytope, and
+interval ``[lower, upper]`` (sympy Rationals; Python rationals for ball input), a status, the witness product and polytope, and
 provenance.
 
 Examples
@@ -93,7 +93,6 @@ from fractions import Fraction
 from typing import Any, Sequence
 
 import numpy as np
-import sympy as sp
 from flint import fmpq_mat
 
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
@@ -227,6 +226,8 @@ def _solve_subspace(F: Family, W: fmpq_mat, **kw: Any) -> _Bounds:
     top, bottom = split_family(F.exact_q, W)
     sizes = [top[0].nrows(), bottom[0].nrows()]
     parts = _solve_parts([("W", _rational_family(top)), ("R^n/W", _rational_family(bottom))], kw)
+    import sympy as sp
+
     basis = [[sp.Rational(int(W[a, c].p), int(W[a, c].q)) for c in range(W.ncols())]
              for a in range(W.nrows())]
     return _combine(F, parts,
@@ -449,7 +450,7 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
             lower, rp, word = nl, nrp, tr.word
         witness["product_tree"] = {"nodes": tr.nodes, "depth": tr.depth, "leaves": tr.leaves,
                                    "certified_products": tr.certified_products,
-                                   "certified_bound": _q(round_up(tr.upper)),
+                                   "certified_bound": _q(round_up(tr.upper), F.kind),
                                    "stop": tr.stop_reason}
         if upper is None or tr.upper < upper:
             upper = tr.upper
@@ -525,8 +526,16 @@ def _solve_zero(F: Family, word, lower, rp, witness, max_length, work: Work) -> 
 # public API
 # --------------------------------------------------------------------------------------------
 
-def _q(x: Fraction | None) -> sp.Rational | None:
-    return None if x is None else sp.Rational(x.numerator, x.denominator)
+def _q(x: Fraction | None, kind: str = "rational"):
+    """``x`` as an exact number of the result: a sympy Rational, or for ball input an ``int`` or
+    ``Fraction`` (the ball route runs without sympy). The JSON and the printed digits are the same."""
+    if x is None:
+        return None
+    if kind == "ball":
+        return x.numerator if x.denominator == 1 else x
+    import sympy as sp
+
+    return sp.Rational(x.numerator, x.denominator)
 
 
 def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUDGET,
@@ -580,8 +589,8 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
     Returns
     -------
     Result
-        ``lower``/``upper`` sympy Rationals (dyadic, rounded outward); ``value`` only when they
-        coincide. ``status``: *certified* (rigorous and ``upper/lower - 1 <= rel_gap``),
+        ``lower``/``upper`` sympy Rationals (dyadic, rounded outward; for ball input ``int`` or
+        ``Fraction``, the same numbers without sympy); ``value`` only when they coincide. ``status``: *certified* (rigorous and ``upper/lower - 1 <= rel_gap``),
         *numerical* (float input, tight), *inconclusive* (otherwise: the bounds are still
         rigorous for exact input; ``provenance["message"]`` says what would settle it).
         ``witness``: ``product`` (word ``w``, meaning ``A_{w_1} A_{w_2} ... A_{w_L}``),
@@ -645,8 +654,8 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         status = INCONCLUSIVE
     witness: dict[str, Any] = {
         "product": word, "length": len(word),
-        "rho_product": {"lower": _q(round_down(b.rho_product[0])),
-                        "upper": _q(round_up(b.rho_product[1]))},
+        "rho_product": {"lower": _q(round_down(b.rho_product[0]), F.kind),
+                        "upper": _q(round_up(b.rho_product[1]), F.kind)},
         "polytope_vertices": b.witness.get("polytope_vertices", 0),
         "closed": bool(b.witness.get("closed", False)),
     }
@@ -654,9 +663,9 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         if key in witness:
             continue
         if isinstance(val, Fraction):
-            val = _q(val)
+            val = _q(val, F.kind)
         if key == "blocks":
-            val = [{**d, "lower": _q(d["lower"]), "upper": _q(d["upper"])} for d in val]
+            val = [{**d, "lower": _q(d["lower"], F.kind), "upper": _q(d["upper"], F.kind)} for d in val]
         if key == "candidates":
             val = [tuple(members[i] for i in w) for w in val]
         witness[key] = val
@@ -677,7 +686,7 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
         "timing": {"seconds": round(time.perf_counter() - t0, 4)},
     }
     if F.kind == "ball":
-        prov["input_max_radius"] = _q(round_up(F.max_radius()))
+        prov["input_max_radius"] = _q(round_up(F.max_radius()), F.kind)
         prov["valid_for"] = "every family of real matrices whose entries lie in the input balls"
     if b.notes:
         prov["notes"] = b.notes
@@ -692,6 +701,6 @@ def jsr_bounds(matrices: Any, *, max_length: int = 12, budget: int = DEFAULT_BUD
             "an exact invariant subspace (ball or algebraic entries) can need an analysis of "
             "their s.m.p.s by hand." if gap is not None else
             "no rigorous upper bound within the budget")
-    value = _q(lower) if (upper is not None and lower == upper) else None
-    return Result(value=value, status=status, lower=_q(lower), upper=_q(upper),
+    value = _q(lower, F.kind) if (upper is not None and lower == upper) else None
+    return Result(value=value, status=status, lower=_q(lower, F.kind), upper=_q(upper, F.kind),
                   witness=witness, provenance=prov)

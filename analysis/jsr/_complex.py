@@ -68,6 +68,7 @@ import numpy as np
 from flint import acb, acb_mat, arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
+from ._pivots import qr_pivots
 from ._polytope import COEF_BITS, VERTEX_BITS, Certificate, better_product
 from ._work import Work
 
@@ -168,13 +169,11 @@ class _CMember:
         self._r2 = 0.0
 
     def refresh(self) -> None:
-        import scipy.linalg
-
         st = self.st
         self._r2 = max((float(np.vdot(v, v).real) for v in st.V), default=0.0)
         if len(st.V) >= st.n:
             Vm = st.matrix()
-            _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+            piv = qr_pivots(Vm)
             idx = np.sort(piv[: st.n])
             Bm = Vm[:, idx]
             if np.linalg.matrix_rank(Bm) == st.n and np.linalg.cond(Bm) < 1e12:
@@ -279,8 +278,6 @@ def build_complex_polytope(mats: Sequence[np.ndarray], r: float, roots: Sequence
 def certify_complex_polytope(F: Family, r: Fraction, st: ComplexPolytopeState) -> Certificate | None:
     """Rigorous ``JSR <= r max_{i,j} ||A_i v_j / r||_P`` (module docstring), in Arb complex
     balls; ``None`` if representations are missing or the basis is singular."""
-    import scipy.linalg
-
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None
@@ -294,7 +291,7 @@ def certify_complex_polytope(F: Family, r: Fraction, st: ComplexPolytopeState) -
                     or np.ldexp(float(Vim[a][j]), -S) != st.V[j][a].imag):
                 raise ArithmeticError("vertex is not the dyadic it claims to be")
     Vm = st.matrix()
-    _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+    piv = qr_pivots(Vm)
     idx = sorted(int(p) for p in piv[:n])
     with arb_precision():
         two_S, two_T = arb(2) ** S, arb(2) ** T

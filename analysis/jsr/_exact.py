@@ -23,17 +23,28 @@ from __future__ import annotations
 
 import contextlib
 import math
+import sys
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import Any, Iterator, Sequence
+from typing import TYPE_CHECKING, Any, Iterator, Sequence
 
 import numpy as np
-import sympy as sp
 import flint
 from flint import acb_mat, arb, arb_mat, fmpq, fmpq_mat, fmpz
 
 from ..result import AnalysisError
-from ..algebra.reader import as_expr
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
+
+# No sympy at import: a family of balls or rationals (the ball route of the Hölder exponent) is
+# solved without it. A value can only be a sympy object once sympy is imported, so the readers
+# below look for sympy in ``sys.modules``; the functions that build sympy values import it.
+
+
+def _sympy():
+    """The sympy module if it is imported (then an input may be a sympy object), else None."""
+    return sys.modules.get("sympy")
 
 #: Working precision (bits) of every Arb computation in this package.
 ARB_PREC = 192
@@ -124,6 +135,8 @@ def sympy_to_arb(e: sp.Expr, known: dict | None = None) -> arb:
     """A rigorous Arb ball containing the real number ``e`` (numbers, +, *, powers, pi, E, sqrt,
     and the elementary functions in ``_ARB_FUNCS``; ``cos(q pi)`` for rational ``q`` through Arb's exact-argument
     cosine); ``known`` maps symbols to the balls they stand for."""
+    import sympy as sp
+
     if known and e in known:
         return known[e]
     if e.is_Rational:
@@ -237,6 +250,8 @@ class Family:
             return self.exact_q[i][r, c] == 0
         if self.balls is not None:      # zero for every matrix in the ball only if exactly 0
             return bool(self.balls[i][r, c].is_zero())
+        import sympy as sp
+
         return bool(sp.simplify(self.exact_sym[i][r, c]) == 0)
 
     def equal(self, i: int, j: int) -> bool:
@@ -247,6 +262,8 @@ class Family:
             A, B = self.balls[i], self.balls[j]
             return all(A[r, c].is_exact() and B[r, c].is_exact() and A[r, c].mid() == B[r, c].mid()
                        for r in range(self.n) for c in range(self.n))
+        import sympy as sp
+
         return bool((self.exact_sym[i] - self.exact_sym[j]).applyfunc(sp.simplify).is_zero_matrix)
 
     def product_q(self, word: Sequence[int]) -> fmpq_mat:
@@ -290,7 +307,10 @@ def _entry(x: Any) -> tuple[str, Any]:
     if isinstance(x, str):
         from ..algebra.symbol import parse_coefficient
         x = parse_coefficient(x)
-    if isinstance(x, sp.Basic):
+    sp = _sympy()
+    if sp is not None and isinstance(x, sp.Basic):
+        from ..algebra.reader import as_expr
+
         x = as_expr(x)
         if x.free_symbols:
             raise AnalysisError(f"matrix entry {x} has free symbols {sorted(map(str, x.free_symbols))}; "
@@ -308,7 +328,8 @@ def _entry(x: Any) -> tuple[str, Any]:
 def _rows(M: Any) -> list[list[Any]]:
     if isinstance(M, fmpq_mat):
         return [[M[r, c] for c in range(M.ncols())] for r in range(M.nrows())]
-    if isinstance(M, sp.MatrixBase):
+    sp = _sympy()
+    if sp is not None and isinstance(M, sp.MatrixBase):
         return [list(M.row(r)) for r in range(M.rows)]
     if isinstance(M, np.ndarray):
         if M.ndim != 2:
@@ -330,6 +351,7 @@ def parse_family(matrices: Any) -> Family:
     ('rational', 2, 2)
     >>> parse_family([np.eye(2)]).kind
     'float'
+    >>> import sympy as sp
     >>> parse_family([sp.Matrix([[sp.sqrt(3)]])]).kind
     'real'
     >>> parse_family([[[flint.arb(1) / 3]]]).kind          # an uncertain entry: a ball
@@ -337,7 +359,8 @@ def parse_family(matrices: Any) -> Family:
     """
     if isinstance(matrices, np.ndarray) and matrices.ndim == 3:
         matrices = list(matrices)
-    if isinstance(matrices, (np.ndarray, sp.MatrixBase, fmpq_mat)):
+    sp = _sympy()
+    if isinstance(matrices, (np.ndarray, fmpq_mat)) or (sp is not None and isinstance(matrices, sp.MatrixBase)):
         raise AnalysisError("expected a sequence of matrices, got a single matrix; wrap it in a list")
     try:
         mats = list(matrices)
@@ -392,6 +415,8 @@ def parse_family(matrices: Any) -> Family:
                 balls.append(arb_mat(n, n, vals))
         return Family(floats, kind, None, None, balls)
     if kind == "real":
+        import sympy as sp
+
         sym = [sp.Matrix([[sp.Rational(v.numerator, v.denominator) if t != "r" else v
                            for (t, v) in r] for r in P]) for P in parsed]
         return Family(floats, kind, None, sym)
@@ -476,6 +501,8 @@ def exact_rho_expression(F: Family, word: Sequence[int]) -> sp.Expr | None:
     is only a witness for display — the bounds never depend on it."""
     if F.exact_q is None or F.n > 8:
         return None
+    import sympy as sp
+
     try:
         from flint import fmpq_poly
 

@@ -28,6 +28,7 @@ from flint import arb, arb_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
 from ._balance import eigen_groups
+from ._pivots import qr_pivots
 from ._polytope import Certificate, PolytopeState
 
 #: bits of the exact dyadic vertex coordinates
@@ -117,8 +118,6 @@ def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_wor
                         rho_float: float) -> Certificate | None:
     """Rigorous ``JSR <= r * c`` from a closed float polytope rebuilt at high precision (see the
     module docstring); ``None`` if a vertex cannot be rebuilt or a local basis is singular."""
-    import scipy.linalg
-
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None
@@ -150,7 +149,7 @@ def certify_polytope_hp(F: Family, r: Fraction, st: PolytopeState, candidate_wor
             Vmp[j] = v
             Vint[j] = [int(mpmath.nint(mpmath.ldexp(x, S))) for x in v]
     Vm = st.matrix()
-    _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+    piv = qr_pivots(Vm)
     order = [int(p) for p in piv]
     groups: dict[tuple[int, ...], list[tuple[int, int]]] = {}
     for j in range(m):

@@ -54,6 +54,7 @@ from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
 from ._lp import WarmLP, small_lp
+from ._pivots import qr_pivots
 from ._work import Work
 
 #: work units of the float polytope (calibrated so that a unit is about a millisecond of CPU on the
@@ -142,8 +143,6 @@ class _Member:
         """Update the pre-test data after vertices were appended to ``st.V``: the largest squared
         vertex length, the separating functionals and the basis of vertices (a pivoted QR of the
         vertex matrix picks it; its inverse is recomputed only when the pick changes)."""
-        import scipy.linalg
-
         st = self.st
         m = len(st.V)
         st.work_units += m * st.n * st.n / VERTEX_ENTRIES_PER_UNIT
@@ -155,7 +154,7 @@ class _Member:
             self._Y = self._Y[ok]
         if m >= st.n and m != self._basis_m:
             Vm = self.matrix()
-            _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+            piv = qr_pivots(Vm)
             idx = np.sort(piv[: st.n])
             if self._basis_idx is None or not np.array_equal(idx, self._basis_idx):
                 Bm = Vm[:, idx]
@@ -416,8 +415,6 @@ class Certificate:
 def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate | None:
     """Rigorous bound ``JSR <= r * max_{i,j} ||A_i v_j / r||_P`` from the float representations
     (see module docstring); ``None`` if representations are missing or the basis is singular."""
-    import scipy.linalg
-
     n, k, m = st.n, st.k, len(st.V)
     if m < n or any((i, j) not in st.reps for j in range(m) for i in range(k)):
         return None
@@ -431,7 +428,7 @@ def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate |
     Vz = fmpz_mat(Vint)
     # basis and ||B^{-1}||_1, exactly
     Vm = st.matrix()
-    _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+    piv = qr_pivots(Vm)
     idx = sorted(int(p) for p in piv[:n])
     Bq = fmpq_mat([[Vint[a][j] for j in idx] for a in range(n)])
     try:
@@ -512,15 +509,13 @@ def _local_basis_bounds(F: Family, r: Fraction, st: PolytopeState, Vint: list[li
     ``M lambda`` and its Minkowski norm is at most ``||lambda||_1``. Columns sharing one local
     basis are solved together.
     """
-    import scipy.linalg
-
     n = st.n
     todo = [key for key, (bnd, coef) in bounds.items()
             if bnd - coef > LOCAL_RESIDUAL_THRESHOLD]
     if not todo:
         return {}
     Vm = st.matrix()
-    _, _, piv = scipy.linalg.qr(Vm, pivoting=True, mode="economic")
+    piv = qr_pivots(Vm)
     order = [int(p) for p in piv]
     groups: dict[tuple[int, ...], list[tuple[int, int]]] = {}
     for (i, j) in todo:

@@ -25,6 +25,7 @@ from flint import arb, arb_mat, ctx, fmpq
 
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.reader import as_expr
+from ._pivots import qr_pivots
 from ._polytope import build_polytope
 from ._work import Work
 
@@ -259,8 +260,6 @@ class ParametricStrip:
         f'(I) [-h, h]`` (``t_m`` the midpoint, ``h`` the half-width), the derivatives enclosed by
         forward differentiation over ``I``: the widths are ``O(h)`` without the dependency blow-up of
         a naive interval evaluation along long vertex words."""
-        import scipy.linalg
-
         tmq = (u + w) / 2
         self.units += STEP_UNITS
         fl = self.vertices_float(float(tmq))
@@ -343,7 +342,7 @@ class ParametricStrip:
                 x = step(i, *x)
             verts.append(x)
         Vm = np.array(Vf).T
-        piv = scipy.linalg.qr(Vm, pivoting=True)[2]
+        piv = qr_pivots(Vm)
         basis = [int(b) for b in piv[:d]]
         G = arb_mat([[verts[b][1][r, 0] for b in basis] for r in range(d)])
         try:

@@ -10,15 +10,27 @@ symbols enclosed in balls. A result is valid for **every** mask in the balls wit
 
 from __future__ import annotations
 
+import sys
+from fractions import Fraction
 from typing import Any, Sequence
 
-import sympy as sp
-
-from ..algebra.factorization import smoothing_factor
-from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, AnalysisError, Result
-from .convergence import log_interval
-from ..algebra.reader import as_expr
+from .convergence import log_bounds
+
+# No sympy at import, nor on the route of a catalogue entry or a list of balls: their exact
+# numbers (the bounds, the radius of c) are ints and Fractions, printed and written to JSON as
+# sympy's Rationals are. An exact symbol (sympy) is read only when one is given.
+
+
+def _exact(x: Fraction):
+    """``x`` as an int when it is one, else the Fraction (as a sympy Integer/Rational reads in JSON)."""
+    return x.numerator if x.denominator == 1 else x
+
+
+def _is_symbol(x: Any) -> bool:
+    """Is ``x`` a LaurentSymbol? (Its module is imported once one exists.)"""
+    mod = sys.modules.get("analysis.algebra.symbol")
+    return mod is not None and isinstance(x, mod.LaurentSymbol)
 
 
 def ball_divide_by_one_plus_z(coeffs: Sequence[Any], times: int = 1) -> list:
@@ -149,7 +161,10 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
 
     t0 = _time.perf_counter()
     source = "balls"
-    if isinstance(scheme, LaurentSymbol):
+    if _is_symbol(scheme):
+        from ..algebra.factorization import smoothing_factor
+        from ..algebra.reader import as_expr
+
         scheme.require_numeric("a Hölder exponent")
         N = sum_rules if sum_rules is not None else smoothing_factor(scheme, exceptional=False).value
         prec = prec if prec is not None else 128 + 4 * N
@@ -194,13 +209,13 @@ def ball_route(scheme: Any, *, sum_rules: int | None = None, prec: int | None = 
     if lo is None or lo <= 0:
         raise AnalysisError("the joint spectral radius lower bound is 0; the Hölder formula does not apply")
     if hi is not None:
-        l2lo, l2hi = log_interval(sp.Rational(lo), sp.Rational(hi))
-        a_lo, a_hi = k - l2hi, k - l2lo
+        l2lo, l2hi = log_bounds(Fraction(lo), Fraction(hi))
+        a_lo, a_hi = _exact(k - l2hi), _exact(k - l2lo)
     else:
-        a_lo, a_hi = None, k - log_interval(sp.Rational(lo), sp.Rational(lo))[0]
+        a_lo, a_hi = None, _exact(k - log_bounds(Fraction(lo), Fraction(lo))[0])
     word = r.witness.get("product") or ()
     witness = {"N": N, "k": k, "jsr": r, "product": word, "rho_product": r.witness.get("rho_product"),
-               "c_radius": sp.Rational(c_rad.numerator, c_rad.denominator),
+               "c_radius": _exact(c_rad),
                "matrix_size": len(T0)}
     if r.status == CERTIFIED and r.witness.get("closed") and word:
         witness["alpha_exact"] = f"{k} - log2(rho(T_{''.join(map(str, word))}))/{len(word)}"

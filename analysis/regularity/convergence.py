@@ -9,12 +9,20 @@ and ``c = m^k a/q_m^(k+1)`` (:func:`difference_mask`), ``alpha = k - log_m rho(c
 
 from __future__ import annotations
 
-import mpmath
-import sympy as sp
+from fractions import Fraction
+from typing import TYPE_CHECKING
 
-from ..algebra.factorization import arity_key, check_arity, factor_out, smoothing_factor, sum_rules
-from ..algebra.symbol import LaurentSymbol
+import mpmath
+
 from ..result import CERTIFIED, AnalysisError, Result
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
+
+    from ..algebra.symbol import LaurentSymbol
+
+# No sympy at import: the ball route (catalogue entries known by Arb balls) needs only
+# NotConvergent and log_bounds from here. The functions on exact symbols import it.
 
 iv = mpmath.iv
 
@@ -37,6 +45,8 @@ class NotConvergent(AnalysisError):
                          "it does not converge" + (f"; {hint}" if hint else ""))
 
     def result(self) -> Result:
+        from ..algebra.factorization import arity_key
+
         m = self.arity
         method = ("exact sum rules a(1) = 2, a(-1) = 0 (necessary for convergence)" if m == 2 else
                   f"exact {m}-ary sum rules (necessary for convergence)")
@@ -51,6 +61,7 @@ def convergence_failure(a: LaurentSymbol, *, arity: int = 2) -> str | None:
     and ``a(eps) = 0`` at the m-th roots of unity ``eps != 1``), else the reason, e.g.
     ``"a(-1) = 1/2 != 0"`` or one naming the root of unity (the sum rules are necessary for convergence).
 
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> convergence_failure(LaurentSymbol.from_mask(["1/4", "1/2", "1", "1/4"]))
     'a(-1) = 1/2 != 0'
     >>> convergence_failure(LaurentSymbol.from_mask(["1/2", 1, 1, 1, "1/2"]), arity=4) is None
@@ -58,6 +69,10 @@ def convergence_failure(a: LaurentSymbol, *, arity: int = 2) -> str | None:
     >>> convergence_failure(LaurentSymbol.from_mask(["1/2", 1, 1, 1, "1/2"]), arity=3)
     'a(1) = 4 != 3; a(exp(2*pi*i/3)) = 1/4 + sqrt(3)*I/4 != 0; a(exp(4*pi*i/3)) = 1/4 - sqrt(3)*I/4 != 0'
     """
+    import sympy as sp
+
+    from ..algebra.factorization import sum_rules
+
     a.require_numeric("the sum rules")
     if arity != 2:
         r = sum_rules(a, arity=arity)
@@ -79,6 +94,8 @@ def convergence_failure(a: LaurentSymbol, *, arity: int = 2) -> str | None:
 
 def _from_doubles(a: LaurentSymbol) -> bool:
     """Do some coefficients look like doubles read exactly (denominators powers of two of 2^40 or more)?"""
+    import sympy as sp
+
     qs = [c.q for c in a.mask if isinstance(c, sp.Rational)]
     return any(q >= 2 ** 40 and q & (q - 1) == 0 for q in qs)
 
@@ -89,9 +106,12 @@ def difference_mask(a: LaurentSymbol, *, arity: int = 2) -> tuple[int, LaurentSy
 
     Raises :class:`NotConvergent` (a certified verdict) when a sum rule fails.
 
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> difference_mask(LaurentSymbol.from_expr("(1+z+z**2)**2/(3*z**2)"), arity=3)
     (1, LaurentSymbol([1], start=-2, domain=QQ))
     """
+    from ..algebra.factorization import check_arity, factor_out, smoothing_factor
+
     m = check_arity(arity)
     a.require_numeric("a Hölder exponent")
     why = convergence_failure(a, arity=m)
@@ -101,26 +121,46 @@ def difference_mask(a: LaurentSymbol, *, arity: int = 2) -> tuple[int, LaurentSy
     return N - 1, factor_out(a, N, arity=m) / m
 
 
-def log_interval(lo: sp.Rational, hi: sp.Rational, base: int = 2, prec: int = 90):
-    """Rational outward bounds of ``[log_base lo, log_base hi]``."""
-    from ..algebra.algebraic import _q
+def log_bounds(lo, hi, base: int = 2, prec: int = 90) -> tuple[Fraction, Fraction]:
+    """Rational outward bounds ``(l, h)`` with ``l <= log_base lo`` and ``log_base hi <= h``, as
+    Fractions (``lo``, ``hi``: positive rationals — int, Fraction or sympy Rational), from mpmath's
+    interval arithmetic at ``prec`` bits; no sympy.
 
+    >>> l, h = log_bounds(Fraction(3, 2), Fraction(3, 2))
+    >>> l < h and float(h - l) < 1e-25 and abs(float(l) - 0.5849625007211562) < 1e-15
+    True
+    """
     old = iv.prec
     iv.prec = prec
     try:
-        L1 = iv.log(iv.mpf(int(lo.p)) / int(lo.q)) / iv.log(iv.mpf(base))
-        L2 = iv.log(iv.mpf(int(hi.p)) / int(hi.q)) / iv.log(iv.mpf(base))
-        return _q(L1.a), _q(L2.b)
+        L1 = iv.log(iv.mpf(int(lo.numerator)) / int(lo.denominator)) / iv.log(iv.mpf(base))
+        L2 = iv.log(iv.mpf(int(hi.numerator)) / int(hi.denominator)) / iv.log(iv.mpf(base))
+        ends = []
+        for x in (L1.a, L2.b):
+            p, q = mpmath.libmp.to_rational(x._mpi_[0])     # a degenerate interval: its exact end
+            ends.append(Fraction(int(p), int(q)))
+        return ends[0], ends[1]
     finally:
         iv.prec = old
+
+
+def log_interval(lo: sp.Rational, hi: sp.Rational, base: int = 2, prec: int = 90):
+    """Rational outward bounds of ``[log_base lo, log_base hi]`` (:func:`log_bounds` as sympy Rationals)."""
+    import sympy as sp
+
+    l, h = log_bounds(lo, hi, base, prec)
+    return sp.Rational(l.numerator, l.denominator), sp.Rational(h.numerator, h.denominator)
 
 
 def power_exponent(x, m: int = 2) -> int | None:
     """``e`` if ``x == m^e`` exactly (``e`` an integer), else None.
 
+    >>> import sympy as sp
     >>> power_exponent(sp.Rational(1, 9), 3), power_exponent(2, 3), power_exponent(sp.Rational(1, 4))
     (-2, None, -2)
     """
+    import sympy as sp
+
     x = sp.Rational(x)
     if x <= 0:
         return None

@@ -48,16 +48,21 @@ operators*, Found. Comput. Math. 13 (2013).
 
 from __future__ import annotations
 
-from typing import Any, Sequence
+import sys
+from typing import TYPE_CHECKING, Any, Sequence
 
-import sympy as sp
-
-from ..algebra.factorization import arity_key, check_arity
-from ..algebra.symbol import LaurentSymbol
+from ..algebra.limits import arity_key, check_arity
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, AnalysisError, Result
-from ..stationary.transition import transition_matrices
-from .balls import ball_route
+from .balls import _is_symbol, ball_route
 from .convergence import NotConvergent, difference_mask, log_interval, power_exponent
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
+
+    from ..algebra.symbol import LaurentSymbol
+
+# No sympy at import: a mask known by balls (a catalogue entry such as daubechies-8) takes the
+# ball route without it; the exact route and the exact C^j tests import it.
 
 
 #: default work budgets of :func:`holder_exponent` (units of :func:`analysis.jsr.jsr_bounds`)
@@ -98,29 +103,34 @@ def holder_exponent(a: Any, *, arity: int = 2, budget: int | None = None, max_le
     >>> r = holder_exponent(schemes.get("daubechies-6"))                  # Arb ball mask
     >>> r.status, round(float(r.lower), 9)
     ('certified', 1.087833926)
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> holder_exponent(LaurentSymbol.from_expr("(1+z+z**2)**4/(27*z**4)"), arity=3).value   # ternary cubic B-spline
     3
     """
-    from ..algebra.approx import ApproximateMask
-    from ..algebra.closed_form import ClosedFormMask
-
     m = check_arity(arity)
     if arithmetic not in (None, "exact", "ball"):
         raise AnalysisError(f"arithmetic must be 'exact' or 'ball', not {arithmetic!r}")
-    if m != 2 and not (isinstance(a, LaurentSymbol) and arithmetic != "ball"):
+    if m != 2 and not (_is_symbol(a) and arithmetic != "ball"):
         raise AnalysisError(f"an m-ary Hölder exponent needs an exact symbol, not {type(a).__name__}")
-    if isinstance(a, LaurentSymbol) and arithmetic != "ball":
+    if _is_symbol(a) and arithmetic != "ball":
         return _exact_route(a, arity=m, budget=EXACT_BUDGET if budget is None else budget,
                             max_length=12 if max_length is None else max_length, rel_gap=rel_gap)
     if arithmetic == "exact":
         raise AnalysisError(f"exact arithmetic needs an exact symbol, not {type(a).__name__}")
     kw = {"budget": BALL_BUDGET if budget is None else budget,
           "max_length": 16 if max_length is None else max_length, "rel_gap": rel_gap}
-    if isinstance(a, ClosedFormMask):
+    if _is_instance(a, "analysis.algebra.closed_form", "ClosedFormMask"):
         return _closed_form_route(a, prec=prec, **kw)
-    if isinstance(a, ApproximateMask):
+    if _is_instance(a, "analysis.algebra.approx", "ApproximateMask"):
         return _approximate_route(a, **kw)
     return ball_route(a, sum_rules=sum_rules, prec=prec, **kw)
+
+
+def _is_instance(x: Any, module: str, name: str) -> bool:
+    """``isinstance(x, module.name)`` without importing ``module`` (sympy): an instance exists
+    only once its module is imported."""
+    mod = sys.modules.get(module)
+    return mod is not None and isinstance(x, getattr(mod, name))
 
 
 def _closed_form_route(m, *, prec: int | None = None, **kw) -> Result:
@@ -154,7 +164,7 @@ def _approximate_route(m, **kw) -> Result:
     prec = 128 + 4 * N
     h = ball_route(m.enclosure(prec), sum_rules=N, prec=prec, **kw)
     lower, upper, message = h.lower, h.upper, m.description()
-    ceiling = upper is not None and upper >= N
+    ceiling = upper is not None and bool(upper >= N)      # a JSON true/false (it was sympy's "False" text)
     if ceiling:
         upper = None
         message += (f"; alpha of these masks is >= {float(lower):.10g} only: {N} - log2 rho reaches its ceiling {N} "
@@ -181,6 +191,10 @@ def _exact_route(a: LaurentSymbol, *, arity: int = 2, budget: int = EXACT_BUDGET
     rationals and (``m = 2``) ``witness["alpha_exact"]`` gives ``k - log2(rho(Pi))/L`` when the JSR is
     proven equal to ``rho(Pi)^(1/L)``. The status is that of the JSR bounds.
     """
+    import sympy as sp
+
+    from ..stationary.transition import transition_matrices
+
     from ..jsr import jsr_bounds
 
     m = arity
@@ -227,6 +241,8 @@ def _exact_route(a: LaurentSymbol, *, arity: int = 2, budget: int = EXACT_BUDGET
 # --------------------------------------------------------------------------------------------
 
 def word_product(T: Sequence[sp.Matrix], word: Sequence[int]) -> sp.Matrix:
+    import sympy as sp
+
     P = sp.eye(T[0].shape[0])
     for i in word:
         P = P * T[i]
@@ -239,6 +255,8 @@ def _spectral_radius_at_least_exact(P: sp.Matrix, theta: sp.Rational) -> bool | 
     Decided for real eigenvalues by Sturm counting; complex ones through certified complex
     root balls (python-flint). ``None`` when it cannot be decided.
     """
+    import sympy as sp
+
     lam = sp.Symbol("lambda")
     cp = sp.Poly(P.charpoly(lam).as_expr(), lam, domain=sp.QQ)
     if cp.count_roots(theta, sp.oo) > 0 or cp.count_roots(-sp.oo, -theta) > 0:
@@ -282,6 +300,7 @@ def smoothness(a: Any, j: int, *, arity: int = 2, budget: int = EXACT_BUDGET, ma
     check. The two are kept apart because their witnesses (which test decided, in which words) are
     what the reports and goldens of each arity record; ``max_L``/``max_word`` apply to ``m > 2``.
 
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> smoothness(LaurentSymbol.from_mask([1, 2]), 0, arity=3).witness["reason"]
     'not convergent: a(exp(2*pi*i/3)) = sqrt(3)*I != 0; a(exp(4*pi*i/3)) = -sqrt(3)*I != 0'
     """
@@ -290,11 +309,14 @@ def smoothness(a: Any, j: int, *, arity: int = 2, budget: int = EXACT_BUDGET, ma
         return _smoothness_dilated(a, m, j, budget=budget, max_length=max_length, max_L=max_L, max_word=max_word)
     if j < 0:
         raise AnalysisError("j must be >= 0")
-    if not isinstance(a, LaurentSymbol):
+    if not _is_symbol(a):
         try:
             return verdict_from_enclosure(holder_exponent(a, budget=budget), j)
         except NotConvergent as exc:
             return exc.result()
+    import sympy as sp
+
+    from ..stationary.transition import transition_matrices
     try:
         k, c = difference_mask(a)
     except NotConvergent as exc:          # certified: not even C^0
@@ -336,6 +358,10 @@ def smoothness(a: Any, j: int, *, arity: int = 2, budget: int = EXACT_BUDGET, ma
 def _smoothness_dilated(a: LaurentSymbol, m: int, j: int, *, budget: int, max_length: int, max_L: int,
                         max_word: int) -> Result:
     """:func:`smoothness` for arity ``m > 2`` (see there)."""
+    import sympy as sp
+
+    from ..stationary.transition import transition_matrices
+
     from itertools import product as words
 
     from ..stationary.difference import difference_norm
@@ -394,6 +420,8 @@ def _smoothness_dilated(a: LaurentSymbol, m: int, j: int, *, budget: int, max_le
 
 def _modulus_at_least(charpoly_coeffs: list, theta: sp.Rational) -> bool | None:
     """Exactly: does the rational polynomial (coefficients low->high) have a root with |x| >= theta?"""
+    import sympy as sp
+
     x = sp.Symbol("x")
     poly = sp.Poly(list(reversed(charpoly_coeffs)), x, domain=sp.QQ)
     if poly.count_roots(theta, sp.oo) > 0 or poly.count_roots(-sp.oo, -theta) > 0:
@@ -416,6 +444,10 @@ def _quick_verdict(a: LaurentSymbol, c: LaurentSymbol, k: int, j: int, *, max_L:
                    max_word: int = 4) -> Result | None:
     """Cheap exact verdicts before the JSR: the Dyn–Levin norm test (C^j) for L <= max_L, and
     exact spectral radii of all products of length <= max_word (not C^j)."""
+    import sympy as sp
+
+    from ..stationary.transition import transition_matrices
+
     if not (a.domain.is_QQ or a.domain.is_ZZ):
         return None
     from ..stationary.difference import difference_norm

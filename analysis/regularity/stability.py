@@ -118,16 +118,17 @@ of functions*, Proc. Edinburgh Math. Soc. 36 (1993) 69-85 (symmetric zeros: line
 
 from __future__ import annotations
 
-from typing import Any
-
-import sympy as sp
+from typing import TYPE_CHECKING, Any
 
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
-from ..algebra.symbol import LaurentSymbol, Z
-from ..algebra.reader import as_expr
 
-_T = sp.Symbol("t", real=True)
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy as sp
 
+    from ..algebra.symbol import LaurentSymbol
+
+# No sympy at import: a mask known by balls (stable_shifts of a catalogue entry such as
+# daubechies-8) is decided by Arb root isolation without it; the exact criterion imports it.
 
 # --------------------------------------------------------------------------------------------
 # exact helpers
@@ -135,6 +136,8 @@ _T = sp.Symbol("t", real=True)
 
 def _field_poly(a: LaurentSymbol) -> sp.Poly:
     """``z^(-start) a(z)`` over a field (QQ or a real algebraic field), or AnalysisError."""
+    import sympy as sp
+
     a.require_numeric("the stability of the shifts")
     p = a.poly
     dom = p.domain
@@ -149,6 +152,8 @@ def _field_poly(a: LaurentSymbol) -> sp.Poly:
 
 def _reflect(p: sp.Poly) -> sp.Poly:
     """``p(-z)``."""
+    import sympy as sp
+
     coeffs = p.rep.to_list()                     # highest first
     d = len(coeffs) - 1
     return sp.Poly.from_list([c if (d - i) % 2 == 0 else -c for i, c in enumerate(coeffs)],
@@ -157,6 +162,8 @@ def _reflect(p: sp.Poly) -> sp.Poly:
 
 def _even_part(g: sp.Poly) -> sp.Poly:
     """``H`` with ``g(z) = H(z^2)`` (``g`` even)."""
+    import sympy as sp
+
     terms = {(m[0] // 2,): c for m, c in g.rep.to_dict().items()}
     if any(m[0] % 2 for m in g.monoms()):  # pragma: no cover - gcd(a(z), a(-z)) is even
         raise ArithmeticError("gcd(a(z), a(-z)) is not even")
@@ -165,12 +172,18 @@ def _even_part(g: sp.Poly) -> sp.Poly:
 
 def _upsample(H: sp.Poly, m: int = 2) -> sp.Poly:
     """``H(z^m)``."""
+    import sympy as sp
+
     return sp.Poly.from_dict({(e[0] * m,): c for e, c in H.rep.to_dict().items()}, H.gen, domain=H.domain)
 
 
 def _real_roots_exist(D: sp.Poly) -> tuple[bool | None, str]:
     """Does the real-coefficient polynomial ``D`` (over QQ or a real algebraic field) have a real
     root?  Exact over QQ (Sturm); over an algebraic field by certified root isolation."""
+    import sympy as sp
+
+    from ..algebra.reader import as_expr
+
     if D.degree() <= 0:
         return False, "constant"
     if D.domain.is_QQ or D.domain.is_ZZ:
@@ -209,15 +222,21 @@ def unit_circle_zero(H: sp.Poly) -> tuple[bool | None, str]:
     Cayley transform ``w = (1+it)/(1-it)``: ``(1-it)^m H(w) = R(t) + i I(t)``; a zero on the
     circle other than ``-1`` is a common real zero of ``R`` and ``I``.
 
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import Z
     >>> unit_circle_zero(sp.Poly(Z**2 + 1, Z))[0], unit_circle_zero(sp.Poly(Z**2 - 3*Z + 1, Z))[0]
     (True, False)
     """
+    import sympy as sp
+
+    from ..algebra.reader import as_expr
+
     if H.degree() <= 0:
         return False, "constant"
     if H.eval(-1) == 0:
         return True, "H(-1) = 0"
     m = H.degree()
-    t = _T
+    t = sp.Symbol("t", real=True)
     expr = sp.Integer(0)
     for (k,), c in H.terms():
         expr += as_expr(c) * (1 + sp.I * t) ** k * (1 - sp.I * t) ** (m - k)
@@ -235,6 +254,10 @@ def unit_circle_zero(H: sp.Poly) -> tuple[bool | None, str]:
 
 
 def _cyclotomic(n: int, dom) -> sp.Poly:
+    import sympy as sp
+
+    from ..algebra.symbol import Z
+
     return sp.Poly(sp.cyclotomic_poly(n, Z), Z, domain=dom)
 
 
@@ -248,6 +271,8 @@ def _one_step(p: sp.Poly):
     Returns ``(kind, data, factor_q, new_p, note)``: kind "stable", "symmetric" (data = H),
     "cycle" (data = n) or "inconclusive" (data = reason).
     """
+    import sympy as sp
+
     dom = p.domain
     g = p.gcd(_reflect(p))
     notes = []
@@ -297,12 +322,18 @@ def stable_shifts(a: Any, *, arity: int = 2, sum_rules: int | None = None, prec:
     ``a(z) q(z) = b(z) q(z^2)``; ``reason`` in words. See the module docstring for the
     criterion (and why the issue's wording was corrected) and the algorithm.
     """
+    from .balls import _is_symbol
+
     if arity != 2:
         from ..algebra.factorization import check_arity
 
         return _stable_shifts_dilated(a, check_arity(arity))
-    if not isinstance(a, LaurentSymbol):
+    if not _is_symbol(a):
         return _stable_shifts_balls(a, sum_rules=sum_rules, prec=prec)
+    import sympy as sp
+
+    from ..algebra.symbol import LaurentSymbol, Z
+
     p = _field_poly(a)
     if p.eval(1) != 2:
         raise AnalysisError(f"stability of the refinable function needs a(1) = 2 (here a(1) = {sp.sstr(a(1))})")
@@ -421,9 +452,13 @@ def ball_mask(scheme: Any, *, sum_rules: int | None = None, prec: int | None = N
 def polyphase_gcd(p: sp.Poly, m: int) -> sp.Poly:
     """Monic ``H`` with ``H(z^m) = gcd_eps p(eps z)``: the gcd of the polyphase components of ``p``.
 
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import Z
     >>> polyphase_gcd(sp.Poly((1 + Z**3) * (1 + Z + Z**2), Z, domain=sp.QQ), 3).as_expr()
     w + 1
     """
+    import sympy as sp
+
     w = sp.Symbol("w")
     comps: dict[int, dict] = {}
     for (e,), c in p.terms():
@@ -439,6 +474,10 @@ def polyphase_gcd(p: sp.Poly, m: int) -> sp.Poly:
 
 def _strip_roots_of_unity(p: sp.Poly, m: int) -> sp.Poly:
     """``p`` with every factor it shares with ``z^m - 1`` divided out (repeatedly)."""
+    import sympy as sp
+
+    from ..algebra.symbol import Z
+
     zm = sp.Poly(Z ** m - 1, Z, domain=p.domain)
     while True:
         g = p.gcd(zm)
@@ -451,9 +490,15 @@ def _blocking_orders(p: sp.Poly, m: int):
     """``(n, [d ...])`` for the orders ``n > 1`` prime to ``m`` with ``Phi_{nd} | p`` for every divisor ``d > 1`` of
     ``m`` (rational ``p``; with multiplicity: an order is yielded once per complete set of factors).
 
+    >>> import sympy as sp
+    >>> from analysis.algebra.symbol import Z
     >>> list(_blocking_orders(sp.Poly(1 + Z**2 + Z**4, Z, domain=sp.QQ), 3))
     [(2, [3])]
     """
+    import sympy as sp
+
+    from ..algebra.symbol import Z
+
     from math import gcd
 
     from sympy import totient
@@ -477,6 +522,7 @@ def _stable_shifts_dilated(a: LaurentSymbol, m: int) -> Result:
     (certified) or None (inconclusive, with ``witness["reason"]``); the witness carries ``reduced_mask`` ``b``
     (stable) and ``q`` with ``phi_a = q(tau) phi_b / q(1)``, ``a(z) q(z) = b(z) q(z^m)``.
 
+    >>> from analysis.algebra.symbol import LaurentSymbol
     >>> _stable_shifts_dilated(LaurentSymbol.from_expr("(1+z+z**2)**2/(3*z**2)"), 3).value   # ternary linear B-spline
     True
     >>> r = _stable_shifts_dilated(LaurentSymbol.from_expr("(1+z**3+z**6)*(1+z+z**2)**2/9"), 3)
@@ -486,6 +532,10 @@ def _stable_shifts_dilated(a: LaurentSymbol, m: int) -> Result:
     >>> r.value, r.witness["blocking_cycles"], r.witness["reduced_mask"].expr()
     (False, [2], z**2 + z + 1)
     """
+    import sympy as sp
+
+    from ..algebra.symbol import LaurentSymbol, Z
+
     p = _field_poly(a)
     if sp.simplify(p.eval(1) - m) != 0:
         raise AnalysisError(f"stability of the {m}-ary refinable function needs a(1) = {m} "
