@@ -16,11 +16,15 @@ from papers import seed000, seed001
 
 
 @pytest.fixture(scope="module")
-def evaluated():
-    out = {}
-    for paper in (seed000.PAPER, seed001.PAPER):
-        for ev in C.evaluate_paper(paper):
-            out[ev.claim.id] = ev
+def evaluated_001():
+    """Every claim of paper 001, evaluated once per test process (here and for its report below)."""
+    return C.evaluate_paper(seed001.PAPER)
+
+
+@pytest.fixture(scope="module")
+def evaluated(evaluated_001):
+    out = {ev.claim.id: ev for ev in C.evaluate_paper(seed000.PAPER)}
+    out.update((ev.claim.id, ev) for ev in evaluated_001)
     return out
 
 
@@ -40,6 +44,7 @@ def test_matches_golden_files(evaluated):
 
     from analysis.claims import golden_path
 
+    C.papers()                           # discovery names each bundled paper's folder (its golden file)
     for paper in (seed000.PAPER, seed001.PAPER):
         golden = json.loads(golden_path(paper).read_text(encoding="utf-8"))
         fresh = C.verdicts_json({paper.id: [evaluated[c.id] for c in paper.claims]})
@@ -222,9 +227,21 @@ def test_locality_count_independently(evaluated):
     assert nums["count_rule_holds"] is True
 
 
-def test_report_files_written(tmp_path):
+def test_report_files_written(tmp_path, evaluated_001, monkeypatch):
+    """``subdiv report 001`` renders and writes every claim's verdict. Its evaluation is
+    ``analysis.claims.model.evaluate_paper`` on paper 001, which the fixture ran already (and the tests
+    above check claim by claim): the command gets those verdicts instead of computing them again."""
     from analysis.cli import main
+    from analysis.cli import report as cli_report
 
+    def evaluate_paper(paper, progress=None, only=None):
+        assert paper is seed001.PAPER and only is None
+        for k, ev in enumerate(evaluated_001, start=1):
+            if progress is not None:
+                progress(k, len(evaluated_001), ev)
+        return list(evaluated_001)
+
+    monkeypatch.setattr(cli_report, "evaluate_paper", evaluate_paper)
     assert main(["report", "001", "--output", str(tmp_path), "--quiet"]) in (0, None)
     assert (tmp_path / "001.md").stat().st_size > 5000 and (tmp_path / "001.html").exists()
     assert (tmp_path / "figures" / "001-chamfer.png").exists()

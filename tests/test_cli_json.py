@@ -145,11 +145,15 @@ def test_every_command_is_covered():
     assert commands(build_parser()) - covered == {("report",)}     # report: test_report_json_... below
 
 
-def test_report_json_writes_to_output_folder(tmp_path):
-    rc, out, err = run("report", "000", "--output", str(tmp_path), "--quiet", "--json")
-    assert rc == 0, err
-    data = json.loads(out)
+def test_report_json_writes_to_output_folder(tmp_path, capfd):
+    """The writing path of ``report --json`` (two claims of paper 000 written with ``--write``: the same
+    rendering and writing code as the whole paper, without its slow claims)."""
+    r = run_cli(capfd, "report", "000", "--claim", "000:S_2", "--claim", "000:regularity", "--write",
+                "--output", str(tmp_path), "--quiet", "--json")
+    assert r.returncode == 0, r.stderr
+    data = json.loads(r.stdout)
     assert set(data["papers"]) == {"000"}
+    assert set(data["papers"]["000"]["claims"]) == {"000:S_2", "000:regularity"}
     assert (tmp_path / "000.md").exists() and (tmp_path / "verdicts.json").exists()
 
 

@@ -135,6 +135,8 @@ def factor_out(a: LaurentSymbol, k: int, *, arity: int = 2) -> LaurentSymbol:
     LaurentSymbol([3], start=-2, domain=QQ)
     """
     m = check_arity(arity)
+    if m == 2 and k > 0 and not a.is_zero:
+        return _factor_out_binary(a, k)
     b = a
     for j in range(k):
         q, _r, divisible = divide_q(b, m)
@@ -144,6 +146,25 @@ def factor_out(a: LaurentSymbol, k: int, *, arity: int = 2) -> LaurentSymbol:
                 f"the difference scheme of order {k} needs {k}")
         b = q * m
     return b
+
+
+def _factor_out_binary(a: LaurentSymbol, k: int) -> LaurentSymbol:
+    """:func:`factor_out` for ``m = 2`` on the coefficient list: ``k`` synthetic divisions by ``(1+z)``,
+    each quotient times 2, in the domain ``a * 2`` has (the same symbol as dividing and scaling ``k`` times)."""
+    dom = a.domain.unify(sp.QQ)
+    two = dom.convert(2)
+    coeffs = a.poly.set_domain(dom).rep.to_list()          # highest degree first
+    for j in range(k):
+        out = []
+        for c in coeffs:
+            out.append(c - out[-1] if out else c)
+        if not _is_zero(dom, out[-1]) or len(out) < 2:
+            raise AnalysisError(
+                f"the symbol has only {j} factor(s) {q_name(2)} identically in its parameters; "
+                f"the difference scheme of order {k} needs {k}")
+        coeffs = [two * c for c in out[:-1]]
+    params = tuple(sorted(set(a.params), key=lambda s: s.name))
+    return LaurentSymbol(sp.Poly.from_list(coeffs, a.poly.gen, domain=dom), a.start, params)
 
 
 # --------------------------------------------------------------------------------------------

@@ -468,11 +468,20 @@ class LaurentSymbol:
         return self._coerce(other) - self
 
     def __mul__(self, other) -> "LaurentSymbol":
+        if isinstance(other, (int, sp.Rational)) and not isinstance(other, bool):
+            return self._scaled(sp.Rational(other))
         other = self._coerce(other)
         p, q, params = self._unify(other)
         return LaurentSymbol(p * q, self.start + other.start, params)
 
     __rmul__ = __mul__
+
+    def _scaled(self, c: sp.Rational) -> "LaurentSymbol":
+        """``c * self`` for a rational ``c``: the product with the constant symbol ``c`` (domain QQ, as
+        :meth:`from_mask` gives it), without building that symbol."""
+        dom = self.domain.unify(sp.QQ)
+        params = tuple(sorted(set(self.params), key=lambda s: s.name))
+        return LaurentSymbol(self._poly.set_domain(dom).mul_ground(dom.from_sympy(c)), self.start, params)
 
     def __truediv__(self, scalar) -> "LaurentSymbol":
         s = parse_coefficient(scalar)

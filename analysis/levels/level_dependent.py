@@ -401,16 +401,17 @@ class LevelDependentScheme:
         longer = [Jc for Jc in cache if Jc > J]
         if longer:                          # the same series, truncated (no new sympy.series)
             return tuple(r[:J] for r in cache[min(longer)])
-        rows = []
+        rows, done = [], {}                 # a symmetric mask repeats its differences: one series each
         for c, c0 in zip(self.mask, self._limits):
             g = c - c0
             if H not in g.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue
-            ser = sp.series(g, H, 0, J).removeO()
-            ser = sp.expand(ser)
-            coeffs = [sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J)]
-            rows.append(tuple(coeffs))
+            if g not in done:
+                ser = sp.series(g, H, 0, J).removeO()
+                ser = sp.expand(ser)
+                done[g] = tuple(sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J))
+            rows.append(done[g])
         cache[J] = tuple(rows)
         return cache[J]
 
