@@ -51,7 +51,9 @@ Algorithm
    run them: :class:`concurrent.futures.ProcessPoolExecutor` (``executor="local"``), a Dask
    cluster (``executor="dask://host:port"``, via ``distributed.Client.map`` and
    ``distributed.as_completed``), or in process (``executor=None``). Results do not depend on
-   the executor: the budget of each JSR computation counts work, not time.
+   the executor: the budget of each JSR computation counts work, not time. The tasks of one process
+   run one at a time (python-flint's precision is global to a process, so threads of a Dask worker or a
+   thread pool would change each other's enclosures).
 
 References
 ----------
@@ -67,6 +69,7 @@ from __future__ import annotations
 
 import functools
 import os
+import threading
 import time
 from typing import Any, Iterable, Mapping, Sequence
 
@@ -225,11 +228,18 @@ def evaluate_point(symbol: LaurentSymbol, values: Mapping[str, Any], j_levels: S
     return sample
 
 
+#: python-flint's working precision (``flint.ctx.prec``) is global to the process: two points evaluated at
+#: once by threads of one process (a thread pool, a Dask worker with several threads) would change each
+#: other's precision and hence their enclosures, so the tasks of one process run one at a time
+_ONE_TASK_AT_A_TIME = threading.Lock()
+
+
 def _evaluate_task(task: tuple) -> dict[str, Any]:
     """The picklable unit of work: ``(mask, start, names, ((name, "p/q"), ...), j_levels, budget, key[, arity])``."""
     mask, start, names, values, j_levels, budget, key, *m = task
     symbol, vals = _rebuild(mask, start, names), {n: sp.Rational(v) for n, v in values}
-    sample = evaluate_point(symbol, vals, j_levels, budget, arity=m[0] if m else 2)
+    with _ONE_TASK_AT_A_TIME:
+        sample = evaluate_point(symbol, vals, j_levels, budget, arity=m[0] if m else 2)
     sample["key"] = key
     return sample
 
