@@ -92,7 +92,7 @@ import flint
 import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
-from .divided import divided_difference, q_label
+from .divided import certainly_not_divisible, divided_difference, q_label
 from .expbspline import not_ck
 from .gendiff import GeneralizedDifferences, gendiff_smoothness
 from .hseries import prefill_taylor
@@ -197,7 +197,9 @@ class _Differences:
         if j not in self.schemes:
             prev = self.get(j - 1)
             try:
-                self.schemes[j] = None if prev is None else divided_difference(prev, 1, self.arity)
+                # certainly_not_divisible: the exact test would fail too (cheap, skips its simplifications)
+                self.schemes[j] = (None if prev is None or certainly_not_divisible(prev.mask, self.arity) else
+                                   divided_difference(prev, 1, self.arity))
                 if self.schemes[j] is not None:
                     prefill_taylor(self.schemes[j])
             except AnalysisError:

@@ -442,6 +442,7 @@ def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | N
                       witness={"failed": ["H1: exponential factor p_n | a^n for every n"], "reason": why,
                                "Lambda": fac.value, "hypotheses": {"H1": fac}}, provenance=prov)
     if converges is None:
+        prefill_taylor(s)      # as level_smoothness does: the exact Taylor coefficients without sympy.series
         converges = smoothness(s, None, 0, N=N, arity=arity)
     h2 = converges if converges.is_certified and converges.value is True else Result(
         value=None, status=INCONCLUSIVE, witness={"reason": "convergence of {S_(a^n)} not certified"})

@@ -41,6 +41,8 @@ R. P. Brent, H. T. Kung, *Fast algorithms for manipulating formal power series*,
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from .level_dependent import H, LevelDependentScheme
@@ -131,9 +133,15 @@ def _series(e: sp.Expr, J: int) -> list:
 
 def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
     """``taylor(J)`` of the scheme computed by truncated series arithmetic, or ``None`` (unsupported)."""
+    return _taylor_rows(s.mask, s._limits, J)
+
+
+@lru_cache(maxsize=512)
+def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
+    """:func:`taylor_rows` of a mask and its limits (a pure function of them, remembered)."""
     rows = []
     try:
-        for c, c0 in zip(s.mask, s._limits):
+        for c, c0 in zip(mask, limits):
             if H not in c.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue

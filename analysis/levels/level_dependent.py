@@ -63,7 +63,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any, Mapping, Sequence
 
 import flint
@@ -132,8 +132,19 @@ def entire_form(expr: sp.Expr) -> sp.Expr:
     >>> entire_form(sp.sin(3 * a * H / 4) / sp.sin(a * H))
     3*sinc(3*alpha*h/4)/(4*sinc(alpha*h))
     """
-    return as_expr(expr).replace(sp.sin, lambda u: u * sp.sinc(u)).replace(
-        sp.sinh, lambda u: u * sp.sinc(sp.I * u))
+    return _entire_form(as_expr(expr))
+
+
+@lru_cache(maxsize=4096)
+def _entire_form(e: sp.Expr) -> sp.Expr:
+    """:func:`entire_form` of an expression (a pure function of it, remembered: the level loops ask again)."""
+    return e.replace(sp.sin, lambda u: u * sp.sinc(u)).replace(sp.sinh, lambda u: u * sp.sinc(sp.I * u))
+
+
+@lru_cache(maxsize=4096)
+def _simplified_difference(c: sp.Expr, c0: sp.Expr) -> sp.Expr:
+    """``simplify(c - c0)`` (a pure function of the pair, remembered)."""
+    return sp.simplify(c - c0)
 
 
 _Z = sp.Symbol("z")
@@ -370,16 +381,7 @@ class LevelDependentScheme:
     # ---------------------------------------------------------------- limit and expansion
     @cached_property
     def _limits(self) -> tuple:
-        out = []
-        for c in self.mask:
-            if H not in c.free_symbols:
-                out.append(sp.simplify(c))
-                continue
-            c0 = sp.simplify(sp.limit(c, H, 0, "+"))
-            if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
-                raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
-            out.append(c0)
-        return tuple(out)
+        return _limits_of(self.mask)
 
     def limit(self) -> LaurentSymbol:
         """The limit symbol ``a = lim_{n->oo} a^n`` (exact).
@@ -401,17 +403,7 @@ class LevelDependentScheme:
         longer = [Jc for Jc in cache if Jc > J]
         if longer:                          # the same series, truncated (no new sympy.series)
             return tuple(r[:J] for r in cache[min(longer)])
-        rows = []
-        for c, c0 in zip(self.mask, self._limits):
-            g = c - c0
-            if H not in g.free_symbols:
-                rows.append(tuple(sp.Integer(0) for _ in range(J)))
-                continue
-            ser = sp.series(g, H, 0, J).removeO()
-            ser = sp.expand(ser)
-            coeffs = [sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J)]
-            rows.append(tuple(coeffs))
-        cache[J] = tuple(rows)
+        cache[J] = _taylor_by_series(self.mask, self._limits, J)
         return cache[J]
 
     def order(self, J_max: int = 8) -> int:
@@ -436,22 +428,7 @@ class LevelDependentScheme:
             raise AnalysisError(f"arity {self.arity}: use analysis.levels.divided.divided_difference(s, {k})")
         if spelling not in ("divided", "paper"):
             raise AnalysisError(f"unknown spelling {spelling!r}; use 'divided' or 'paper'")
-        coeffs = list(self.mask)
-        for _ in range(k):
-            q: list[sp.Expr] = []
-            rem = sp.Integer(0)
-            for c in coeffs[:-1]:
-                rem = c - rem
-                q.append(rem)
-            last = coeffs[-1] - rem
-            if sp.simplify(last.rewrite(sp.exp)) != 0:
-                raise AnalysisError("(1+z) does not divide a^n(z) identically in n "
-                                    f"(a^n(-1) = {sp.simplify(last)})")
-            coeffs = [2 * c for c in q]
-        start = self.start + (k if spelling == "paper" else 0)
-        return LevelDependentScheme(tuple(coeffs), start, self.params,
-                                    slug=f"{self.slug}-diff{k}", title=f"{k}-th difference of {self.title}",
-                                    source=self.source)
+        return _binary_difference(self, k, spelling)
 
     def normalized(self) -> "LevelDependentScheme":
         """The scheme divided by its (common) even/odd sum, so that constants are reproduced.
@@ -469,6 +446,61 @@ class LevelDependentScheme:
     def stencil_sum(self) -> sp.Expr:
         """The sum of the even stencil, ``sum_j a^n_{2j}`` (exact expression in h)."""
         return sum(c for i, c in enumerate(self.mask) if (self.start + i) % 2 == 0)
+
+
+# pure functions of a scheme or of its mask, remembered (bounded): the C^k routes, the weighted series and the
+# tests ask for the same limits, expansions and difference schemes again, on equal schemes built anew
+
+@lru_cache(maxsize=512)
+def _limits_of(mask: tuple) -> tuple:
+    """The limits ``a_k = lim_{h -> 0} a^n_k`` of the coefficients (exact; :class:`AnalysisError` when one is not finite)."""
+    out = []
+    for c in mask:
+        if H not in c.free_symbols:
+            out.append(sp.simplify(c))
+            continue
+        c0 = sp.simplify(sp.limit(c, H, 0, "+"))
+        if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
+            raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
+        out.append(c0)
+    return tuple(out)
+
+
+@lru_cache(maxsize=512)
+def _taylor_by_series(mask: tuple, limits: tuple, J: int) -> tuple:
+    """:meth:`LevelDependentScheme.taylor` by ``sympy.series``: ``g_{k,j}``, ``j < J``, of ``a^n_k - a_k``."""
+    rows = []
+    for c, c0 in zip(mask, limits):
+        g = c - c0
+        if H not in g.free_symbols:
+            rows.append(tuple(sp.Integer(0) for _ in range(J)))
+            continue
+        ser = sp.series(g, H, 0, J).removeO()
+        ser = sp.expand(ser)
+        coeffs = [sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J)]
+        rows.append(tuple(coeffs))
+    return tuple(rows)
+
+
+@lru_cache(maxsize=256)
+def _binary_difference(s: LevelDependentScheme, k: int, spelling: str) -> LevelDependentScheme:
+    """:meth:`LevelDependentScheme.difference` of a binary scheme (a failed division raises each time)."""
+    coeffs = list(s.mask)
+    for _ in range(k):
+        q: list[sp.Expr] = []
+        rem = sp.Integer(0)
+        for c in coeffs[:-1]:
+            rem = c - rem
+            q.append(rem)
+        last = coeffs[-1] - rem
+        if sp.simplify(last.rewrite(sp.exp)) != 0:
+            raise AnalysisError("(1+z) does not divide a^n(z) identically in n "
+                                f"(a^n(-1) = {sp.simplify(last)})")
+        coeffs = [2 * c for c in q]
+    start = s.start + (k if spelling == "paper" else 0)
+    return LevelDependentScheme(tuple(coeffs), start, s.params,
+                                slug=f"{s.slug}-diff{k}", title=f"{k}-th difference of {s.title}",
+                                source=s.source)
 
 
 # --------------------------------------------------------------------------------------------
@@ -558,7 +590,7 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
         for c, c0 in zip(s.mask, s._limits):
             # the entire form (sinc) avoids the dependency problem of sin(u)/sin(v) over boxes
             out.append(_ball(entire_form(c), envb, False) - _ball(c0, envb, False)
-                       if H in c.free_symbols else _ball(sp.simplify(c - c0), envb, False))
+                       if H in c.free_symbols else _ball(_simplified_difference(c, c0), envb, False))
     return out
 
 
