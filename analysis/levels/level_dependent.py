@@ -583,15 +583,36 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
     arity = s.arity if arity is None else arity
     env = _env_values(s, values)
     prec = prec or default_precision(s, n, arity=arity)
+    key = _env_key(env)
+    if key is None:
+        return list(_coefficient_differences.__wrapped__(s.mask, s._limits, tuple(env.items()), n, prec, arity))
+    return list(_coefficient_differences(s.mask, s._limits, key, n, prec, arity))
+
+
+def _env_key(env: Mapping) -> tuple | None:
+    """``env`` as a hashable key (exact sympy values and boxes, no Float), or ``None``."""
+    items = []
+    for k, v in sorted(env.items()):
+        for x in (v if isinstance(v, tuple) else (v,)):
+            if not isinstance(x, sp.Basic) or x.atoms(sp.Float):
+                return None
+        items.append((k, v))
+    return tuple(items)
+
+
+@lru_cache(maxsize=4096)
+def _coefficient_differences(mask: tuple, limits: tuple, env: tuple, n: int, prec: int, arity: int) -> tuple:
+    """:func:`coefficient_differences` (a pure function of its arguments, remembered: the weighted series and the
+    support test enclose the same levels)."""
     with workprec(prec):
-        envb = {k: _to_ball(v, False) for k, v in env.items()}
+        envb = {k: _to_ball(v, False) for k, v in env}
         envb["h"] = level_h(n, arity)
         out = []
-        for c, c0 in zip(s.mask, s._limits):
+        for c, c0 in zip(mask, limits):
             # the entire form (sinc) avoids the dependency problem of sin(u)/sin(v) over boxes
             out.append(_ball(entire_form(c), envb, False) - _ball(c0, envb, False)
                        if H in c.free_symbols else _ball(_simplified_difference(c, c0), envb, False))
-    return out
+    return tuple(out)
 
 
 def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None = None, *,
@@ -713,6 +734,42 @@ def _disk_max(expr: sp.Expr, envc: dict, rho, grid: int):
     return best
 
 
+def _hashable(x) -> bool:
+    try:
+        hash(x)
+    except TypeError:
+        return False
+    return True
+
+
+@lru_cache(maxsize=1024)
+def _taylor_models(env: tuple, mask: tuple, limits: tuple, rows: tuple, J: int, rhos: tuple, grid: int,
+                   prec: int) -> tuple | None:
+    """The models of :func:`taylor_models` (``None``: no radius works); a pure function of its arguments, remembered
+    (the weighted series and the support test of one scheme on one box ask for the same models)."""
+    with workprec(prec):
+        envr = {k: _to_ball(v, False) for k, v in env}
+        envc = {k: flint.acb(v) for k, v in envr.items()}
+        for rho_s in rhos:
+            rho = flint.arb(int(sp.Rational(rho_s).p)) / int(sp.Rational(rho_s).q)
+            models = []
+            ok = True
+            for c, c0, row in zip(mask, limits, rows):
+                if H not in c.free_symbols:
+                    models.append(TaylorModel(tuple(flint.arb(0) for _ in range(J)), flint.arb(0), rho, J))
+                    continue
+                g = entire_form(c - c0)
+                M = _disk_max(g, envc, rho, grid)
+                if M is None:
+                    ok = False
+                    break
+                coeffs = tuple(_ball(x, envr, False) for x in row)
+                models.append(TaylorModel(coeffs, M, rho, J))
+            if ok:
+                return tuple(models)
+    return None
+
+
 def taylor_models(s: LevelDependentScheme, values=None, *, J: int | None = None,
                   rhos=(2, 1, sp.Rational(1, 2), sp.Rational(1, 4), sp.Rational(1, 16)),
                   grid: int = 12, prec: int = 96) -> list[TaylorModel]:
@@ -726,26 +783,12 @@ def taylor_models(s: LevelDependentScheme, values=None, *, J: int | None = None,
     q = s.order()
     J = J or q + 2
     rows = s.taylor(J)
-    with workprec(prec):
-        envr = {k: _to_ball(v, False) for k, v in env.items()}
-        envc = {k: flint.acb(v) for k, v in envr.items()}
-        for rho_s in rhos:
-            rho = flint.arb(int(sp.Rational(rho_s).p)) / int(sp.Rational(rho_s).q)
-            models = []
-            ok = True
-            for c, c0, row in zip(s.mask, s._limits, rows):
-                if H not in c.free_symbols:
-                    models.append(TaylorModel(tuple(flint.arb(0) for _ in range(J)), flint.arb(0), rho, J))
-                    continue
-                g = entire_form(c - c0)
-                M = _disk_max(g, envc, rho, grid)
-                if M is None:
-                    ok = False
-                    break
-                coeffs = tuple(_ball(x, envr, False) for x in row)
-                models.append(TaylorModel(coeffs, M, rho, J))
-            if ok:
-                return models
+    key = _env_key(env)
+    args = (s.mask, s._limits, rows, J, tuple(rhos), grid, prec)
+    models = (_taylor_models.__wrapped__(tuple(env.items()), *args) if key is None or not _hashable(args[4]) else
+              _taylor_models(key, *args))
+    if models is not None:
+        return list(models)
     boxed = any(isinstance(v, tuple) for v in (values or {}).values())
     raise AnalysisError(f"could not certify analyticity of a^n - a on any disk |h| <= rho, rho >= {sp.sstr(rhos[-1])}: "
                         "a coefficient may have a singularity close to h = 0, i.e. the mask may be undefined at "

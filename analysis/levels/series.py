@@ -58,6 +58,7 @@ matrix approach*, Numer. Math. 135 (2017) 639-678.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, Callable, Mapping
 
 import flint
@@ -614,6 +615,31 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     when all are.
     """
     arity = s.arity if arity is None else arity
+    key = _values_key(values)
+    args = (m, difference, L_max, N, pieces, depth, arity)
+    if key is None or any(c.atoms(sp.Float) for c in s.mask):
+        return _smoothness.__wrapped__(s, values, *args, ())
+    return _smoothness(s, key, *args, tuple(REGULARITY_HOOKS))
+
+
+def _values_key(values) -> tuple | None:
+    """Parameter values (exact numbers, names, boxes) as a hashable key; ``None`` when one is not (or is a Float)."""
+    items = []
+    for k, v in dict(values or {}).items():
+        for x in (v if isinstance(v, (tuple, list)) else (v,)):
+            if not isinstance(x, (sp.Basic, int, str)) or isinstance(x, bool) or (
+                    isinstance(x, sp.Basic) and x.atoms(sp.Float)):
+                return None
+        items.append((str(k), tuple(v) if isinstance(v, list) else v))
+    return tuple(items)          # in the given order (the provenance lists the parameters in it)
+
+
+@lru_cache(maxsize=256)
+def _smoothness(s: LevelDependentScheme, values, m: int, difference: int, L_max: int, N: int, pieces: int,
+                depth: int, arity: int, hooks: tuple) -> Result:
+    """:func:`smoothness` (a pure function of the scheme, the values, the options and the registered regularity
+    ``hooks``, remembered: the C^k routes and the generalized differences ask again for the same hypotheses)."""
+    values = dict(values) if isinstance(values, tuple) else values
     target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference, arity)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
     box = None
