@@ -548,12 +548,10 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     * ``a^n_k = r(h) a_k`` exactly, with ``r`` enclosed away from 0 (and finite) for every
       ``h in [0, 1]`` (all levels ``h = 2^-n``, ``n >= 0``, at once) over the box.
     """
-    if sp.simplify(c - c0) == 0:
+    r = _level_ratio(c, c0)
+    if isinstance(r, str):
         return "a^n_k = a_k for every n (exact)"
-    if c0 == 0:
-        return None
-    r = sp.simplify(c / c0)
-    if r.has(sp.zoo, sp.nan, sp.oo) or sp.simplify(c - r * c0) != 0:
+    if r is None:
         return None
     names = set(env)
     if not {x.name for x in r.free_symbols} <= names | {"h"}:
@@ -567,6 +565,20 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     if b.is_finite() and not b.contains(0):
         return f"a^n_k = r(h) a_k exactly, r = {sp.sstr(r)} enclosed away from 0 for all h in [0, 1] (arb)"
     return None
+
+
+@lru_cache(maxsize=1024)
+def _level_ratio(c: sp.Expr, c0: sp.Expr):
+    """``"exact"`` when ``a^n_k - a_k`` simplifies to 0, else ``r = a^n_k / a_k`` when ``a^n_k = r a_k`` is checked
+    exactly, else ``None`` (a pure function of the pair, remembered: every sub-box of a bisection asks)."""
+    if sp.simplify(c - c0) == 0:
+        return "exact"
+    if c0 == 0:
+        return None
+    r = sp.simplify(c / c0)
+    if r.has(sp.zoo, sp.nan, sp.oo) or sp.simplify(c - r * c0) != 0:
+        return None
+    return r
 
 
 def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int, arity: int = 2):
