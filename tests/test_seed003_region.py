@@ -75,7 +75,8 @@ def test_limit_c1_on_open_interval_reaches_omega_to_0():
 def test_limit_open_interval_beyond_the_norm_set_is_not_certified():
     # (0, 1/40) leaves the L <= 2 norm set ((sqrt6-1)/80 < 1/40; float norm at 1/50 is > 1)
     assert _float_norm_e2(1 / 50) > 1
-    r = limit_smoothness_open(RULE_1, 2, "omega", 0, sp.Rational(1, 40), L_max=2)
+    # budget 5000 (as the module's example): the same strip as the default budget, and one computation in a run
+    r = limit_smoothness_open(RULE_1, 2, "omega", 0, sp.Rational(1, 40), L_max=2, budget=5000)
     assert r.status == "inconclusive" and r.value is None
     # the piecewise tests (several L, issue 14) go beyond the single-L set but leave an exact strip below 1/40
     (u, v), = r.witness["strips"]

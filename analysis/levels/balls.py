@@ -92,58 +92,113 @@ def _to_ball(v, complex_: bool):
 
 
 def _ball(e: sp.Expr, env, cx: bool):
+    """The enclosure of ``e`` with the names of ``env`` (see :func:`ball`): :func:`_compiled` evaluated."""
+    return _compiled(e, cx)(env)
+
+
+#: compiled evaluators of the expressions seen last (a pure function of the expression: bounded, no effect on
+#: results; an expression with a Float is compiled every time)
+_COMPILED: dict = {}
+_COMPILED_MAX = 4096
+
+
+def _compiled(e: sp.Expr, cx: bool):
+    """``env -> ball``: the expression tree of ``e`` turned once into nested closures that perform exactly the
+    Arb operations of a recursive walk, in the same order and at the working precision of the call (constants
+    such as ``1/3`` and ``pi`` are rounded at call time); errors (a missing name, an unsupported function, ``I``
+    in real arithmetic) are raised when called, as by the walk."""
+    key = (e, cx)
+    f = _COMPILED.get(key)
+    if f is None:
+        floats = []
+        f = _compile(e, cx, floats)
+        if not floats:
+            if len(_COMPILED) >= _COMPILED_MAX:
+                _COMPILED.pop(next(iter(_COMPILED)))
+            _COMPILED[key] = f
+    return f
+
+
+def _raiser(msg: str):
+    def f(env):
+        raise AnalysisError(msg)
+    return f
+
+
+def _compile(e: sp.Expr, cx: bool, floats: list):
     T = flint.acb if cx else flint.arb
     if e.is_Integer:
-        return T(int(e))
+        k = int(e)
+        return lambda env: T(k)
     if e.is_Rational:
-        return T(int(e.p)) / int(e.q)
+        p, q = int(e.p), int(e.q)
+        return lambda env: T(p) / q
     if e is sp.pi:
-        return T(flint.arb.pi())
+        return lambda env: T(flint.arb.pi())
     if e is sp.E:
-        return T(flint.arb(1).exp())
+        return lambda env: T(flint.arb(1).exp())
     if e is sp.I:
         if not cx:
-            raise AnalysisError("the expression is complex: evaluate with complex_=True")
-        return flint.acb(0, 1)
+            return _raiser("the expression is complex: evaluate with complex_=True")
+        return lambda env: flint.acb(0, 1)
     if isinstance(e, sp.Float):
-        return T(flint.arb(mpmath.mpf(e)))
+        floats.append(e)
+        return lambda env: T(flint.arb(mpmath.mpf(e)))
     if e.is_Symbol:
-        try:
-            return env[e.name]
-        except KeyError:
-            raise AnalysisError(f"no value for the parameter {e.name}") from None
-    if e.is_Add:
-        out = T(0)
-        for t in e.args:
-            out = out + _ball(t, env, cx)
-        return out
-    if e.is_Mul:
-        out = T(1)
-        for t in e.args:
-            out = out * _ball(t, env, cx)
-        return out
+        name = e.name
+
+        def sym(env):
+            try:
+                return env[name]
+            except KeyError:
+                raise AnalysisError(f"no value for the parameter {name}") from None
+        return sym
+    if e.is_Add or e.is_Mul:
+        parts = [_compile(t, cx, floats) for t in e.args]
+        if e.is_Add:
+            def add(env):
+                out = T(0)
+                for g in parts:
+                    out = out + g(env)
+                return out
+            return add
+
+        def mul(env):
+            out = T(1)
+            for g in parts:
+                out = out * g(env)
+            return out
+        return mul
     if e.is_Pow:
         b, x = e.args
+        gb = _compile(b, cx, floats)
         if x.is_Integer:
-            bb = _ball(b, env, cx)
             k = int(x)
-            return bb ** k if k >= 0 else 1 / bb ** (-k)
+            if k >= 0:
+                return lambda env: gb(env) ** k
+            return lambda env: 1 / gb(env) ** (-k)
         if x == sp.Rational(1, 2):
-            return _ball(b, env, cx).sqrt()
-        return (_ball(x, env, cx) * _ball(b, env, cx).log()).exp()
+            return lambda env: gb(env).sqrt()
+        gx = _compile(x, cx, floats)
+        return lambda env: (gx(env) * gb(env).log()).exp()
     if isinstance(e, sp.Abs):
-        v = _ball(e.args[0], env, cx)
-        return abs(v)
+        ga = _compile(e.args[0], cx, floats)
+        return lambda env: abs(ga(env))
     name = type(e).__name__
     if name == "sinc" and not cx and e.args[0].has(sp.I):
         # real sinc(i v) = sinh(v)/v, even and increasing in |v|: enclose by its values at the ends
-        v = _ball(sp.expand(e.args[0] / sp.I), env, False)
-        lo, hi = flint.arb(v.abs_lower()), flint.arb(v.abs_upper())
-        f = [flint.arb(1) if x == 0 else x.sinh() / x for x in (lo, hi)]
-        return f[0].union(f[1])
+        gv = _compile(sp.expand(e.args[0] / sp.I), False, floats)
+
+        def sinc_i(env):
+            v = gv(env)
+            lo, hi = flint.arb(v.abs_lower()), flint.arb(v.abs_upper())
+            f = [flint.arb(1) if x == 0 else x.sinh() / x for x in (lo, hi)]
+            return f[0].union(f[1])
+        return sinc_i
     if name in _FUNCS and len(e.args) == 1:
-        return getattr(_ball(e.args[0], env, cx), _FUNCS[name])()
-    raise AnalysisError(f"cannot evaluate {name} in ball arithmetic")
+        ga, meth = _compile(e.args[0], cx, floats), _FUNCS[name]
+        return lambda env: getattr(ga(env), meth)()
+    return _raiser(f"cannot evaluate {name} in ball arithmetic")
 
 
 def arb_abs(x):

@@ -86,18 +86,19 @@ matrix approach*, Numer. Math. 135 (2017) 639-678.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, Mapping
 
 import flint
 import sympy as sp
 
 from .balls import _ball, arb_abs, ball_to_interval, workprec
-from .divided import divided_difference, q_label
+from .divided import certainly_not_divisible, divided_difference, q_label
 from .expbspline import not_ck
 from .gendiff import GeneralizedDifferences, gendiff_smoothness
 from .hseries import prefill_taylor
 from .level_dependent import H, LevelDependentScheme, TaylorModel, level_h, taylor_models
-from .series import same_support, smoothness, stationary_smoothness as series_stationary
+from .series import REGULARITY_HOOKS, same_support, smoothness, stationary_smoothness as series_stationary
 from ..jsonable import fmt_upper
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
@@ -197,7 +198,9 @@ class _Differences:
         if j not in self.schemes:
             prev = self.get(j - 1)
             try:
-                self.schemes[j] = None if prev is None else divided_difference(prev, 1, self.arity)
+                # certainly_not_divisible: the exact test would fail too (cheap, skips its simplifications)
+                self.schemes[j] = (None if prev is None or certainly_not_divisible(prev.mask, self.arity) else
+                                   divided_difference(prev, 1, self.arity))
                 if self.schemes[j] is not None:
                     prefill_taylor(self.schemes[j])
             except AnalysisError:
@@ -324,13 +327,23 @@ def level_smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None =
     boxed = [k for k, v in dict(values or {}).items() if isinstance(v, tuple)]
     if boxed:
         raise AnalysisError(f"the C^k verdicts need exact values: give --param {boxed[0]}=VALUE, not a box")
+    if values:
+        s = s.subs(values)
+    if any(c.atoms(sp.Float) for c in s.mask):
+        return _level_smoothness.__wrapped__(s, k_max, N, arity, ())
+    return _level_smoothness(s, k_max, N, arity, tuple(REGULARITY_HOOKS))
+
+
+@lru_cache(maxsize=64)
+def _level_smoothness(s: LevelDependentScheme, k_max: int | None, N: int, arity: int, hooks: tuple) -> Result:
+    """:func:`level_smoothness` of the scheme with its values substituted: a pure function of the scheme, ``k_max``,
+    ``N``, the arity and the registered regularity ``hooks`` (:data:`analysis.levels.series.REGULARITY_HOOKS`),
+    remembered (the command line and the claims ask again for a scheme already analysed)."""
     from ..regularity import smoothness as binary_smoothness
 
     def stationary_smoothness(a, k):
         return binary_smoothness(a, k) if arity == 2 else series_stationary(a, k, arity=arity)
 
-    if values:
-        s = s.subs(values)
     check_real(s, arity=arity)
     a = s.limit()
     prefill_taylor(s)          # the same exact Taylor coefficients as sympy.series, faster (or nothing)

@@ -31,6 +31,8 @@ any arity*, J. Approx. Theory 163 (2011) 413-437 (m-ary symbols).
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from .level_dependent import H, LevelDependentScheme
@@ -98,29 +100,52 @@ def q_label(m: int) -> str:
     return "1+" + "+".join(f"z^{i}" if i > 1 else "z" for i in range(1, m))
 
 
+def _divide_once(coeffs, m: int) -> tuple[list, list]:
+    """One synthetic division by ``q_m`` from the top power: ``(quotient, remainder)`` (``len(coeffs) >= m``)."""
+    r = list(coeffs)
+    quot = [sp.Integer(0)] * (len(r) - m + 1)
+    for k in range(len(r) - 1, m - 2, -1):
+        c = r[k]
+        quot[k - m + 1] = c
+        for i in range(m):
+            r[k - m + 1 + i] = r[k - m + 1 + i] - c
+    return quot, r[: m - 1]
+
+
+def certainly_not_divisible(coeffs, m: int) -> bool:
+    """True when ``q_m`` certainly does not divide ``sum_k coeffs[k] z^k`` identically: a remainder coefficient is
+    non-zero at a rational point (:func:`_nonzero_somewhere`), so no simplification can prove it zero and
+    :func:`divide_by_q` (``m = 2``: :meth:`~analysis.levels.level_dependent.LevelDependentScheme.difference`, whose
+    remainder ``a^n(-1)`` is the same up to sign) raises. False means nothing. A cheap test before the exact one."""
+    if len(coeffs) < m:
+        return False
+    return any(_nonzero_somewhere(sp.expand(x)) for x in _divide_once(coeffs, m)[1])
+
+
 def divide_by_q(coeffs, m: int, j: int) -> list:
     """The coefficients of ``(m/q_m)^j a^n`` (ascending, same lowest exponent) of ``a^n`` (``coeffs`` ascending).
 
     Each remainder must simplify to 0 identically in ``h`` and the parameters, else an :class:`AnalysisError`.
     """
+    return list(_divide_by_q(tuple(coeffs), m, j))
+
+
+@lru_cache(maxsize=256)
+def _divide_by_q(coeffs: tuple, m: int, j: int) -> tuple:
+    """:func:`divide_by_q` (a pure function of its arguments, remembered: the C^k routes ask for the same division
+    for every k; a failed division raises each time)."""
     coeffs = list(coeffs)
     q = q_label(m)
     for _ in range(j):
         if len(coeffs) < m:
             raise AnalysisError(f"{q} does not divide a^n(z): the mask is too short")
-        r = list(coeffs)
-        quot = [sp.Integer(0)] * (len(r) - m + 1)
-        for k in range(len(r) - 1, m - 2, -1):          # synthetic division from the top power
-            c = r[k]
-            quot[k - m + 1] = c
-            for i in range(m):
-                r[k - m + 1 + i] = r[k - m + 1 + i] - c
-        for x in r[: m - 1]:
+        quot, rem = _divide_once(coeffs, m)
+        for x in rem:
             if not _exact_zero(sp.expand(x)):
                 raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
                                     f"{sp.sstr(sp.simplify(x))})")
         coeffs = [sp.cancel(m * c) if as_expr(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
-    return coeffs
+    return tuple(coeffs)
 
 
 def divided_difference(s: LevelDependentScheme, j: int, arity: int | None = None) -> LevelDependentScheme:

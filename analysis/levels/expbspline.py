@@ -116,7 +116,7 @@ non-stationary subdivision schemes with a general dilation matrix*, arXiv:1303.1
 
 from __future__ import annotations
 
-from functools import reduce
+from functools import lru_cache, reduce
 from math import gcd, lcm
 
 import flint
@@ -136,7 +136,9 @@ class _NotOfForm(Exception):
     """The symbol is not (recognisably) an exponential B-spline symbol; the message says why."""
 
 
+@lru_cache(maxsize=1024)
 def _linear_in_h(arg: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
+    """``(c, b)`` with ``arg = c h + b`` (a pure function of ``arg``, remembered; :class:`_NotOfForm` otherwise)."""
     a = sp.expand(arg)
     c1, c0 = sp.simplify(a.coeff(H, 1)), sp.simplify(a.coeff(H, 0))
     if sp.simplify(a - c1 * H - c0) != 0 or H in c1.free_symbols or H in c0.free_symbols:
@@ -180,7 +182,32 @@ def to_exponential_generators(exprs, *, in_h: bool = False) -> tuple[list[sp.Exp
     >>> out, gens                                   # X0 = exp(-h)
     ([(X0**4 + 2*X0 + 1)/(2*X0**2)], [-1])
     """
-    exprs = [as_expr(c).rewrite(sp.exp) for c in exprs]
+    exprs = [as_expr(c) for c in exprs]
+    rewritten, substituted, X, gens = _exponential_generators(tuple(exprs))
+    out = []
+    for c, e in zip(rewritten, substituted):
+        if in_h and not e.is_rational_function(H, *X):
+            raise _NotOfForm(f"the coefficient {sp.sstr(c)} is not a rational function of h and exponentials "
+                             "exp(c h)")
+        if not in_h and H in e.free_symbols:
+            raise _NotOfForm(f"the coefficient {sp.sstr(c)} depends on the level otherwise than through "
+                             "exponentials exp(c h) (e.g. a power of 2^-n)")
+        out.append(_cancelled(e))
+    return out, X, list(gens)
+
+
+@lru_cache(maxsize=1024)
+def _cancelled(e: sp.Expr) -> sp.Expr:
+    """``cancel(together(e))`` (a pure function of ``e``, remembered)."""
+    return sp.cancel(sp.together(e))
+
+
+@lru_cache(maxsize=256)
+def _exponential_generators(exprs: tuple) -> tuple:
+    """``(rewritten, substituted, X, gens)`` of :func:`to_exponential_generators` before its checks and
+    ``cancel``: a pure function of the expressions, remembered (recognition and the generalized differences
+    rewrite the same mask); :class:`_NotOfForm` raises anew each time."""
+    exprs = [c.rewrite(sp.exp) for c in exprs]
     args = {e.args[0] for c in exprs for e in c.atoms(sp.exp) if H in e.free_symbols}
     lin = {a: _linear_in_h(a) for a in args}
     slopes = sorted({c1 for c1, _ in lin.values() if c1 != 0}, key=sp.default_sort_key)
@@ -196,17 +223,7 @@ def to_exponential_generators(exprs, *, in_h: bool = False) -> tuple[list[sp.Exp
         j, m = where[c1]
         return sp.exp(c0) * X[j] ** m
 
-    out = []
-    for c in exprs:
-        e = c.replace(sp.exp, sub)
-        if in_h and not e.is_rational_function(H, *X):
-            raise _NotOfForm(f"the coefficient {sp.sstr(c)} is not a rational function of h and exponentials "
-                             "exp(c h)")
-        if not in_h and H in e.free_symbols:
-            raise _NotOfForm(f"the coefficient {sp.sstr(c)} depends on the level otherwise than through "
-                             "exponentials exp(c h) (e.g. a power of 2^-n)")
-        out.append(sp.cancel(sp.together(e)))
-    return out, X, gens
+    return tuple(exprs), tuple(c.replace(sp.exp, sub) for c in exprs), X, tuple(gens)
 
 
 def _to_exponential_polynomial(s: LevelDependentScheme):
@@ -314,6 +331,12 @@ def recognise(s: LevelDependentScheme, arity: int = 2) -> Result:
     this form, or not recognisably so; ``witness["reason"]``). The identity is checked exactly as
     a rational identity in ``z`` and independent generators ``exp(g_j h)`` (see the module).
     """
+    return _recognise(s, arity)
+
+
+@lru_cache(maxsize=256)
+def _recognise(s: LevelDependentScheme, arity: int) -> Result:
+    """:func:`recognise` (a pure function of the scheme, remembered)."""
     prov = {"method": "exp rewriting + factorization over Q(exp(g h)) + exact rational identity",
             "scheme": s.slug}
     try:

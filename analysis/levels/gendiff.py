@@ -139,6 +139,7 @@ J. Math. Anal. Appl. 193 (1995) 594-621.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from itertools import product
 
 import sympy as sp
@@ -192,11 +193,13 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
     >>> exponential_factors(get("exp-cubic-trig")).value
     (0, 0, -I*t, I*t)
     """
+    return _exponential_factors(s, arity)
+
+
+@lru_cache(maxsize=256)
+def _exponential_factors(s: LevelDependentScheme, arity: int) -> Result:
+    """:func:`exponential_factors` (a pure function of the scheme, remembered: every k and route asks)."""
     prov = {"method": "exp rewriting + factorization over Q[z, h, exp(g h)] (sympy)", "scheme": s.slug}
-    cache = s.__dict__.setdefault("_gendiff_cache", {})
-    key = "factors" if arity == 2 else f"factors{arity}"
-    if key in cache:
-        return cache[key]
     try:
         coeffs, X, gens = _to_polynomial_ring(s.mask)
         num, _ = sp.fraction(sp.together(sum(c * _Z ** k for k, c in enumerate(coeffs))))
@@ -206,9 +209,7 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
             _, factors = sp.factor_list(num, _Z, H, *X) if X else sp.factor_list(num, _Z, H)
     except Exception as e:  # noqa: BLE001 - a failed rewriting/factorization proves nothing: H1 not established
         why = str(e) if isinstance(e, _NotOfForm) else f"not a polynomial in z over Q(h, exp(c h)) ({e})"
-        res = Result(value=None, status=INCONCLUSIVE, witness={"reason": why[:200]}, provenance=prov)
-        cache[key] = res
-        return res
+        return Result(value=None, status=INCONCLUSIVE, witness={"reason": why[:200]}, provenance=prov)
     mult: dict = {}
     for lam, _ in (found if arity != 2 else ()):
         mult[lam] = mult.get(lam, 0) + 1
@@ -245,7 +246,6 @@ def exponential_factors(s: LevelDependentScheme, arity: int = 2) -> Result:
                                         if arity == 2 else f"prod_i q(exp(lambda_i {arity}^-(n+1)) z) divides a^n(z) "
                                         f"for every n >= 0, q(x) = 1 + x + ... + x^{arity - 1}")},
                  provenance=prov)
-    cache[key] = res
     return res
 
 
@@ -324,6 +324,12 @@ def generalized_difference(s: LevelDependentScheme, subset, arity: int = 2) -> t
     >>> c.limit(), h1.witness["p_n"]
     (LaurentSymbol([1, 1], start=-2, domain=QQ), ['1 + 2*cos(h/2)*z + z**2'])
     """
+    return _generalized_difference(s, tuple(subset), arity)
+
+
+@lru_cache(maxsize=256)
+def _generalized_difference(s: LevelDependentScheme, subset: tuple, arity: int) -> tuple[LevelDependentScheme, Result]:
+    """:func:`generalized_difference` (a pure function of its arguments, remembered: every k and route asks)."""
     coeffs = list(s.mask)
     labels = []
     for p, label in _real_factors(subset, arity):
@@ -442,6 +448,7 @@ def gendiff_smoothness(s: LevelDependentScheme, k: int, *, converges: Result | N
                       witness={"failed": ["H1: exponential factor p_n | a^n for every n"], "reason": why,
                                "Lambda": fac.value, "hypotheses": {"H1": fac}}, provenance=prov)
     if converges is None:
+        prefill_taylor(s)      # as level_smoothness does: the exact Taylor coefficients without sympy.series
         converges = smoothness(s, None, 0, N=N, arity=arity)
     h2 = converges if converges.is_certified and converges.value is True else Result(
         value=None, status=INCONCLUSIVE, witness={"reason": "convergence of {S_(a^n)} not certified"})

@@ -41,6 +41,9 @@ R. P. Brent, H. T. Kung, *Fast algorithms for manipulating formal power series*,
 
 from __future__ import annotations
 
+from fractions import Fraction
+from functools import lru_cache
+
 import sympy as sp
 
 from .level_dependent import H, LevelDependentScheme
@@ -53,7 +56,24 @@ class _Unsupported(Exception):
     pass
 
 
+def _rational(*series) -> bool:
+    """Every coefficient a sympy Rational: the recurrences then run in exact ``Fraction`` arithmetic (the same
+    numbers as sympy's, much faster)."""
+    return all(x.is_Rational for s in series for x in s)
+
+
+def _fractions(s) -> list:
+    return [Fraction(int(x.p), int(x.q)) for x in s]
+
+
+def _rationals(s) -> list:
+    return [sp.Rational(x.numerator, x.denominator) for x in s]
+
+
 def _mul(a, b, J):
+    if _rational(a[:J], b[:J]):
+        fa, fb = _fractions(a[:J]), _fractions(b[:J])
+        return _rationals(sum((fa[i] * fb[k - i] for i in range(k + 1)), Fraction(0)) for k in range(J))
     return [sp.expand(sum((a[i] * b[k - i] for i in range(k + 1)), sp.Integer(0))) for k in range(J)]
 
 
@@ -61,6 +81,12 @@ def _inv(a, J):
     a0 = a[0]
     if a0 == 0 or sp.simplify(a0) == 0:
         raise _Unsupported("division by a series without constant term")
+    if _rational(a[:J]):
+        fa = _fractions(a[:J])
+        v = [1 / fa[0]]
+        for k in range(1, J):
+            v.append(-sum((fa[i] * v[k - i] for i in range(1, k + 1)), Fraction(0)) / fa[0])
+        return _rationals(v)
     v = [1 / a0]
     for k in range(1, J):
         v.append(sp.expand(-sum((a[i] * v[k - i] for i in range(1, k + 1)), sp.Integer(0)) / a0))
@@ -69,6 +95,12 @@ def _inv(a, J):
 
 def _exp0(w, J):
     """``exp(w)`` for ``w(0) = 0``."""
+    if _rational(w[:J]):
+        fw = _fractions(w[:J])
+        v = [Fraction(1)]
+        for k in range(1, J):
+            v.append(sum((i * fw[i] * v[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
+        return _rationals(v)
     v = [sp.Integer(1)]
     for k in range(1, J):
         v.append(sp.expand(sum((i * w[i] * v[k - i] for i in range(1, k + 1)), sp.Integer(0)) / k))
@@ -77,6 +109,13 @@ def _exp0(w, J):
 
 def _cos_sin0(w, J, sign):
     """``(cos w, sin w)`` (``sign = -1``) or ``(cosh w, sinh w)`` (``sign = +1``) for ``w(0) = 0``."""
+    if _rational(w[:J]):
+        fw = _fractions(w[:J])
+        c, s = [Fraction(1)], [Fraction(0)]
+        for k in range(1, J):
+            c.append(sign * sum((i * fw[i] * s[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
+            s.append(sum((i * fw[i] * c[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
+        return _rationals(c), _rationals(s)
     c, s = [sp.Integer(1)], [sp.Integer(0)]
     for k in range(1, J):
         ck = sign * sum((i * w[i] * s[k - i] for i in range(1, k + 1)), sp.Integer(0)) / k
@@ -131,9 +170,15 @@ def _series(e: sp.Expr, J: int) -> list:
 
 def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
     """``taylor(J)`` of the scheme computed by truncated series arithmetic, or ``None`` (unsupported)."""
+    return _taylor_rows(s.mask, s._limits, J)
+
+
+@lru_cache(maxsize=512)
+def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
+    """:func:`taylor_rows` of a mask and its limits (a pure function of them, remembered)."""
     rows = []
     try:
-        for c, c0 in zip(s.mask, s._limits):
+        for c, c0 in zip(mask, limits):
             if H not in c.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue

@@ -63,7 +63,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 from typing import Any, Mapping, Sequence
 
 import flint
@@ -132,8 +132,19 @@ def entire_form(expr: sp.Expr) -> sp.Expr:
     >>> entire_form(sp.sin(3 * a * H / 4) / sp.sin(a * H))
     3*sinc(3*alpha*h/4)/(4*sinc(alpha*h))
     """
-    return as_expr(expr).replace(sp.sin, lambda u: u * sp.sinc(u)).replace(
-        sp.sinh, lambda u: u * sp.sinc(sp.I * u))
+    return _entire_form(as_expr(expr))
+
+
+@lru_cache(maxsize=4096)
+def _entire_form(e: sp.Expr) -> sp.Expr:
+    """:func:`entire_form` of an expression (a pure function of it, remembered: the level loops ask again)."""
+    return e.replace(sp.sin, lambda u: u * sp.sinc(u)).replace(sp.sinh, lambda u: u * sp.sinc(sp.I * u))
+
+
+@lru_cache(maxsize=4096)
+def _simplified_difference(c: sp.Expr, c0: sp.Expr) -> sp.Expr:
+    """``simplify(c - c0)`` (a pure function of the pair, remembered)."""
+    return sp.simplify(c - c0)
 
 
 _Z = sp.Symbol("z")
@@ -370,16 +381,7 @@ class LevelDependentScheme:
     # ---------------------------------------------------------------- limit and expansion
     @cached_property
     def _limits(self) -> tuple:
-        out = []
-        for c in self.mask:
-            if H not in c.free_symbols:
-                out.append(sp.simplify(c))
-                continue
-            c0 = sp.simplify(sp.limit(c, H, 0, "+"))
-            if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
-                raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
-            out.append(c0)
-        return tuple(out)
+        return _limits_of(self.mask)
 
     def limit(self) -> LaurentSymbol:
         """The limit symbol ``a = lim_{n->oo} a^n`` (exact).
@@ -401,18 +403,7 @@ class LevelDependentScheme:
         longer = [Jc for Jc in cache if Jc > J]
         if longer:                          # the same series, truncated (no new sympy.series)
             return tuple(r[:J] for r in cache[min(longer)])
-        rows, done = [], {}                 # a symmetric mask repeats its differences: one series each
-        for c, c0 in zip(self.mask, self._limits):
-            g = c - c0
-            if H not in g.free_symbols:
-                rows.append(tuple(sp.Integer(0) for _ in range(J)))
-                continue
-            if g not in done:
-                ser = sp.series(g, H, 0, J).removeO()
-                ser = sp.expand(ser)
-                done[g] = tuple(sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J))
-            rows.append(done[g])
-        cache[J] = tuple(rows)
+        cache[J] = _taylor_by_series(self.mask, self._limits, J)
         return cache[J]
 
     def order(self, J_max: int = 8) -> int:
@@ -437,22 +428,7 @@ class LevelDependentScheme:
             raise AnalysisError(f"arity {self.arity}: use analysis.levels.divided.divided_difference(s, {k})")
         if spelling not in ("divided", "paper"):
             raise AnalysisError(f"unknown spelling {spelling!r}; use 'divided' or 'paper'")
-        coeffs = list(self.mask)
-        for _ in range(k):
-            q: list[sp.Expr] = []
-            rem = sp.Integer(0)
-            for c in coeffs[:-1]:
-                rem = c - rem
-                q.append(rem)
-            last = coeffs[-1] - rem
-            if sp.simplify(last.rewrite(sp.exp)) != 0:
-                raise AnalysisError("(1+z) does not divide a^n(z) identically in n "
-                                    f"(a^n(-1) = {sp.simplify(last)})")
-            coeffs = [2 * c for c in q]
-        start = self.start + (k if spelling == "paper" else 0)
-        return LevelDependentScheme(tuple(coeffs), start, self.params,
-                                    slug=f"{self.slug}-diff{k}", title=f"{k}-th difference of {self.title}",
-                                    source=self.source)
+        return _binary_difference(self, k, spelling)
 
     def normalized(self) -> "LevelDependentScheme":
         """The scheme divided by its (common) even/odd sum, so that constants are reproduced.
@@ -470,6 +446,61 @@ class LevelDependentScheme:
     def stencil_sum(self) -> sp.Expr:
         """The sum of the even stencil, ``sum_j a^n_{2j}`` (exact expression in h)."""
         return sum(c for i, c in enumerate(self.mask) if (self.start + i) % 2 == 0)
+
+
+# pure functions of a scheme or of its mask, remembered (bounded): the C^k routes, the weighted series and the
+# tests ask for the same limits, expansions and difference schemes again, on equal schemes built anew
+
+@lru_cache(maxsize=512)
+def _limits_of(mask: tuple) -> tuple:
+    """The limits ``a_k = lim_{h -> 0} a^n_k`` of the coefficients (exact; :class:`AnalysisError` when one is not finite)."""
+    out = []
+    for c in mask:
+        if H not in c.free_symbols:
+            out.append(sp.simplify(c))
+            continue
+        c0 = sp.simplify(sp.limit(c, H, 0, "+"))
+        if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
+            raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
+        out.append(c0)
+    return tuple(out)
+
+
+@lru_cache(maxsize=512)
+def _taylor_by_series(mask: tuple, limits: tuple, J: int) -> tuple:
+    """:meth:`LevelDependentScheme.taylor` by ``sympy.series``: ``g_{k,j}``, ``j < J``, of ``a^n_k - a_k``."""
+    rows, done = [], {}                     # a symmetric mask repeats its differences: one series each
+    for c, c0 in zip(mask, limits):
+        g = c - c0
+        if H not in g.free_symbols:
+            rows.append(tuple(sp.Integer(0) for _ in range(J)))
+            continue
+        if g not in done:
+            ser = sp.expand(sp.series(g, H, 0, J).removeO())
+            done[g] = tuple(sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J))
+        rows.append(done[g])
+    return tuple(rows)
+
+
+@lru_cache(maxsize=256)
+def _binary_difference(s: LevelDependentScheme, k: int, spelling: str) -> LevelDependentScheme:
+    """:meth:`LevelDependentScheme.difference` of a binary scheme (a failed division raises each time)."""
+    coeffs = list(s.mask)
+    for _ in range(k):
+        q: list[sp.Expr] = []
+        rem = sp.Integer(0)
+        for c in coeffs[:-1]:
+            rem = c - rem
+            q.append(rem)
+        last = coeffs[-1] - rem
+        if sp.simplify(last.rewrite(sp.exp)) != 0:
+            raise AnalysisError("(1+z) does not divide a^n(z) identically in n "
+                                f"(a^n(-1) = {sp.simplify(last)})")
+        coeffs = [2 * c for c in q]
+    start = s.start + (k if spelling == "paper" else 0)
+    return LevelDependentScheme(tuple(coeffs), start, s.params,
+                                slug=f"{s.slug}-diff{k}", title=f"{k}-th difference of {s.title}",
+                                source=s.source)
 
 
 # --------------------------------------------------------------------------------------------
@@ -552,15 +583,36 @@ def coefficient_differences(s: LevelDependentScheme, n: int, values=None, *, pre
     arity = s.arity if arity is None else arity
     env = _env_values(s, values)
     prec = prec or default_precision(s, n, arity=arity)
+    key = _env_key(env)
+    if key is None:
+        return list(_coefficient_differences.__wrapped__(s.mask, s._limits, tuple(env.items()), n, prec, arity))
+    return list(_coefficient_differences(s.mask, s._limits, key, n, prec, arity))
+
+
+def _env_key(env: Mapping) -> tuple | None:
+    """``env`` as a hashable key (exact sympy values and boxes, no Float), or ``None``."""
+    items = []
+    for k, v in sorted(env.items()):
+        for x in (v if isinstance(v, tuple) else (v,)):
+            if not isinstance(x, sp.Basic) or x.atoms(sp.Float):
+                return None
+        items.append((k, v))
+    return tuple(items)
+
+
+@lru_cache(maxsize=4096)
+def _coefficient_differences(mask: tuple, limits: tuple, env: tuple, n: int, prec: int, arity: int) -> tuple:
+    """:func:`coefficient_differences` (a pure function of its arguments, remembered: the weighted series and the
+    support test enclose the same levels)."""
     with workprec(prec):
-        envb = {k: _to_ball(v, False) for k, v in env.items()}
+        envb = {k: _to_ball(v, False) for k, v in env}
         envb["h"] = level_h(n, arity)
         out = []
-        for c, c0 in zip(s.mask, s._limits):
+        for c, c0 in zip(mask, limits):
             # the entire form (sinc) avoids the dependency problem of sin(u)/sin(v) over boxes
             out.append(_ball(entire_form(c), envb, False) - _ball(c0, envb, False)
-                       if H in c.free_symbols else _ball(sp.simplify(c - c0), envb, False))
-    return out
+                       if H in c.free_symbols else _ball(_simplified_difference(c, c0), envb, False))
+    return tuple(out)
 
 
 def distance(s: LevelDependentScheme, n: int, values: Mapping[str, Any] | None = None, *,
@@ -682,6 +734,42 @@ def _disk_max(expr: sp.Expr, envc: dict, rho, grid: int):
     return best
 
 
+def _hashable(x) -> bool:
+    try:
+        hash(x)
+    except TypeError:
+        return False
+    return True
+
+
+@lru_cache(maxsize=1024)
+def _taylor_models(env: tuple, mask: tuple, limits: tuple, rows: tuple, J: int, rhos: tuple, grid: int,
+                   prec: int) -> tuple | None:
+    """The models of :func:`taylor_models` (``None``: no radius works); a pure function of its arguments, remembered
+    (the weighted series and the support test of one scheme on one box ask for the same models)."""
+    with workprec(prec):
+        envr = {k: _to_ball(v, False) for k, v in env}
+        envc = {k: flint.acb(v) for k, v in envr.items()}
+        for rho_s in rhos:
+            rho = flint.arb(int(sp.Rational(rho_s).p)) / int(sp.Rational(rho_s).q)
+            models = []
+            ok = True
+            for c, c0, row in zip(mask, limits, rows):
+                if H not in c.free_symbols:
+                    models.append(TaylorModel(tuple(flint.arb(0) for _ in range(J)), flint.arb(0), rho, J))
+                    continue
+                g = entire_form(c - c0)
+                M = _disk_max(g, envc, rho, grid)
+                if M is None:
+                    ok = False
+                    break
+                coeffs = tuple(_ball(x, envr, False) for x in row)
+                models.append(TaylorModel(coeffs, M, rho, J))
+            if ok:
+                return tuple(models)
+    return None
+
+
 def taylor_models(s: LevelDependentScheme, values=None, *, J: int | None = None,
                   rhos=(2, 1, sp.Rational(1, 2), sp.Rational(1, 4), sp.Rational(1, 16)),
                   grid: int = 12, prec: int = 96) -> list[TaylorModel]:
@@ -695,26 +783,12 @@ def taylor_models(s: LevelDependentScheme, values=None, *, J: int | None = None,
     q = s.order()
     J = J or q + 2
     rows = s.taylor(J)
-    with workprec(prec):
-        envr = {k: _to_ball(v, False) for k, v in env.items()}
-        envc = {k: flint.acb(v) for k, v in envr.items()}
-        for rho_s in rhos:
-            rho = flint.arb(int(sp.Rational(rho_s).p)) / int(sp.Rational(rho_s).q)
-            models = []
-            ok = True
-            for c, c0, row in zip(s.mask, s._limits, rows):
-                if H not in c.free_symbols:
-                    models.append(TaylorModel(tuple(flint.arb(0) for _ in range(J)), flint.arb(0), rho, J))
-                    continue
-                g = entire_form(c - c0)
-                M = _disk_max(g, envc, rho, grid)
-                if M is None:
-                    ok = False
-                    break
-                coeffs = tuple(_ball(x, envr, False) for x in row)
-                models.append(TaylorModel(coeffs, M, rho, J))
-            if ok:
-                return models
+    key = _env_key(env)
+    args = (s.mask, s._limits, rows, J, tuple(rhos), grid, prec)
+    models = (_taylor_models.__wrapped__(tuple(env.items()), *args) if key is None or not _hashable(args[4]) else
+              _taylor_models(key, *args))
+    if models is not None:
+        return list(models)
     boxed = any(isinstance(v, tuple) for v in (values or {}).values())
     raise AnalysisError(f"could not certify analyticity of a^n - a on any disk |h| <= rho, rho >= {sp.sstr(rhos[-1])}: "
                         "a coefficient may have a singularity close to h = 0, i.e. the mask may be undefined at "

@@ -46,6 +46,7 @@ N. Dyn, D. Levin, *Subdivision schemes in geometric modelling*, Acta Numerica 11
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, Mapping
 
 import sympy as sp
@@ -84,12 +85,19 @@ def limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, *, L_max:
     >>> r.status, r.witness["strips"][0][1]
     ('inconclusive', 1/40)
     """
-    from ..algebra.factorization import smoothing_factor
-    from ..stationary.normset import norm_solution_set
-
     lo, hi = as_expr(lo), as_expr(hi)
     if not bool(lo < hi):
         raise AnalysisError(f"empty open interval {name} in ({lo}, {hi})")
+    return _limit_smoothness_open(a, m, name, lo, hi, L_max, budget)
+
+
+@lru_cache(maxsize=64)
+def _limit_smoothness_open(a: LaurentSymbol, m: int, name: str, lo, hi, L_max: int, budget: int) -> Result:
+    """:func:`limit_smoothness_open` (a pure function of its arguments, remembered: the region theorem, the box
+    cover and the claims ask again for the same limit on the same interval)."""
+    from ..algebra.factorization import smoothing_factor
+    from ..stationary.normset import norm_solution_set
+
     k = smoothing_factor(a, exceptional=False).value
     if k < m + 1:
         return Result(value=None, status=INCONCLUSIVE,

@@ -58,6 +58,7 @@ matrix approach*, Numer. Math. 135 (2017) 639-678.
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, Callable, Mapping
 
 import flint
@@ -547,12 +548,10 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     * ``a^n_k = r(h) a_k`` exactly, with ``r`` enclosed away from 0 (and finite) for every
       ``h in [0, 1]`` (all levels ``h = 2^-n``, ``n >= 0``, at once) over the box.
     """
-    if sp.simplify(c - c0) == 0:
+    r = _level_ratio(c, c0)
+    if isinstance(r, str):
         return "a^n_k = a_k for every n (exact)"
-    if c0 == 0:
-        return None
-    r = sp.simplify(c / c0)
-    if r.has(sp.zoo, sp.nan, sp.oo) or sp.simplify(c - r * c0) != 0:
+    if r is None:
         return None
     names = set(env)
     if not {x.name for x in r.free_symbols} <= names | {"h"}:
@@ -566,6 +565,20 @@ def _same_index_support(c: sp.Expr, c0: sp.Expr, env: dict, envb: dict) -> str |
     if b.is_finite() and not b.contains(0):
         return f"a^n_k = r(h) a_k exactly, r = {sp.sstr(r)} enclosed away from 0 for all h in [0, 1] (arb)"
     return None
+
+
+@lru_cache(maxsize=1024)
+def _level_ratio(c: sp.Expr, c0: sp.Expr):
+    """``"exact"`` when ``a^n_k - a_k`` simplifies to 0, else ``r = a^n_k / a_k`` when ``a^n_k = r a_k`` is checked
+    exactly, else ``None`` (a pure function of the pair, remembered: every sub-box of a bisection asks)."""
+    if sp.simplify(c - c0) == 0:
+        return "exact"
+    if c0 == 0:
+        return None
+    r = sp.simplify(c / c0)
+    if r.has(sp.zoo, sp.nan, sp.oo) or sp.simplify(c - r * c0) != 0:
+        return None
+    return r
 
 
 def _dyn_levin_target(s: LevelDependentScheme, values, m: int, difference: int, arity: int = 2):
@@ -614,6 +627,31 @@ def smoothness(s: LevelDependentScheme, values: Mapping[str, Any] | None, m: int
     when all are.
     """
     arity = s.arity if arity is None else arity
+    key = _values_key(values)
+    args = (m, difference, L_max, N, pieces, depth, arity)
+    if key is None or any(c.atoms(sp.Float) for c in s.mask):
+        return _smoothness.__wrapped__(s, values, *args, ())
+    return _smoothness(s, key, *args, tuple(REGULARITY_HOOKS))
+
+
+def _values_key(values) -> tuple | None:
+    """Parameter values (exact numbers, names, boxes) as a hashable key; ``None`` when one is not (or is a Float)."""
+    items = []
+    for k, v in dict(values or {}).items():
+        for x in (v if isinstance(v, (tuple, list)) else (v,)):
+            if not isinstance(x, (sp.Basic, int, str)) or isinstance(x, bool) or (
+                    isinstance(x, sp.Basic) and x.atoms(sp.Float)):
+                return None
+        items.append((str(k), tuple(v) if isinstance(v, list) else v))
+    return tuple(items)          # in the given order (the provenance lists the parameters in it)
+
+
+@lru_cache(maxsize=256)
+def _smoothness(s: LevelDependentScheme, values, m: int, difference: int, L_max: int, N: int, pieces: int,
+                depth: int, arity: int, hooks: tuple) -> Result:
+    """:func:`smoothness` (a pure function of the scheme, the values, the options and the registered regularity
+    ``hooks``, remembered: the C^k routes and the generalized differences ask again for the same hypotheses)."""
+    values = dict(values) if isinstance(values, tuple) else values
     target, mm, env, a_sub = _dyn_levin_target(s, values, m, difference, arity)
     boxed = {k: v for k, v in env.items() if isinstance(v, tuple)}
     box = None
