@@ -7,8 +7,8 @@ import math
 import pytest
 import sympy as sp
 
-from analysis.levels.level_dependent import (H, LevelDependentScheme, distance, leading_asymptotics, taylor_models,
-                             to_h, workprec)
+from analysis.levels.level_dependent import H, LevelDependentScheme, distance, leading_asymptotics, to_h, workprec
+from analysis.levels.taylor_model import taylor_models
 from analysis.result import AnalysisError
 from schemes import seed003
 from schemes.level_dependent import get

@@ -29,7 +29,7 @@ at small ``h``) is enclosed in arb over the box; a box with ``D > 0`` (``>= 0`` 
 proven, otherwise ``D`` is enclosed at the box midpoint: ``D < 0`` there is a certified
 counterexample; otherwise the box is bisected (up to ``max_depth``). Levels ``n >= N``: a
 rigorous Taylor model of ``D`` in ``h = 2^-n`` on ``[0, 2^-N]`` (exact Taylor coefficients from
-sympy, Cauchy remainder from :func:`analysis.levels.level_dependent.taylor_models`): if ``D(0) > A h_N^q`` or
+sympy, Cauchy remainder from :func:`analysis.levels.taylor_model.taylor_models`): if ``D(0) > A h_N^q`` or
 ``D(0) = 0`` identically and the leading coefficient exceeds the remainder bound, the
 inequality holds for every ``n >= N``.
 
@@ -47,8 +47,8 @@ from typing import Any, Mapping
 import flint
 import sympy as sp
 
-from .level_dependent import (H, LevelDependentScheme, _ball, _to_ball, ball_to_interval, entire_form,
-                     taylor_models, to_h, workprec)
+from .level_dependent import H, LevelDependentScheme, _ball, _to_ball, ball_to_interval, entire_form, to_h, workprec
+from .taylor_model import taylor_models
 from .. import progress
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
 from .divided import _exact_zero  # noqa: F401 - re-exported: the exact zero test lives in .divided

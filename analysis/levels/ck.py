@@ -97,7 +97,8 @@ from .divided import certainly_not_divisible, divided_difference, q_label
 from .expbspline import not_ck
 from .gendiff import GeneralizedDifferences, gendiff_smoothness
 from .hseries import prefill_taylor
-from .level_dependent import H, LevelDependentScheme, TaylorModel, level_h, taylor_models
+from .level_dependent import H, LevelDependentScheme, level_h
+from .taylor_model import TaylorModel, taylor_models
 from .series import REGULARITY_HOOKS, same_support, smoothness, stationary_smoothness as series_stationary
 from ..jsonable import fmt_upper
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result

@@ -28,7 +28,7 @@ Algorithm
 ---------
 With ``q`` the exact leading order (``a^n - a = O(h^q)``, :func:`analysis.levels.level_dependent.leading_asymptotics`)
 and the rigorous Taylor models ``g_k(h) in P_k(h) +- M_k (h/rho)^J/(1-h/rho)`` of
-:func:`analysis.levels.level_dependent.taylor_models`:
+:func:`analysis.levels.taylor_model.taylor_models`:
 
 * ``m < q``: for ``n >= N``, ``|g_k(h_n)| <= A_k h_n^q`` with ``A_k`` certified from the model on
   ``(0, h_N]``, so ``2^{mn} ||S_{a^n} - S_a|| <= K r^n``, ``K = max_r sum A_k``,
@@ -66,7 +66,8 @@ import sympy as sp
 
 from .level_dependent import (H, arb_abs, LevelDependentScheme, _env_values, _residue_groups, ball_to_interval,
                               coefficient_differences, entire_form, leading_asymptotics, level_h, level_precision,
-                              taylor_models, workprec)
+                              workprec)
+from .taylor_model import taylor_models
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol
 from .divided import divided_difference, q_label

@@ -52,6 +52,7 @@ from ..algebra.algebraic import RealAlgebraic
 from ..algebra.factorization import arity_key, check_arity, factor_out, smoothing_factor
 from ..algebra.symbol import LaurentSymbol
 from ..result import CERTIFIED, INCONCLUSIVE, REFUTED, AnalysisError, Result
+from ..stationary.ballnorm import mask_terms, norm_below_one_on_box
 from ..stationary.difference import difference_symbol
 from ..stationary.normset import _parameter, norm_solution_set
 from ..stationary.transition import transition_matrices
@@ -563,66 +564,6 @@ def _interval_inside(set_, lo: RealAlgebraic, hi: RealAlgebraic, *, lo_closed: b
     return False
 
 
-def _mask_terms(am: LaurentSymbol, p: sp.Symbol) -> list:
-    """Each coefficient of ``am`` as a rational ``(p, q)`` (no ``p``) or its terms ``[(e, p, q), ...]``
-    in ``p`` (sympy's order), for :func:`_ball_norm_below_one`: read once per claimed interval."""
-    out = []
-    for c in am.mask:
-        if c.free_symbols:
-            out.append([(int(e), int(sp.Rational(co).p), int(sp.Rational(co).q))
-                        for (e,), co in sp.Poly(c, p).terms()])
-        else:
-            q = sp.Rational(c)
-            out.append((int(q.p), int(q.q)))
-    return out
-
-
-def _ball_norm_below_one(terms: list, start: int, box: tuple, max_L: int, prec: int = 128) -> bool:
-    """True when ||(1/2 S_{am})^L||_inf < 1 is proven for every p in the closed box (Arb) for one
-    ``L = 1, ..., max_L`` (the first that proves it; ``terms`` from :func:`_mask_terms`, ``start``
-    the first exponent of ``am``). The product for ``L`` extends the one for ``L - 1`` by one factor:
-    every ``L`` computes exactly the balls a separate computation for that ``L`` would."""
-    from flint import arb, arb_poly, ctx
-
-    old = ctx.prec
-    ctx.prec = prec
-    try:
-        lo, hi = box
-        mid = (arb(int(lo.p)) / int(lo.q) + arb(int(hi.p)) / int(hi.q)) / 2
-        rad = (arb(int(hi.p)) / int(hi.q) - arb(int(lo.p)) / int(lo.q)) / 2
-        P = mid + arb(0, rad.upper())  # the box as a ball
-        coeffs = []
-        for c in terms:
-            if isinstance(c, tuple):
-                coeffs.append(arb(c[0]) / c[1])
-            else:
-                v = arb(0)
-                for e, num, den in c:
-                    v += (arb(num) / den) * P ** e
-                coeffs.append(v)
-        prod = arb_poly(coeffs)
-        for L in range(1, max_L + 1):
-            if L > 1:
-                step = 2 ** (L - 1)
-                spaced = [arb(0)] * ((len(coeffs) - 1) * step + 1)
-                spaced[::step] = coeffs
-                prod = prod * arb_poly(spaced)
-            mod = 2 ** L
-            first = start * (2 ** L - 1)
-            cs = prod.coeffs()
-            best = arb(0)
-            for r in range(mod):
-                s = arb(0)
-                for idx in range((r - first) % mod, len(cs), mod):
-                    s += abs(cs[idx])
-                best = s if s.upper() > best.upper() else best
-            if best / 2 ** L < 1:  # Arb comparison: True only when proven for the whole ball
-                return True
-        return False
-    finally:
-        ctx.prec = old
-
-
 def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *, max_L_exact: int = 3,
                                max_L_boxes: int = 8, max_boxes: int = 400, samples: int = 8,
                                budget: int = 10_000, closed=(False, False),
@@ -666,7 +607,7 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
     # 3. cover [lo, hi] by boxes, breadth first: each box (as an open interval) inside an exact
     #    norm set, or (as a closed interval, which proves more) with an Arb norm bound below 1
     am = difference_symbol(a, j + 1)
-    terms = _mask_terms(am, p)
+    terms = mask_terms(am, p)
     lo_q, hi_q = lo.a, hi.b  # rational outer bounds of the claimed interval
     todo = [(lo_q, hi_q)]
     proven, boxes, smallest = 0, 0, None
@@ -685,7 +626,7 @@ def verify_smoothness_interval(a: LaurentSymbol, j: int, interval, param=None, *
         if any(_interval_inside(S, c0, c1, lo_closed=c0_in, hi_closed=c1_in) for S in sets):
             proven += 1
             continue
-        if _ball_norm_below_one(terms, am.start, (b0, b1), max_L_boxes):
+        if norm_below_one_on_box(terms, am.start, (b0, b1), max_L_boxes):
             proven += 1
             continue
         m = (b0 + b1) / 2

@@ -1,0 +1,100 @@
+"""The Dyn–Levin norm test ``||(1/2 S_a)^L||_inf < 1`` of a one-parameter difference symbol, proven for every
+parameter value of a closed rational box at once, in Arb ball arithmetic: the box as one ball, the product
+symbol ``a(z) a(z^2) ... a(z^(2^(L-1)))`` of ball polynomials, and the largest residue sum of absolute values.
+A cheaper and coarser companion of the Bernstein bounds of :mod:`analysis.stationary.normbox`, used to cover a
+claimed interval by boxes (:func:`analysis.regularity.ranges.verify_smoothness_interval`).
+
+Algorithm
+---------
+The coefficients of ``a`` are read once (:func:`mask_terms`); on a box the ball ``P`` containing it is
+substituted into each, and the product for ``L`` extends the one for ``L - 1`` by the factor ``a(z^(2^(L-1)))``
+(the same balls a separate computation for that ``L`` would give). ``N_L < 1`` is an Arb comparison: True only
+when proven for the whole ball.
+
+Examples
+--------
+>>> import sympy as sp
+>>> from analysis.algebra.symbol import LaurentSymbol
+>>> from analysis.stationary.difference import difference_symbol
+>>> w = sp.Symbol("w")
+>>> a = LaurentSymbol.from_mask([-w, 0, w + sp.Rational(1, 2), 1, w + sp.Rational(1, 2), 0, -w], start=-3)
+>>> d = difference_symbol(a, 2)                  # the four-point scheme's second differences
+>>> norm_below_one_on_box(mask_terms(d, w), d.start, (sp.Rational(1, 32), sp.Rational(1, 16)), 4)
+True
+>>> norm_below_one_on_box(mask_terms(d, w), d.start, (sp.Rational(1, 4), sp.Rational(1, 2)), 4)
+False
+
+References
+----------
+N. Dyn, D. Levin, *Subdivision schemes in geometric modelling*, Acta Numerica 11 (2002) 73-144 (the norm test).
+F. Johansson, *Arb: efficient arbitrary-precision midpoint-radius interval arithmetic*, IEEE Trans. Comput.
+66 (2017) 1281-1292.
+"""
+
+from __future__ import annotations
+
+import sympy as sp
+
+from ..algebra.symbol import LaurentSymbol
+
+__all__ = ["mask_terms", "norm_below_one_on_box"]
+
+
+def mask_terms(am: LaurentSymbol, p: sp.Symbol) -> list:
+    """Each coefficient of ``am`` as a rational ``(p, q)`` (no ``p``) or its terms ``[(e, p, q), ...]``
+    in ``p`` (sympy's order), for :func:`norm_below_one_on_box`: read once per claimed interval."""
+    out = []
+    for c in am.mask:
+        if c.free_symbols:
+            out.append([(int(e), int(sp.Rational(co).p), int(sp.Rational(co).q))
+                        for (e,), co in sp.Poly(c, p).terms()])
+        else:
+            q = sp.Rational(c)
+            out.append((int(q.p), int(q.q)))
+    return out
+
+
+def norm_below_one_on_box(terms: list, start: int, box: tuple, max_L: int, prec: int = 128) -> bool:
+    """True when ||(1/2 S_{am})^L||_inf < 1 is proven for every p in the closed box (Arb) for one
+    ``L = 1, ..., max_L`` (the first that proves it; ``terms`` from :func:`mask_terms`, ``start``
+    the first exponent of ``am``). The product for ``L`` extends the one for ``L - 1`` by one factor:
+    every ``L`` computes exactly the balls a separate computation for that ``L`` would."""
+    from flint import arb, arb_poly, ctx
+
+    old = ctx.prec
+    ctx.prec = prec
+    try:
+        lo, hi = box
+        mid = (arb(int(lo.p)) / int(lo.q) + arb(int(hi.p)) / int(hi.q)) / 2
+        rad = (arb(int(hi.p)) / int(hi.q) - arb(int(lo.p)) / int(lo.q)) / 2
+        P = mid + arb(0, rad.upper())  # the box as a ball
+        coeffs = []
+        for c in terms:
+            if isinstance(c, tuple):
+                coeffs.append(arb(c[0]) / c[1])
+            else:
+                v = arb(0)
+                for e, num, den in c:
+                    v += (arb(num) / den) * P ** e
+                coeffs.append(v)
+        prod = arb_poly(coeffs)
+        for L in range(1, max_L + 1):
+            if L > 1:
+                step = 2 ** (L - 1)
+                spaced = [arb(0)] * ((len(coeffs) - 1) * step + 1)
+                spaced[::step] = coeffs
+                prod = prod * arb_poly(spaced)
+            mod = 2 ** L
+            first = start * (2 ** L - 1)
+            cs = prod.coeffs()
+            best = arb(0)
+            for r in range(mod):
+                s = arb(0)
+                for idx in range((r - first) % mod, len(cs), mod):
+                    s += abs(cs[idx])
+                best = s if s.upper() > best.upper() else best
+            if best / 2 ** L < 1:  # Arb comparison: True only when proven for the whole ball
+                return True
+        return False
+    finally:
+        ctx.prec = old
