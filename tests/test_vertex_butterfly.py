@@ -159,7 +159,7 @@ def test_modified_butterfly_closed_form_starts_where_the_formula_does():
     assert closed["expr"] == sp.Rational(1, 2) and closed["valid_from"] == 5
 
 
-def test_butterfly_c1_is_never_certified_and_says_why():
+def test_c1_without_the_cell_test_is_inconclusive_and_the_butterfly_at_9_is_refuted():
     e = valence_entry(scheme_rules("modified-butterfly", 3, 5), 5)
     assert e["c1"]["status"] == "inconclusive" and e["c1"]["value"] is None
     assert "not piecewise polynomial" in e["c1"]["witness"]["verdict"]
