@@ -13,16 +13,16 @@ when proven for the whole ball.
 
 Examples
 --------
->>> import sympy as sp
+The four-point scheme's second differences: ``N_L < 1`` (so C^1) proven on a whole box of the tension ``w``,
+and not provable on a box reaching beyond the C^1 range:
+
+>>> from sympy import Rational as Q
 >>> from analysis.algebra.symbol import LaurentSymbol
 >>> from analysis.stationary.difference import difference_symbol
->>> w = sp.Symbol("w")
->>> a = LaurentSymbol.from_mask([-w, 0, w + sp.Rational(1, 2), 1, w + sp.Rational(1, 2), 0, -w], start=-3)
->>> d = difference_symbol(a, 2)                  # the four-point scheme's second differences
->>> norm_below_one_on_box(mask_terms(d, w), d.start, (sp.Rational(1, 32), sp.Rational(1, 16)), 4)
-True
->>> norm_below_one_on_box(mask_terms(d, w), d.start, (sp.Rational(1, 4), sp.Rational(1, 2)), 4)
-False
+>>> d = difference_symbol(LaurentSymbol.from_mask(["-w", 0, "w + 1/2", 1, "w + 1/2", 0, "-w"], start=-3), 2)
+>>> terms = mask_terms(d, d.params[0])
+>>> [norm_below_one_on_box(terms, d.start, box, 4) for box in ((Q(1, 32), Q(1, 16)), (Q(1, 4), Q(1, 2)))]
+[True, False]
 
 References
 ----------
