@@ -130,3 +130,24 @@ def test_the_regular_mask_is_the_catalogue_butterfly():
 
     for w in ("1/16", "1/20", "-1/7"):
         assert dict(regular_butterfly_mask(w).coeffs) == dict(get("butterfly").mask(w=w).coeffs)
+
+
+def test_summary_counts_a_valence_the_cell_test_certified():
+    """The summary's C^1 line: a valence certified by Zorin's cell test is certified there (not "inconclusive at
+    every valence" next to the cell test's certificate); the other valences keep their own status."""
+    from analysis.cli.vertex import _summary
+
+    def entry(n, c1, cells=None):
+        e = {"n": n, "reif": {"value": True}, "curvature": {"value": "not applicable"}, "c1": {"status": c1}}
+        if cells:
+            e["charmap_cells"] = {"status": cells}
+        return e
+
+    text = _summary("modified-butterfly", {}, [entry(3, "inconclusive", "inconclusive"), entry(5, "inconclusive", "certified")],
+                    "triangle")
+    line = next(t.strip() for t in text.splitlines() if t.strip().startswith("C^1:"))
+    assert line.startswith("C^1: certified (for generic initial data, Zorin's cell test) at n = 5; inconclusive at n = 3")
+    text = _summary("modified-butterfly", {}, [entry(5, "inconclusive", "certified")], "triangle")
+    assert "C^1: certified at every valence" in text
+    text = _summary("butterfly", {}, [entry(3, "refuted"), entry(4, "inconclusive")], "triangle")
+    assert "C^1: refuted (not C^1 for generic initial data, certified) at n = 3; inconclusive at n = 4" in text

@@ -131,8 +131,9 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
         by.setdefault(e.get("curvature", {}).get("value", "inconclusive"), []).append(e["n"])
     lines.append("curvature: " + "; ".join(f"{k} at n = {_ranges(v)}" for k, v in by.items()))
     c1: dict[str, list[int]] = {}
-    for e in entries:
-        c1.setdefault(e["c1"]["status"], []).append(e["n"])
+    for e in entries:          # a valence certified by Zorin's cell test (--charmap-cells) counts as certified
+        cells = e.get("charmap_cells", {}).get("status")
+        c1.setdefault("certified" if cells == "certified" else e["c1"]["status"], []).append(e["n"])
     tested = [e for e in entries if "charmap_cells" in e]
     if tested:
         by_cells: dict[str, list[int]] = {}
@@ -148,12 +149,15 @@ def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") ->
         from ..vertex.valence import NO_CHARACTERISTIC_MAP
 
         why = NO_CHARACTERISTIC_MAP.get(lattice, "the characteristic map is not checked for these rules")
+        parts = []
+        if "certified" in c1:
+            parts.append(f"certified (for generic initial data, Zorin's cell test) at n = {_ranges(c1['certified'])}")
         if "refuted" in c1:
-            lines.append(f"C^1: refuted (not C^1 for generic initial data, certified) at n = {_ranges(c1['refuted'])}"
-                         + (f"; inconclusive at n = {_ranges(c1['inconclusive'])} (eigen-conditions only; {why})"
-                            if "inconclusive" in c1 else ""))
-        else:
-            lines.append(f"C^1: inconclusive at every valence (eigen-conditions only; {why})")
+            parts.append(f"refuted (not C^1 for generic initial data, certified) at n = {_ranges(c1['refuted'])}")
+        if "inconclusive" in c1:
+            parts.append((f"inconclusive at n = {_ranges(c1['inconclusive'])}" if parts else
+                          "inconclusive at every valence") + f" (eigen-conditions only; {why})")
+        lines.append("C^1: " + "; ".join(parts))
         sampled = [e for e in entries if e.get("characteristic_map_numerical", {}).get("value")]
         if sampled:
             rings = sampled[0]["characteristic_map_numerical"]["witness"]["resolution"]
