@@ -70,7 +70,21 @@ def test_c_set_refuses_what_it_cannot_certify(hat):
 
 def test_cli_c_set_needs_both_options(capsys):
     assert main(["surface", "--scheme", "butterfly", "--C", "1"]) == 2
-    assert "--within" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert "--within" in err and "--param w=1/16 --C 1" in err
+
+
+def test_cli_one_verdict_when_no_parameter_is_free(capsys):
+    """``--C L`` on a scheme without a free parameter is the C^L verdict of the scheme, not a C^l set."""
+    assert main(["surface", "--symbol", HAT, "--C", "0", "--json"]) == 2            # t is free: a set is asked
+    capsys.readouterr()
+    bilinear = "(1+z1)**2*(1+z2)**2/(4*z1*z2)"
+    assert main(["surface", "--symbol", bilinear, "--C", "0", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["C"] == {"l": 0, "value": True, "status": "certified"}
+    assert main(["surface", "--symbol", bilinear, "--C", "1"]) == 0                 # alpha = 1: not C^1
+    assert capsys.readouterr().out.splitlines()[-1] == "C^1: no   [certified]"
+    assert main(["surface", "--symbol", bilinear, "--C", "31"]) == 2
+    assert "between 0 and 30" in capsys.readouterr().err
 
 
 # --------------------------------------------------------------------------- mask files

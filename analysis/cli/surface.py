@@ -22,7 +22,7 @@ Examples
 from __future__ import annotations
 
 from ..result import AnalysisError
-from .common import _emit, _parse_params, work_arg
+from .common import _emit, _int_arg, _parse_params, work_arg
 
 
 def _refine(args) -> None:
@@ -183,7 +183,8 @@ def _range(args) -> None:
     from .common import _int_arg, _parse_within
 
     if args.within is None or args.C is None:
-        raise AnalysisError("a C^l set needs both --C L and --within=LOW,HIGH (e.g. --C 1 --within=0,1/8)")
+        raise AnalysisError("a C^l set needs both --C L and --within=LOW,HIGH (e.g. --C 1 --within=0,1/8); "
+                            "for the verdict at one value give it with --param (e.g. --param w=1/16 --C 1)")
     l = _int_arg(args.C, "--C")
     if not 0 <= l <= 8:
         raise AnalysisError("--C takes 0 to 8")
@@ -248,12 +249,26 @@ def _range(args) -> None:
     _emit(args, data, "\n".join(lines))
 
 
+def _has_free_parameter(args) -> bool:
+    """Does ``--C L`` ask for a C^l set (the mask keeps a parameter that ``--param`` does not fix; a catalogue
+    default does not fix it) rather than for one verdict?"""
+    if args.scheme is not None:
+        from schemes.surfaces import get
+
+        given = set(_parse_params(args.param))
+        return any(p.name not in given for p in get(args.scheme).mask(general=True).params)
+    _, a, _, _ = _mask_from_args(args, keep="")
+    return bool(a.params)
+
+
 def cmd_surface(args) -> None:
     import sympy as sp
 
     if args.list:
         return _list(args)
-    if args.C is not None or args.within is not None:
+    if args.C is not None and not 0 <= _int_arg(args.C, "--C") <= 30:     # options before any computation
+        raise AnalysisError(f"--C must be between 0 and 30, not {args.C}")
+    if args.within is not None or (args.C is not None and _has_free_parameter(args)):
         return _range(args)
     if args.sweep:
         return _sweep(args)
@@ -340,6 +355,13 @@ def cmd_surface(args) -> None:
     for l, v in ck.items():
         verdicts.append(f"C^{l}: " + ("yes" if v else "no" if v is False else "undecided"))
     lines.append("; ".join(verdicts))
+    if args.C is not None:                           # --C L on a scheme without a free parameter: the verdict asked
+        l = _int_arg(args.C, "--C")
+        v = smoothness_verdicts(h, max_l=l)[l]
+        word = {True: "yes", False: "no", None: "undecided"}[v]
+        status = "inconclusive" if v is None else "certified"   # decided verdicts rest on rigorous bounds
+        lines.append(f"C^{l}: {word}   [{status}]")
+        data["C"] = {"l": l, "value": v, "status": status}
     _emit(args, data, "\n".join(lines))
 
 
