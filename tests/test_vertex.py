@@ -168,8 +168,9 @@ def test_user_weights_are_read_as_data(text, needle):
 
 def test_valence_ranges_parse_and_refuse():
     assert parse_valences("3..5") == [3, 4, 5]
-    for bad in ("2..5", "3..1000", "x", "5..3"):
-        with pytest.raises(AnalysisError):
+    for bad, needle in (("2..5", "must lie in 3..200"), ("3..1000", "must lie in 3..200"), ("3,1000", "3..200"),
+                        ("x", "takes N, LO..HI"), ("5..3", "is empty")):
+        with pytest.raises(AnalysisError, match=needle):
             parse_valences(bad)
 
 

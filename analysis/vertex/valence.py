@@ -236,9 +236,7 @@ def parse_valences(text: str) -> list[int]:
     try:
         if ".." in t:
             lo, hi = (int(x) for x in t.split(".."))
-            if lo < 3 or hi > MAX_VALENCE:
-                raise AnalysisError(f"valences must lie in 3..{MAX_VALENCE}")
-            vals = list(range(lo, hi + 1))
+            vals = [lo, hi] if lo < 3 or hi > MAX_VALENCE else list(range(lo, hi + 1))   # bounds checked below
         else:
             vals = [int(x) for x in t.split(",") if x.strip()]
     except ValueError:
