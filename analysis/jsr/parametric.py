@@ -242,7 +242,17 @@ class ParametricStrip:
         lam, v, _ = fe
         s = lam ** (1.0 / self.p_len)
         rv = [v] if self.J is None else [v, self.Jf @ v]
-        V = [_word_matrix(mats, pa) @ rv[ro] / s ** len(pa) for ro, pa in zip(self.roots, self.paths)]
+        # the vertex words form a tree: each prefix product is formed once (the same products, in
+        # the same order, as :func:`_word_matrix` word by word)
+        prods = {(): np.eye(mats[0].shape[0])}
+
+        def prod(pa):
+            P = prods.get(pa)
+            if P is None:
+                P = prods[pa] = mats[pa[-1]] @ prod(pa[:-1])
+            return P
+
+        V = [prod(pa) @ rv[ro] / s ** len(pa) for ro, pa in zip(self.roots, self.paths)]
         return mats, lam, v, V
 
     def certify(self, u: Fraction, w: Fraction):
@@ -332,15 +342,21 @@ class ParametricStrip:
             zi = _tighter(zi, zm + dz * H)
             return zm, zi, dz
 
-        verts = []
         self.units += VERTEX_UNITS * d * sum(len(pa) + 1 for pa in self.paths)
         x0 = (col(vM), _tighter(col(vI), col(vM) + col(dv) * H), col(dv))
         starts = [x0] if self.J is None else [x0, tuple(self.J * y for y in x0)]
-        for ro, pa in zip(self.roots, self.paths):
-            x = starts[ro]
-            for i in pa:
-                x = step(i, *x)
-            verts.append(x)
+        # the centred form of R_w x_root lambda^(-|w|/p) along each vertex word; the words form a tree,
+        # so each prefix is stepped once (``step`` is a function of its arguments: the same balls as
+        # stepping every word from its root)
+        walked = {}
+
+        def walk(ro, pa):
+            x = walked.get((ro, pa))
+            if x is None:
+                x = walked[(ro, pa)] = starts[ro] if not pa else step(pa[-1], *walk(ro, pa[:-1]))
+            return x
+
+        verts = [walk(ro, pa) for ro, pa in zip(self.roots, self.paths)]
         Vm = np.array(Vf).T
         piv = qr_pivots(Vm)
         basis = [int(b) for b in piv[:d]]
@@ -367,7 +383,7 @@ class ParametricStrip:
                 else:
                     supp = self._supp[(i, k)]
                     cf = np.linalg.lstsq(Vm[:, supp], xf, rcond=None)[0]
-                bound = self._image_bound(step, verts, Gi, H, i, k, supp, cf)
+                bound = self._image_bound(walk(self.roots[k], self.paths[k] + (i,)), verts, Gi, H, supp, cf)
                 if bound < 1:
                     self._supp[(i, k)] = supp
                     break
@@ -378,13 +394,13 @@ class ParametricStrip:
                           "basis_inverse_norm_upper": float(gi_norm.upper())}
 
     @staticmethod
-    def _image_bound(step, verts, Gi, H, i, k, supp, cf) -> arb:
-        """Upper bound (a ball) of ``||R_i v_k / lambda^(1/p)||_P`` over the interval: ``||c||_1 +
-        ||G^-1 res||_1`` with the residual ``res = x - V c`` in its centred form (``res`` is a
-        combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
+    def _image_bound(image, verts, Gi, H, supp, cf) -> arb:
+        """Upper bound (a ball) of ``||x||_P`` over the interval for the image ``x = R_i v_k / lambda^(1/p)``
+        (``image``: its centred form): ``||c||_1 + ||G^-1 res||_1`` with the residual ``res = x - V c`` in its
+        centred form (``res`` is a combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
         d = Gi.nrows()
         cq = [arb(fmpq(int(round(x * 2 ** 50)), 2 ** 50)) for x in cf]
-        rm, _, dr = step(i, *verts[k])
+        rm, _, dr = image
         for j, cj in zip(supp, cq):
             rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
         gres = Gi * (rm + dr * H)
@@ -436,19 +452,31 @@ def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open
     each piece records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image
     norm; ``timing`` holds the wall-clock seconds (decides nothing).
     """
+    return _close_family(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, budget=budget)[0]
+
+
+def _close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open: bool = False,
+                  max_depth: int = 20, budget: int = 120_000) -> tuple[dict, float]:
+    """:func:`close_family` and the smallest budget that gives the same answer when it closed: every
+    budget ``>= floor`` passes the same budget checks (the budget only stops the march)."""
     old = ctx.prec
     t0 = time.perf_counter()
     work = Work(budget)
+    floor = [0.0]
     try:
-        out = _close_strip(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, work=work)
+        out = _close_strip(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, work=work,
+                           floor=floor)
     finally:
         ctx.prec = old
     out["work"] = work.spent
     out["timing"] = {"seconds": round(time.perf_counter() - t0, 2)}
-    return out
+    return out, floor[0]
 
 
-def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
+def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work, floor=None) -> dict:
+    """The march of :func:`close_family`; ``floor[0]`` becomes the smallest budget that passes every budget
+    check it passed (so that a larger budget gives the same answer)."""
+    floor = [0.0] if floor is None else floor
     A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)
@@ -472,6 +500,7 @@ def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
         if work.exhausted:
             out["reason"] = f"work budget ({work.total} units) exhausted at t = {float(cur):.12g}"
             return out
+        floor[0] = max(floor[0], work.spent + 1)
         u, w = cur, min(qh, cur + (qh - ql) / 2 ** k)
         tries += 1
         spent = work.spent
@@ -482,6 +511,7 @@ def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
                                  f"{float((cur - ql) / (qh - ql)):.1%} of the strip in {spent} work units (the "
                                  f"polytope's slack is small; forecast {spent + need:.0f} > 3 x {work.total} units)")
                 return out
+            floor[0] = max(floor[0], (spent + need) / 3)
         r = S.certify(u, w)
         work.charge(int(S.units) - charged)
         charged = int(S.units)
