@@ -399,7 +399,9 @@ class ParametricStrip:
         (``image``: its centred form): ``||c||_1 + ||G^-1 res||_1`` with the residual ``res = x - V c`` in its
         centred form (``res`` is a combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
         d = Gi.nrows()
-        cq = [arb(fmpq(int(round(x * 2 ** 50)), 2 ** 50)) for x in cf]
+        # the coefficients rounded to multiples of 2^-50 (np.round rounds half to even, as round() does;
+        # the scaling by 2^50 is exact)
+        cq = [arb(fmpq(int(x), 2 ** 50)) for x in np.round(np.asarray(cf, dtype=float) * 2.0 ** 50)]
         rm, _, dr = image
         for j, cj in zip(supp, cq):
             rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
