@@ -437,7 +437,7 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                 max_depth: int = 20, budget: int = 120_000) -> dict:
+                 max_depth: int = 20, budget: int = 120_000, floor: list | None = None) -> dict:
     """Certify ``JSR(R_0(t), ..., R_{m-1}(t)) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
     where the spectral radius of the s.m.p. reaches 1) for the matrix polynomials of ``S``
     (:class:`ParametricStrip`; algorithm: :mod:`analysis.regularity.strips`).
@@ -453,18 +453,14 @@ def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ..., "work": units}``;
     each piece records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image
     norm; ``timing`` holds the wall-clock seconds (decides nothing).
+
+    ``floor``: a one-element list; it receives the smallest budget that passes every budget check this
+    march passed, so that every budget from it up gives the same answer (for callers that keep results).
     """
-    return _close_family(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, budget=budget)[0]
-
-
-def _close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                  max_depth: int = 20, budget: int = 120_000) -> tuple[dict, float]:
-    """:func:`close_family` and the smallest budget that gives the same answer when it closed: every
-    budget ``>= floor`` passes the same budget checks (the budget only stops the march)."""
     old = ctx.prec
     t0 = time.perf_counter()
     work = Work(budget)
-    floor = [0.0]
+    floor = [0.0] if floor is None else floor
     try:
         out = _close_strip(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, work=work,
                            floor=floor)
@@ -472,7 +468,7 @@ def _close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_ope
         ctx.prec = old
     out["work"] = work.spent
     out["timing"] = {"seconds": round(time.perf_counter() - t0, 2)}
-    return out, floor[0]
+    return out
 
 
 def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work, floor=None) -> dict:
