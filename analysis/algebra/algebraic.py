@@ -313,6 +313,8 @@ class RealAlgebraic:
 
     def sign_of(self, p: sp.Poly) -> int:
         """The exact sign of the polynomial ``p`` (rational coefficients) at this number."""
+        if self.a == self.b and len(p.gens) == 1 and p.domain in (sp.QQ, sp.ZZ):
+            return 0 if p.is_zero else int(sp.sign(p.eval(self.a)))       # a rational number
         if len(p.gens) == 1 and p.domain in (sp.QQ, sp.ZZ):
             p = sp.Poly.from_list(p.set_domain(sp.QQ).all_coeffs(), self.poly.gen, domain=sp.QQ)
         else:
