@@ -88,9 +88,10 @@ def _size(N: ParametricNorm) -> int:
 
 
 #: the last parametric norms built (:func:`_parametric_norm`), least recently used first; at most
-#: ``_NORMS_MAX_ENTRIES`` coefficients in all (the norm for L = 12 of a 6-point family holds about 370 000)
+#: ``_NORMS_MAX_ENTRIES`` coefficients in all (about 60 MB; the norms for L = 1..12 of a 6-point family hold about
+#: 750 000)
 _NORMS: dict = {}
-_NORMS_MAX_ENTRIES = 1_500_000
+_NORMS_MAX_ENTRIES = 800_000
 
 
 def _parametric_norm(am: LaurentSymbol, p: sp.Symbol, L: int, arity: int) -> ParametricNorm:
