@@ -166,6 +166,40 @@ def compare(x, y) -> int:
 #: the variable of the linear polynomials of rational numbers (one symbol for all of them)
 _X = sp.Dummy("x")
 
+#: Sturm sequences of the last polynomials whose real roots were counted (:func:`_count_roots`), keyed on the
+#: exact coefficients; at most ``_STURM_MAX``
+_STURM: dict = {}
+_STURM_MAX = 256
+
+
+def _count_roots(p: sp.Poly, a, b) -> int:
+    """``p.count_roots(a, b)`` for ``p`` univariate over QQ and rational ``a <= b``: the number of distinct real
+    roots in ``[a, b]``, computed as sympy's ``dup_count_real_roots`` does, with the Sturm sequence of ``p``
+    formed once and kept (comparisons refine an interval and count the roots of the same polynomial again
+    and again)."""
+    from sympy.polys.densebasic import dup_degree
+    from sympy.polys.densetools import dup_eval, dup_sign_variations
+    from sympy.polys.rootisolation import dup_sturm
+
+    if len(p.gens) != 1 or p.domain not in (sp.QQ, sp.ZZ):
+        return int(p.count_roots(a, b))
+    K = sp.QQ
+    f = [K.convert(c, p.domain) for c in p.rep.to_list()]
+    if dup_degree(f) <= 0:
+        return 0
+    key = tuple(f)
+    sturm = _STURM.get(key)
+    if sturm is None:
+        if len(_STURM) >= _STURM_MAX:
+            _STURM.pop(next(iter(_STURM)))
+        sturm = _STURM[key] = dup_sturm(f, K)
+    inf, sup = K.convert(a), K.convert(b)
+    count = abs(dup_sign_variations([dup_eval(s, inf, K) for s in sturm], K)
+                - dup_sign_variations([dup_eval(s, sup, K) for s in sturm], K))
+    if not dup_eval(f, inf, K):
+        count += 1
+    return count
+
 
 class RealAlgebraic:
     """A real root of a square-free polynomial over QQ, isolated in ``[a, b]`` (rationals).
@@ -260,7 +294,7 @@ class RealAlgebraic:
             # the polynomial changes sign there (the same answer as counting roots, without a Sturm sequence)
             inside = (pa > 0) != (pm > 0)
         else:
-            inside = self.poly.count_roots(self.a, m) > 0
+            inside = _count_roots(self.poly, self.a, m) > 0
         if inside:
             self.b = m
         else:
@@ -279,6 +313,8 @@ class RealAlgebraic:
 
     def sign_of(self, p: sp.Poly) -> int:
         """The exact sign of the polynomial ``p`` (rational coefficients) at this number."""
+        if self.a == self.b and len(p.gens) == 1 and p.domain in (sp.QQ, sp.ZZ):
+            return 0 if p.is_zero else int(sp.sign(p.eval(self.a)))       # a rational number
         if len(p.gens) == 1 and p.domain in (sp.QQ, sp.ZZ):
             p = sp.Poly.from_list(p.set_domain(sp.QQ).all_coeffs(), self.poly.gen, domain=sp.QQ)
         else:
@@ -288,9 +324,9 @@ class RealAlgebraic:
         if self.a == self.b:
             return int(sp.sign(p.eval(self.a)))
         g = sp.gcd(self.poly, p)
-        if g.degree() > 0 and g.count_roots(self.a, self.b) > 0:
+        if g.degree() > 0 and _count_roots(g, self.a, self.b) > 0:
             return 0
-        while p.count_roots(self.a, self.b) > 0:
+        while _count_roots(p, self.a, self.b) > 0:
             self.refine()
             if self.a == self.b:
                 return int(sp.sign(p.eval(self.a)))

@@ -242,7 +242,17 @@ class ParametricStrip:
         lam, v, _ = fe
         s = lam ** (1.0 / self.p_len)
         rv = [v] if self.J is None else [v, self.Jf @ v]
-        V = [_word_matrix(mats, pa) @ rv[ro] / s ** len(pa) for ro, pa in zip(self.roots, self.paths)]
+        # the vertex words form a tree: each prefix product is formed once (the same products, in
+        # the same order, as :func:`_word_matrix` word by word)
+        prods = {(): np.eye(mats[0].shape[0])}
+
+        def prod(pa):
+            P = prods.get(pa)
+            if P is None:
+                P = prods[pa] = mats[pa[-1]] @ prod(pa[:-1])
+            return P
+
+        V = [prod(pa) @ rv[ro] / s ** len(pa) for ro, pa in zip(self.roots, self.paths)]
         return mats, lam, v, V
 
     def certify(self, u: Fraction, w: Fraction):
@@ -332,15 +342,21 @@ class ParametricStrip:
             zi = _tighter(zi, zm + dz * H)
             return zm, zi, dz
 
-        verts = []
         self.units += VERTEX_UNITS * d * sum(len(pa) + 1 for pa in self.paths)
         x0 = (col(vM), _tighter(col(vI), col(vM) + col(dv) * H), col(dv))
         starts = [x0] if self.J is None else [x0, tuple(self.J * y for y in x0)]
-        for ro, pa in zip(self.roots, self.paths):
-            x = starts[ro]
-            for i in pa:
-                x = step(i, *x)
-            verts.append(x)
+        # the centred form of R_w x_root lambda^(-|w|/p) along each vertex word; the words form a tree,
+        # so each prefix is stepped once (``step`` is a function of its arguments: the same balls as
+        # stepping every word from its root)
+        walked = {}
+
+        def walk(ro, pa):
+            x = walked.get((ro, pa))
+            if x is None:
+                x = walked[(ro, pa)] = starts[ro] if not pa else step(pa[-1], *walk(ro, pa[:-1]))
+            return x
+
+        verts = [walk(ro, pa) for ro, pa in zip(self.roots, self.paths)]
         Vm = np.array(Vf).T
         piv = qr_pivots(Vm)
         basis = [int(b) for b in piv[:d]]
@@ -367,7 +383,7 @@ class ParametricStrip:
                 else:
                     supp = self._supp[(i, k)]
                     cf = np.linalg.lstsq(Vm[:, supp], xf, rcond=None)[0]
-                bound = self._image_bound(step, verts, Gi, H, i, k, supp, cf)
+                bound = self._image_bound(walk(self.roots[k], self.paths[k] + (i,)), verts, Gi, H, supp, cf)
                 if bound < 1:
                     self._supp[(i, k)] = supp
                     break
@@ -378,13 +394,15 @@ class ParametricStrip:
                           "basis_inverse_norm_upper": float(gi_norm.upper())}
 
     @staticmethod
-    def _image_bound(step, verts, Gi, H, i, k, supp, cf) -> arb:
-        """Upper bound (a ball) of ``||R_i v_k / lambda^(1/p)||_P`` over the interval: ``||c||_1 +
-        ||G^-1 res||_1`` with the residual ``res = x - V c`` in its centred form (``res`` is a
-        combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
+    def _image_bound(image, verts, Gi, H, supp, cf) -> arb:
+        """Upper bound (a ball) of ``||x||_P`` over the interval for the image ``x = R_i v_k / lambda^(1/p)``
+        (``image``: its centred form): ``||c||_1 + ||G^-1 res||_1`` with the residual ``res = x - V c`` in its
+        centred form (``res`` is a combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
         d = Gi.nrows()
-        cq = [arb(fmpq(int(round(x * 2 ** 50)), 2 ** 50)) for x in cf]
-        rm, _, dr = step(i, *verts[k])
+        # the coefficients rounded to multiples of 2^-50 (np.round rounds half to even, as round() does;
+        # the scaling by 2^50 is exact)
+        cq = [arb(fmpq(int(x), 2 ** 50)) for x in np.round(np.asarray(cf, dtype=float) * 2.0 ** 50)]
+        rm, _, dr = image
         for j, cj in zip(supp, cq):
             rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
         gres = Gi * (rm + dr * H)
@@ -393,14 +411,14 @@ class ParametricStrip:
 
 def _l1_coefficients(Vm: np.ndarray, x: np.ndarray):
     """A basic solution of ``min ||c||_1, V c = x`` (HiGHS), polished on its support (float; the
-    certificate re-checks everything in Arb)."""
-    from scipy.optimize import linprog
+    certificate re-checks everything in Arb). The LP is :func:`~analysis.jsr._lp.small_lp`, bit for bit
+    ``linprog(ones(2N), A_eq=[V, -V], b_eq=x, bounds=(0, None), method="highs")`` without its overhead."""
+    from ._lp import small_lp
 
-    n, N = Vm.shape
-    res = linprog(np.ones(2 * N), A_eq=np.hstack([Vm, -Vm]), b_eq=x, bounds=(0, None), method="highs")
-    if res.status != 0:
+    lp = small_lp(Vm, x)
+    if lp is None:
         return None
-    c = res.x[:N] - res.x[N:]
+    c = lp[1]
     supp = np.flatnonzero(np.abs(c) > 1e-12)
     if len(supp) == 0:
         return supp, c[supp]
@@ -419,7 +437,7 @@ def _rq(x: sp.Expr) -> Fraction:
 
 
 def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open: bool = False,
-                 max_depth: int = 20, budget: int = 120_000) -> dict:
+                 max_depth: int = 20, budget: int = 120_000, floor: list | None = None) -> dict:
     """Certify ``JSR(R_0(t), ..., R_{m-1}(t)) < 1`` for ``t`` between ``lo`` and ``hi`` (exact; an open end is
     where the spectral radius of the s.m.p. reaches 1) for the matrix polynomials of ``S``
     (:class:`ParametricStrip`; algorithm: :mod:`analysis.regularity.strips`).
@@ -435,12 +453,17 @@ def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ..., "work": units}``;
     each piece records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image
     norm; ``timing`` holds the wall-clock seconds (decides nothing).
+
+    ``floor``: a one-element list; it receives the smallest budget that passes every budget check this
+    march passed, so that every budget from it up gives the same answer (for callers that keep results).
     """
     old = ctx.prec
     t0 = time.perf_counter()
     work = Work(budget)
+    floor = [0.0] if floor is None else floor
     try:
-        out = _close_strip(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, work=work)
+        out = _close_strip(S, lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth, work=work,
+                           floor=floor)
     finally:
         ctx.prec = old
     out["work"] = work.spent
@@ -448,7 +471,10 @@ def close_family(S: "ParametricStrip", lo, hi, *, lo_open: bool = False, hi_open
     return out
 
 
-def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
+def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work, floor=None) -> dict:
+    """The march of :func:`close_family`; ``floor[0]`` becomes the smallest budget that passes every budget
+    check it passed (so that a larger budget gives the same answer)."""
+    floor = [0.0] if floor is None else floor
     A, B = RealAlgebraic.from_expr(as_expr(lo)), RealAlgebraic.from_expr(as_expr(hi))
     out = {"closed": False, "reason": "", "word": None, "pieces": [], "mu": ", ".join(sp.sstr(m) for m in S.mus) or None}
     end = B if hi_open else (A if lo_open else B)
@@ -472,6 +498,7 @@ def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
         if work.exhausted:
             out["reason"] = f"work budget ({work.total} units) exhausted at t = {float(cur):.12g}"
             return out
+        floor[0] = max(floor[0], work.spent + 1)
         u, w = cur, min(qh, cur + (qh - ql) / 2 ** k)
         tries += 1
         spent = work.spent
@@ -482,6 +509,7 @@ def _close_strip(S, lo, hi, *, lo_open, hi_open, max_depth, work: Work) -> dict:
                                  f"{float((cur - ql) / (qh - ql)):.1%} of the strip in {spent} work units (the "
                                  f"polytope's slack is small; forecast {spent + need:.0f} > 3 x {work.total} units)")
                 return out
+            floor[0] = max(floor[0], (spent + need) / 3)
         r = S.certify(u, w)
         work.charge(int(S.units) - charged)
         charged = int(S.units)

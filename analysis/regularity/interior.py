@@ -87,6 +87,29 @@ def _size(N: ParametricNorm) -> int:
     return len(N.C) * (N.n + 1) ** 2
 
 
+#: the last parametric norms built (:func:`_parametric_norm`), least recently used first; at most
+#: ``_NORMS_MAX_ENTRIES`` coefficients in all (about 60 MB; the norms for L = 1..12 of a 6-point family hold about
+#: 750 000)
+_NORMS: dict = {}
+_NORMS_MAX_ENTRIES = 800_000
+
+
+def _parametric_norm(am: LaurentSymbol, p: sp.Symbol, L: int, arity: int) -> ParametricNorm:
+    """``ParametricNorm(am, p, L, arity)``, kept for the next C^j sets of the same family (a norm is not
+    changed after it is built): an interval and a wider one, or a range and one of its strips, test the
+    same norms."""
+    key = (am.start, tuple(am.mask), p, L, arity)
+    N = _NORMS.pop(key, None)
+    if N is None:
+        N = ParametricNorm(am, p, L, arity)
+    _NORMS[key] = N
+    total = sum(len(x.C) * (x.n + 1) for x in _NORMS.values())
+    while total > _NORMS_MAX_ENTRIES and len(_NORMS) > 1:
+        old = _NORMS.pop(next(iter(_NORMS)))
+        total -= len(old.C) * (old.n + 1)
+    return N
+
+
 class _Norms:
     """``ParametricNorm`` for L = 1..L_max, built lazily, with float point evaluation; ``charge``
     bills a work budget for what is built and tested (fractions carried, whole units charged)."""
@@ -106,8 +129,8 @@ class _Norms:
 
     def __getitem__(self, L) -> ParametricNorm:
         if L not in self._cache:
-            N = self._cache[L] = ParametricNorm(self.am, self.p, L, self.arity)
-            self.charge(BUILD_UNITS + _size(N) / BUILD_SIZE_PER_UNIT)
+            N = self._cache[L] = _parametric_norm(self.am, self.p, L, self.arity)
+            self.charge(BUILD_UNITS + _size(N) / BUILD_SIZE_PER_UNIT)     # charged as built, kept or not
         return self._cache[L]
 
     def best_at(self, t: float) -> float:

@@ -90,6 +90,8 @@ class _Family:
         c = factor_out(a, self.N) / 2
         self.polys = [sp.Poly(sp.expand(x), p) for x in c.mask]
         self.float_coeffs = [[float(v) for v in q.all_coeffs()] for q in self.polys]
+        # the exact coefficients (highest first) as (numerator, denominator), converted once for the balls
+        self._qcoeffs = [[(int(sp.Rational(v).p), int(sp.Rational(v).q)) for v in q.all_coeffs()] for q in self.polys]
         self.exceptional = f.witness["exceptional"]
         self.p = p
         self._K = sp.QQ[p]
@@ -128,10 +130,10 @@ class _Family:
         try:
             x = flint.arb(flint.fmpq(int(lo.p), int(lo.q))).union(flint.arb(flint.fmpq(int(hi.p), int(hi.q))))
             c = []
-            for q in self.polys:
+            for q in self._qcoeffs:
                 acc = flint.arb(0)
-                for v in q.all_coeffs():   # Horner
-                    acc = acc * x + flint.arb(flint.fmpq(int(sp.Rational(v).p), int(sp.Rational(v).q)))
+                for num, den in q:   # Horner
+                    acc = acc * x + flint.arb(flint.fmpq(num, den))
                 c.append(acc)
             return ball_transition_matrices(c)
         finally:
@@ -266,9 +268,9 @@ def _real_root_bound(F: "_Family", word, lo, hi, P_mid) -> sp.Rational:
     chi = F.charpoly(word)
     n = len(chi) - 1
     tm, h = _fmpq((lo + hi) / 2), _fmpq((hi - lo) / 2)
-    for shrink in (sp.Rational(1, 10 ** 9), sp.Rational(1, 10 ** 7), sp.Rational(1, 10 ** 5),
-                   sp.Rational(1, 10 ** 4), sp.Rational(1, 10 ** 3), sp.Rational(1, 100)):
-        r = sp.Rational(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12)) * (1 - shrink)
+    r_mid = sp.Rational(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12))
+    for shrink in _SHRINKS:
+        r = r_mid * (1 - shrink)
         x = _fmpq(sgn * r)
         val = chi[0] * 0
         for c in chi:                                   # Horner in x
@@ -276,6 +278,10 @@ def _real_root_bound(F: "_Family", word, lo, hi, P_mid) -> sp.Rational:
         if _sign_on_interval(val, tm, h) == -(sgn ** n):
             return r
     return sp.Integer(0)
+
+
+_SHRINKS = (sp.Rational(1, 10 ** 9), sp.Rational(1, 10 ** 7), sp.Rational(1, 10 ** 5),
+            sp.Rational(1, 10 ** 4), sp.Rational(1, 10 ** 3), sp.Rational(1, 100))
 
 
 def _trace_bound(P, squarings: int = 5):

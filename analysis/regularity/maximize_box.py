@@ -80,6 +80,9 @@ class _BoxFamily:
         self.n = mats[0].shape[0]
         self.entries = [[[sp.Poly(sp.expand(M[i, j]), *params) for j in range(self.n)] for i in range(self.n)]
                         for M in mats]
+        # each entry's terms as (numerator, denominator, exponents), converted once for the ball evaluations
+        self._terms = [[[[(int(sp.Rational(co).p), int(sp.Rational(co).q), [int(e) for e in mon])
+                          for mon, co in q.terms()] for q in row] for row in E] for E in self.entries]
         self._f = [sp.lambdify(params, M, "numpy") for M in mats]
 
     def floats(self, t):
@@ -94,17 +97,17 @@ class _BoxFamily:
             xs = [flint.arb(flint.fmpq(int(lo.p), int(lo.q))).union(flint.arb(flint.fmpq(int(hi.p), int(hi.q))))
                   for lo, hi in box]
             out = []
-            for E in self.entries:
+            for E in self._terms:
                 rows = []
                 for row in E:
                     vals = []
-                    for q in row:
+                    for terms in row:
                         acc = flint.arb(0)
-                        for mon, co in q.terms():
-                            term = flint.arb(flint.fmpq(int(sp.Rational(co).p), int(sp.Rational(co).q)))
+                        for num, den, mon in terms:
+                            term = flint.arb(flint.fmpq(num, den))
                             for x, e in zip(xs, mon):
                                 if e:
-                                    term *= x ** int(e)
+                                    term *= x ** e
                             acc += term
                         vals.append(acc)
                     rows.append(vals)

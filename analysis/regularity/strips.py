@@ -93,6 +93,9 @@ R. Krawczyk, *Newton-Algorithmen zur Bestimmung von Nullstellen mit Fehlerschran
 
 from __future__ import annotations
 
+import copy
+from collections import OrderedDict
+
 import sympy as sp
 
 from ..algebra.symbol import LaurentSymbol
@@ -172,6 +175,33 @@ def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = Fals
     Returns ``{"closed": bool, "reason": str, "word": Pi, "pieces": [...], "mu": ..., "work": units}``;
     each piece records its rational interval, the enclosure of ``lambda = rho(Pi)`` and the worst image
     norm; ``timing`` holds the wall-clock seconds (decides nothing).
+
+    The last results are kept (:data:`_RESULTS`): the same strip asked again (a C^j range and then
+    its strip on its own) is not computed twice. A closed strip is closed, with the same pieces and work,
+    by every budget that passes the march's budget checks (the budget only stops the march): that result
+    answers every budget from the smallest such one up; any other result answers only its own budget.
     """
-    return close_family(_strip_of(am, p, check_arity(arity)), lo, hi, lo_open=lo_open, hi_open=hi_open,
-                        max_depth=max_depth, budget=budget)
+    arity = check_arity(arity)
+    key = (am.start, tuple(am.mask), p, as_expr(lo), as_expr(hi), bool(lo_open), bool(hi_open), max_depth, arity)
+    hit = _RESULTS.get(key)
+    if hit is not None and (hit[0] == budget or (hit[2]["closed"] and hit[1] <= budget)):
+        _RESULTS.move_to_end(key)
+        out = copy.deepcopy(hit[2])
+        out["timing"] = {"seconds": 0.0, "kept": True}     # no march: the kept result
+        return out
+    floor = [0.0]
+    out = close_family(_strip_of(am, p, arity), lo, hi, lo_open=lo_open, hi_open=hi_open, max_depth=max_depth,
+                       budget=budget, floor=floor)
+    _RESULTS[key] = (budget, floor[0], copy.deepcopy(out))
+    _RESULTS.move_to_end(key)
+    while len(_RESULTS) > _RESULTS_MAX:
+        _RESULTS.popitem(last=False)
+    return out
+
+
+#: the last results of :func:`close_strip`, keyed on everything they depend on (the difference symbol's mask,
+#: the parameter, the exact ends and whether they are open, ``max_depth``, the arity), each with the budget it
+#: was computed with and the smallest budget giving the same closed result; least recently used first, at most
+#: ``_RESULTS_MAX``
+_RESULTS: "OrderedDict[tuple, tuple[int, dict]]" = OrderedDict()
+_RESULTS_MAX = 16

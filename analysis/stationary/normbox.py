@@ -61,6 +61,7 @@ R. T. Farouki, *The Bernstein polynomial basis: a centennial retrospective*, CAG
 from __future__ import annotations
 
 from fractions import Fraction
+from functools import cached_property
 from math import comb, lcm
 
 import numpy as np
@@ -115,7 +116,7 @@ class ParametricNorm:
     """``N_L(p) = ||(1/m S_{a_k})^L||_inf`` of a difference symbol over ``QQ[p]`` (see module)."""
 
     def __init__(self, am: LaurentSymbol, p: sp.Symbol, L: int, arity: int = 2):
-        from flint import fmpz_mat, fmpz_poly
+        from flint import fmpz_poly
 
         if L < 1:
             raise AnalysisError("L must be a positive integer")
@@ -166,9 +167,16 @@ class ParametricNorm:
         self.C = [row for _, row in rows]
         self.scale = (d * arity) ** L
         self.starts = [k for k in range(len(rows)) if k == 0 or rows[k][0] != rows[k - 1][0]]
-        self._Cz = fmpz_mat(len(rows), K, [v for row in self.C for v in row]) if rows else None
         self._Cf = np.array(self.C, dtype=float) / float(self.scale) if rows else np.zeros((0, K))
         self._sizes_max = max(b - a for a, b in zip(self.starts, self.starts[1:] + [len(rows)])) if rows else 0
+
+    @cached_property
+    def _Cz(self):
+        """The rows as an ``fmpz_mat`` for the exact tests, formed when one is first made (most norms are
+        only screened in floating point)."""
+        from flint import fmpz_mat
+
+        return fmpz_mat(self.C) if self.C else None
 
     # ------------------------------------------------------------------ closed rational boxes
     def float_box_bound(self, u, v) -> float:
@@ -180,10 +188,12 @@ class ParametricNorm:
         return float(np.add.reduceat(B, self.starts, axis=0).max())
 
     def _bernstein_ints(self, u: Fraction, v: Fraction):
+        """The integer Bernstein coefficients of every row on ``[u, v]`` (an object array of ``fmpz``:
+        exact integers, compared and summed as Python ints are) and their common denominator."""
         Mz, Q = _bernstein_matrix(u, v, self.n).numer_denom()
         Q = int(Q)
         B = self._Cz * Mz
-        vals = np.array([int(x) for x in B.entries()], dtype=object).reshape(len(self.C), self.n + 1)
+        vals = np.array(B.entries(), dtype=object).reshape(len(self.C), self.n + 1)
         return vals, Q
 
     def box_bound(self, u, v) -> Fraction:

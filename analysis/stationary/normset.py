@@ -161,7 +161,11 @@ def norm_function(a: LaurentSymbol, m: int, L: int, param=None, *, spelling: str
     coefficients (at the breakpoints the norm is the common limit: it is continuous).
     """
     p = _parameter(a, param)
-    am, by_res = _residue_polys(a, m, L, spelling, p, arity)
+    return _norm_function(p, *_residue_polys(a, m, L, spelling, p, arity), m, L, spelling, within)
+
+
+def _norm_function(p, am, by_res, m, L, spelling, within) -> Result:
+    """:func:`norm_function` from the residue polynomials (:func:`_residue_polys`)."""
     lo, hi = (_bound_to_algebraic(w) for w in within)
     cuts = [r for r in _unique_roots([q for qs in by_res.values() for q in qs]) if _inside(r, lo, hi)]
     bounds = [lo] + cuts + [hi]
@@ -198,10 +202,10 @@ def norm_solution_set(a: LaurentSymbol, m: int, L: int, param=None, *, spelling:
     difference symbol of :func:`analysis.stationary.difference.difference_symbol`.
     """
     bound = sp.Rational(bound)
-    fn = norm_function(a, m, L, param, spelling=spelling, within=within, arity=arity)
-    pieces: list[NormPiece] = fn.value
     p = _parameter(a, param)
-    _, by_res = _residue_polys(a, m, L, spelling, p, arity)
+    am, by_res = _residue_polys(a, m, L, spelling, p, arity)        # formed once for the norm and the points
+    fn = _norm_function(p, am, by_res, m, L, spelling, within)
+    pieces: list[NormPiece] = fn.value
 
     # cut points: cell boundaries and, inside each cell, where a residue polynomial meets the bound
     points: list[RealAlgebraic] = []
