@@ -106,15 +106,19 @@ def spectral_norm_upper(M, p: int = 2) -> Fraction:
     >>> 3 <= b < Fraction(3001, 1000)
     True
     """
-    from flint import arb
+    from flint import arb, ctx
 
-    G = M.transpose() * M
-    for _ in range(p):
-        G = G * G
-    fro = arb(0)
-    for i in range(G.nrows()):
-        for j in range(G.ncols()):
-            fro += G[i, j] * G[i, j]
+    old = ctx.prec
+    ctx.prec = 64                                        # a few digits suffice: balls stay rigorous
+    try:
+        G = M.transpose() * M
+        for _ in range(p + 1):
+            G = G * G                                    # G^(2^(p+1)): its trace is ||(M^T M)^(2^p)||_F^2
+        fro = arb(0)
+        for i in range(G.nrows()):
+            fro += G[i, i]
+    finally:
+        ctx.prec = old
     top = _ub(fro)
     return _ub(_arb(top).root(2 ** (p + 2))) if top > 0 else Fraction(0)
 

@@ -324,7 +324,7 @@ def net_size(z, norm: str = "inf"):
 
 
 def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cells: int = 5000,
-                          prec: int = 128) -> Result:
+                          prec: int = 128, frame=None) -> Result:
     """Prove that the Jacobian ``Im(conj(D_e1 f) D_e2 f)`` of the limit ``f`` (complex valued) has one sign on
     the closed cell ``Q = [0, 1]^2`` of the net ``net`` (the local net ``u(j) = f_0(-j)``, ``j`` in ``Omega``:
     exact numbers or complex balls), refining the cell where the bound does not suffice.
@@ -335,6 +335,8 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
     in the cell ``|J(x) - Im(conj(d_1) d_2)| <= E_1 |d_2| + E_2 |d_1| + E_1 E_2`` (``|D_i f - d_i| <= E_i``). The cell is proven
     when ``s Im(conj(d_1) d_2)`` minus that exceeds 0 in Arb for one sign ``s`` shared by all cells; otherwise
     its four children (``T_eps^T u``) are tried, down to ``max_depth`` levels.
+
+    ``frame``: ``cell_frame(a, bound, (1, 0))`` when the caller tests many cells (computed here otherwise).
 
     ``value``: the sign (+1 or -1) when certified; ``witness``: ``cells`` proven, ``depth`` reached,
     ``unproven`` (cells left at ``max_depth``, with the first one's digits).
@@ -352,7 +354,7 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
     """
     from flint import acb, acb_mat, arb, ctx
 
-    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 0))
+    K, W, fam, B, omega, idx = frame if frame is not None else cell_frame(a, bound, (1, 0))
     K1, K2 = (bound.witness.get("K_by_direction", {}).get(e, K) for e in ((1, 0), (0, 1)))
     norm = bound.witness.get("norm", "inf")
     if len(net) != len(omega):

@@ -30,10 +30,13 @@ coordinates ``(p, q) = (x, -y)`` (the butterfly mask's third direction ``(1, 1)`
    development of the mesh) at distance > 1/2 from the centre, so no point of any refinement of it is a new
    point on an edge at the centre, all rules used there are the regular stencil, and ``Phi`` on the cell is
    the regular butterfly limit of its local net.
-3. Regularity: :func:`analysis.vertex.derived.jacobian_sign_on_cell` on every cell with one common sign;
+3. Regularity: :func:`analysis.vertex.derived.jacobian_sign_on_cell` on every cell with one common sign, with
+   the regular part's derivative error bound :func:`analysis.vertex.defectsum.defect_sum_bound`
+   (``|D_e Phi - d_e| <= 2^k K_e ||W c(u_k)||_2`` on a cell of level k, one constant per direction);
    ``Phi(x/2) = Phi(x)/2`` and ``Phi(R x) = w Phi(x)`` carry the sign to the punctured plane.
 4. Winding: the ring-``hi`` arc of sector 0 runs from ``(hi, 0)`` to ``(0, hi)``, with images ``P0`` and
-   ``w P0``. On its edges (the cells' diagonals) ``|Phi(a + t e) - Phi(a) - t d| <= K ||W c(u)||``; the tubes
+   ``w P0``. On its edges (the cells' diagonals, direction ``e = (1, 1)``)
+   ``|Phi(a + t e) - Phi(a) - t d| <= K_e ||W c(u)||_2`` (the integral of the derivative error); the tubes
    are refined along the diagonals until each is proven to miss the ray from 0 at the angle
    ``arg P0 + pi + pi/n``. Then the arc's argument increases by exactly ``2 pi/n`` and the ring winds once.
    With a positive Jacobian in the chart's orientation (negative in the mask's) the map is injective
@@ -56,7 +59,7 @@ from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
 __all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "regular_butterfly_mask",
            "nested_neighbourhoods", "outer_rings_nilpotent", "eigenfunction_nets", "winding_of_arc", "regular_bound",
-           "regular_defect_bound"]
+           "regular_defect_bound", "regular_holder"]
 
 
 def annulus_cells(lo: int, hi: int) -> list[tuple[int, int]]:
@@ -192,11 +195,19 @@ def regular_bound(tension=Fraction(1, 16), r=Fraction(2, 5), budget: int = 50):
     """``(mask, bound)``: the regular butterfly mask of ``tension`` and its certified (or not)
     :func:`analysis.vertex.derived.derivative_error_bound` for the contraction factor ``r``, the Hölder exponent
     computed with ``budget`` (cached: one computation per process and arguments)."""
-    from ..bivariate.holder import holder_exponent
     from .derived import derivative_error_bound
 
     a = regular_butterfly_mask(tension)
-    return a, derivative_error_bound(a, Fraction(r), holder=holder_exponent(a, budget=budget))
+    return a, derivative_error_bound(a, Fraction(r), holder=regular_holder(tension, budget))
+
+
+@lru_cache(maxsize=8)
+def regular_holder(tension=Fraction(1, 16), budget: int = 20):
+    """The certified Hölder exponent of the regular butterfly of ``tension`` (its C^1 makes the divided
+    differences tend to the derivatives), computed with ``budget`` once per process and arguments."""
+    from ..bivariate.holder import holder_exponent
+
+    return holder_exponent(regular_butterfly_mask(tension), budget=budget)
 
 
 @lru_cache(maxsize=8)
@@ -204,11 +215,10 @@ def regular_defect_bound(tension=Fraction(1, 16), budget: int = 20):
     """``(mask, bound)``: the regular butterfly mask of ``tension`` and its certified (or not)
     :func:`analysis.vertex.defectsum.defect_sum_bound` (Euclidean norm, one constant per direction), the Hölder
     exponent computed with ``budget`` (cached: one computation per process and arguments)."""
-    from ..bivariate.holder import holder_exponent
     from .defectsum import defect_sum_bound
 
     a = regular_butterfly_mask(tension)
-    return a, defect_sum_bound(a, holder=holder_exponent(a, budget=budget))
+    return a, defect_sum_bound(a, holder=regular_holder(tension, budget))
 
 
 def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi: int = 16, max_depth: int = 8,
@@ -234,6 +244,7 @@ def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi
     a, bound = regular_defect_bound(tension)
     K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
     K_diag, norm = bound.witness["K_by_direction"][(1, 1)], bound.witness["norm"]
+    frame = cell_frame(a, bound, (1, 0))
     if ring is None:                       # net() reads the chart points (x + 1 - jx, y + 1 + jy), x + y <= hi - 1
         ring = hi - min(jx - jy for jx, jy in omega)
     rules = modified_butterfly_rules(ring, n, Fraction(tension))
@@ -257,7 +268,7 @@ def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi
         signs = set()
         for x, y in cells:
             total += 1
-            res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec)
+            res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec, frame=frame)
             sub += res.witness["cells"]
             if res.is_certified:
                 proven += 1
