@@ -1,6 +1,6 @@
 """The pieces of Zorin's cell test of the modified butterfly (analysis/vertex/zorin.py) that are cheap to check:
 the cover of the fundamental annulus, the exact eigen-structure argument, the verdict's sign consistency, the
-CLI's opt-in. (The whole test takes 3-15 s per valence after a one-off 10 s: docs/vertices.md gives the command and
+CLI's opt-in. (The whole test takes 3-12 s per valence after a one-off 10 s: docs/vertices.md gives the command and
 timings; tests/test_vertex_defectsum.py runs it on a small annulus.)"""
 
 import dataclasses

@@ -55,7 +55,7 @@ def register(subparsers) -> None:
                         "(--valence N): the characteristic map")
     s.add_argument("--charmap-cells", action="store_true",
                    help="with --scheme modified-butterfly: also run Zorin's cell test of the characteristic "
-                        "map in Arb (certifies C^1; about 10 s once, then 3-15 s per valence; at most "
+                        "map in Arb (certifies C^1; about 10 s once, then 3-12 s per valence; at most "
                         f"{MAX_CELL_VALENCES} valences)")
     s.add_argument("--json", action="store_true", help="machine-readable output")
     s.set_defaults(func=cmd_vertex)
@@ -194,7 +194,7 @@ def cmd_vertex(args) -> None:
     if cells and args.scheme != "modified-butterfly":
         raise AnalysisError("--charmap-cells applies to --scheme modified-butterfly only")
     if cells and len(valences) > MAX_CELL_VALENCES:
-        raise AnalysisError(f"--charmap-cells takes 3-15 s per valence: give at most {MAX_CELL_VALENCES} "
+        raise AnalysisError(f"--charmap-cells takes 3-12 s per valence: give at most {MAX_CELL_VALENCES} "
                             "valences, e.g. --valence 3..18")
     if args.figure and len(valences) == 1 and base.lattice == "sqrt3":
         raise AnalysisError("--figure with one valence draws the characteristic map, which is not available for "
@@ -246,7 +246,7 @@ def cmd_vertex(args) -> None:
             _print(f"figure: {args.figure}")
 
 
-#: valences per run of ``--charmap-cells`` (each takes 3-15 s of CPU after the regular part's bound, about 10 s)
+#: valences per run of ``--charmap-cells`` (each takes 3-12 s of CPU after the regular part's bound, about 10 s)
 MAX_CELL_VALENCES = 16
 
 

@@ -44,7 +44,8 @@ tail is charged at the rate of the whole word (the joint spectral radius of the 
 ellipsoid suits the family far better than its maximum norm (one step's maximum norm is about 2). For the
 regular butterfly (tension 1/16), in the coordinates of :func:`analysis.vertex.derived.ellipsoid_coordinates`,
 ``K_e`` is about 11.1, 10.1 and 5.0, and ``K_e ||W c||_2`` is 47 to 330 times smaller than the tree bound's
-``405 ||W c||_inf`` on the cells of the modified butterfly's characteristic map at valence 3.
+``405 ||W c||_inf`` on the cells of the modified butterfly's characteristic map at valence 3 (compared in
+floats).
 
 Examples
 --------
