@@ -101,4 +101,4 @@ def test_modified_butterfly_at_valence_3_on_a_small_annulus():
     r = modified_butterfly_zorin(3, lo=5, hi=10)
     w = r.witness
     assert r.status == "certified" and w["cells"] == "45 of 45" and w["ring"] == 14 and w["norm"] == "2"
-    assert w["jacobian_sign_mask"] == -1 and w["winding"] and w["subcells"] > 45
+    assert w["jacobian_sign_mask"] == -1 and w["winding"] and w["subcells"] > 45 and 1 <= w["depth"] <= 8

@@ -228,7 +228,7 @@ def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi
     ``witness`` has ``eigen`` (Reif's conditions, lambda exact, the outer-ring check), ``cells`` (proven of
     total), ``cover`` (the lemma of step 2), ``jacobian_sign_mask`` (-1: positive in the chart), ``winding``
     (True when step 4 succeeded), ``K`` (the largest of ``K_by_direction``, :func:`regular_defect_bound`),
-    ``subcells`` (cells examined after refinement). ``ring`` defaults to the smallest ring holding every cell's
+    ``subcells`` (cells examined after refinement), ``depth`` (the deepest refinement level reached). ``ring`` defaults to the smallest ring holding every cell's
     neighbourhood (``hi + 4`` for the butterfly's invariant support: the 20-ring for rings 8..16).
     """
     import sympy as sp
@@ -264,12 +264,13 @@ def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi
         v = eigenvector(rules, n, acb(fmpq(1, 2)))
         phi, net = eigenfunction_nets(rules, n, v, omega)
 
-        proven = total = sub = 0
+        proven = total = sub = depth = 0
         signs = set()
         for x, y in cells:
             total += 1
             res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec, frame=frame)
             sub += res.witness["cells"]
+            depth = max(depth, res.witness["depth"])
             if res.is_certified:
                 proven += 1
                 signs.add(res.value)
@@ -281,7 +282,7 @@ def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi
     wit: dict[str, Any] = {"eigen": eigen, "cells": f"{proven} of {total}", "cover": cover,
                            "jacobian_sign_mask": sign, "regular": regular, "winding": winding, "K": K,
                            "K_by_direction": dict(bound.witness["K_by_direction"]), "norm": norm,
-                           "subcells": sub, "ring": ring, "annulus": (lo, hi), "regular_valence": n == 6}
+                           "subcells": sub, "depth": depth, "ring": ring, "annulus": (lo, hi), "regular_valence": n == 6}
     return _verdict(n, wit, eigen_ok)
 
 
