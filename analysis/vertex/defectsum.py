@@ -20,7 +20,8 @@ digits, in Arb: node ``w`` gets ``q_w`` >= ``2^|w| ||W A_w W^{-1}||_2`` and is a
     K_e = max over leaves w of  a_{e,w} / (1 - q_w),        a_{e,w} >= ||lambda_{e,w} W^{-1}||_2.
 
 Spectral norms are bounded by ``||M||_2 <= ||G^(2^p)||_F^(2^-(p+1))``, ``G = M^T M`` (``p = 2``): with the
-eigenvalues ``mu_i >= 0`` of ``G``, ``||G^(2^p)||_F^2 = sum mu_i^(2^(p+1)) >= mu_max^(2^(p+1))``.
+eigenvalues ``mu_i >= 0`` of ``G``, ``||G^(2^p)||_F^2 = trace G^(2^(p+1)) = sum mu_i^(2^(p+1)) >= mu_max^(2^(p+1))``
+(computed as that trace, in 64-bit Arb balls: a few digits suffice for an upper bound).
 
 Proof sketch. The leaves form a complete prefix code: every infinite digit sequence ``sigma`` begins with
 exactly one leaf. (i) *Finiteness*: with ``q = max q_w < 1``, ``l`` the largest leaf depth and ``M_0`` the
@@ -39,8 +40,8 @@ Hölder exponent > 1, Dyn–Levin 2002) and ``d_m(Q_m)`` is the mean of ``D_e f`
 (an interpolating scheme). So ``|D_e f(x) - d_k(Q)| <= 2^k K_e N(c(u_k))``.
 
 Why it is sharp: the first ``|w|`` defects are summed with their signs (no triangle inequality per step), the
-tail is charged at the rate of the whole word (the joint spectral radius of the second differences is about
-1/4, so ``q_w`` falls like ``2^-|w|`` for the leading words), and the Euclidean norm of the sum-of-squares
+tail is charged at the rate of the whole word (in floats, products of the second-difference operators have
+spectral radius 1/4, the quadratics' eigenvalue, so ``q_w`` falls roughly like ``2^-|w|``), and the Euclidean norm of the sum-of-squares
 ellipsoid suits the family far better than its maximum norm (one step's maximum norm is about 2). For the
 regular butterfly (tension 1/16), in the coordinates of :func:`analysis.vertex.derived.ellipsoid_coordinates`,
 ``K_e`` is about 11.1, 10.1 and 5.0, and ``K_e ||W c||_2`` is 47 to 330 times smaller than the tree bound's
