@@ -60,7 +60,7 @@ from typing import Any
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
 __all__ = ["defect_functionals", "ellipsoid_coordinates", "contraction_certificate", "derivative_error_bound",
-           "jacobian_sign_on_cell",
+           "jacobian_sign_on_cell", "net_size",
            "DIRECTIONS", "MAX_NODES", "MAX_DEPTH"]
 
 #: the three edge directions of the three-direction grid in lattice coordinates
@@ -298,17 +298,45 @@ def cell_frame(a, bound: Result, direction):
     return bound.value, bound.witness["W"], fam, d["basis"], fam.omega, {p: s for s, p in enumerate(fam.omega)}
 
 
+def net_size(z, norm: str = "inf"):
+    """``||z||`` of a column ``acb_mat`` as an Arb ball: the maximum modulus (``norm="inf"``, the bound of
+    :func:`derivative_error_bound`) or the Euclidean norm (``"2"``, :func:`analysis.vertex.defectsum.defect_sum_bound`).
+
+    >>> from flint import acb_mat
+    >>> z = acb_mat([[3], [4j]])
+    >>> float(net_size(z).mid()), float(net_size(z, "2").mid())
+    (4.0, 5.0)
+    """
+    from flint import arb
+
+    if norm == "2":
+        total = arb(0)
+        for t in range(z.nrows()):
+            y = abs(z[t, 0])
+            total += y * y
+        return (total.mid() + total.rad()).sqrt()          # an enclosure of an upper bound (total >= 0)
+    if norm != "inf":
+        raise AnalysisError(f"unknown norm {norm!r} of the second differences")
+    zmax = arb(0)
+    for t in range(z.nrows()):
+        zmax = zmax.max(abs(z[t, 0])) if t else abs(z[t, 0])
+    return zmax
+
+
 def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cells: int = 5000,
-                          prec: int = 128) -> Result:
+                          prec: int = 128, frame=None) -> Result:
     """Prove that the Jacobian ``Im(conj(D_e1 f) D_e2 f)`` of the limit ``f`` (complex valued) has one sign on
     the closed cell ``Q = [0, 1]^2`` of the net ``net`` (the local net ``u(j) = f_0(-j)``, ``j`` in ``Omega``:
     exact numbers or complex balls), refining the cell where the bound does not suffice.
 
-    On a cell of level m with local net u: ``d_i = 2^m (u(-e_i) - u(0))``, ``E = 2^m K ||W c(u)||_inf``
-    (``bound`` a certified :func:`derivative_error_bound`), and for every x in the cell
-    ``|J(x) - Im(conj(d_1) d_2)| <= E |d_2| + E |d_1| + E^2`` (``|D_i f - d_i| <= E``). The cell is proven
+    On a cell of level m with local net u: ``d_i = 2^m (u(-e_i) - u(0))``, ``E_i = 2^m K_i ||W c(u)||``
+    (``bound`` a certified :func:`derivative_error_bound`, maximum norm and one K, or
+    :func:`analysis.vertex.defectsum.defect_sum_bound`, Euclidean norm and ``K_i`` per direction), and for every x
+    in the cell ``|J(x) - Im(conj(d_1) d_2)| <= E_1 |d_2| + E_2 |d_1| + E_1 E_2`` (``|D_i f - d_i| <= E_i``). The cell is proven
     when ``s Im(conj(d_1) d_2)`` minus that exceeds 0 in Arb for one sign ``s`` shared by all cells; otherwise
     its four children (``T_eps^T u``) are tried, down to ``max_depth`` levels.
+
+    ``frame``: ``cell_frame(a, bound, (1, 0))`` when the caller tests many cells (computed here otherwise).
 
     ``value``: the sign (+1 or -1) when certified; ``witness``: ``cells`` proven, ``depth`` reached,
     ``unproven`` (cells left at ``max_depth``, with the first one's digits).
@@ -326,7 +354,9 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
     """
     from flint import acb, acb_mat, arb, ctx
 
-    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 0))
+    K, W, fam, B, omega, idx = frame if frame is not None else cell_frame(a, bound, (1, 0))
+    K1, K2 = (bound.witness.get("K_by_direction", {}).get(e, K) for e in ((1, 0), (0, 1)))
+    norm = bound.witness.get("norm", "inf")
     if len(net) != len(omega):
         raise AnalysisError(f"the local net has {len(net)} values, the invariant support {len(omega)} points")
     i0, i1, i2 = idx[(0, 0)], idx[(-1, 0)], idx[(0, -1)]
@@ -335,7 +365,7 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
     try:
         Tt = [acb_mat(T.transpose()) for T in fam.full]
         WBt = acb_mat(W * B.transpose())
-        Ka = arb(K.numerator) / K.denominator
+        Ka, Kb = (arb(k.numerator) / k.denominator for k in (K1, K2))
         u0 = acb_mat([[acb(x.real, x.imag) if isinstance(x, complex) else acb(x)] for x in net])
         sign = 0
         proven = 0
@@ -352,13 +382,10 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
             scale = 2 ** m
             da = (u[i1, 0] - u[i0, 0]) * scale
             db = (u[i2, 0] - u[i0, 0]) * scale
-            z = WBt * u
-            zmax = arb(0)
-            for t in range(z.nrows()):
-                zmax = zmax.max(abs(z[t, 0])) if t else abs(z[t, 0])
-            E = Ka * zmax * scale
+            size = net_size(WBt * u, norm) * scale
+            Ea, Eb = Ka * size, Kb * size
             jd = (da.conjugate() * db).imag
-            err = E * abs(db) + E * abs(da) + E * E
+            err = Ea * abs(db) + Eb * abs(da) + Ea * Eb
             ok = 0
             for s in ((sign,) if sign else (1, -1)):
                 if (jd * s - err) > 0:

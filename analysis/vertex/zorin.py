@@ -30,10 +30,13 @@ coordinates ``(p, q) = (x, -y)`` (the butterfly mask's third direction ``(1, 1)`
    development of the mesh) at distance > 1/2 from the centre, so no point of any refinement of it is a new
    point on an edge at the centre, all rules used there are the regular stencil, and ``Phi`` on the cell is
    the regular butterfly limit of its local net.
-3. Regularity: :func:`analysis.vertex.derived.jacobian_sign_on_cell` on every cell with one common sign;
+3. Regularity: :func:`analysis.vertex.derived.jacobian_sign_on_cell` on every cell with one common sign, with
+   the regular part's derivative error bound :func:`analysis.vertex.defectsum.defect_sum_bound`
+   (``|D_e Phi - d_e| <= 2^k K_e ||W c(u_k)||_2`` on a cell of level k, one constant per direction);
    ``Phi(x/2) = Phi(x)/2`` and ``Phi(R x) = w Phi(x)`` carry the sign to the punctured plane.
 4. Winding: the ring-``hi`` arc of sector 0 runs from ``(hi, 0)`` to ``(0, hi)``, with images ``P0`` and
-   ``w P0``. On its edges (the cells' diagonals) ``|Phi(a + t e) - Phi(a) - t d| <= K ||W c(u)||``; the tubes
+   ``w P0``. On its edges (the cells' diagonals, direction ``e = (1, 1)``)
+   ``|Phi(a + t e) - Phi(a) - t d| <= K_e ||W c(u)||_2`` (the integral of the derivative error); the tubes
    are refined along the diagonals until each is proven to miss the ray from 0 at the angle
    ``arg P0 + pi + pi/n``. Then the arc's argument increases by exactly ``2 pi/n`` and the ring winds once.
    With a positive Jacobian in the chart's orientation (negative in the mask's) the map is injective
@@ -55,7 +58,8 @@ from typing import Any
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 
 __all__ = ["annulus_cells", "covers_annulus", "modified_butterfly_zorin", "regular_butterfly_mask",
-           "nested_neighbourhoods", "outer_rings_nilpotent", "eigenfunction_nets", "winding_of_arc", "regular_bound"]
+           "nested_neighbourhoods", "outer_rings_nilpotent", "eigenfunction_nets", "winding_of_arc", "regular_bound",
+           "regular_defect_bound", "regular_holder"]
 
 
 def annulus_cells(lo: int, hi: int) -> list[tuple[int, int]]:
@@ -191,20 +195,41 @@ def regular_bound(tension=Fraction(1, 16), r=Fraction(2, 5), budget: int = 50):
     """``(mask, bound)``: the regular butterfly mask of ``tension`` and its certified (or not)
     :func:`analysis.vertex.derived.derivative_error_bound` for the contraction factor ``r``, the Hölder exponent
     computed with ``budget`` (cached: one computation per process and arguments)."""
-    from ..bivariate.holder import holder_exponent
     from .derived import derivative_error_bound
 
     a = regular_butterfly_mask(tension)
-    return a, derivative_error_bound(a, Fraction(r), holder=holder_exponent(a, budget=budget))
+    return a, derivative_error_bound(a, Fraction(r), holder=regular_holder(tension, budget))
 
 
-def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 16, r=Fraction(2, 5),
-                             max_depth: int = 8, tension=Fraction(1, 16), prec: int = 128) -> Result:
+@lru_cache(maxsize=8)
+def regular_holder(tension=Fraction(1, 16), budget: int = 20):
+    """The certified Hölder exponent of the regular butterfly of ``tension`` (its C^1 makes the divided
+    differences tend to the derivatives), computed with ``budget`` once per process and arguments."""
+    from ..bivariate.holder import holder_exponent
+
+    return holder_exponent(regular_butterfly_mask(tension), budget=budget)
+
+
+@lru_cache(maxsize=8)
+def regular_defect_bound(tension=Fraction(1, 16), budget: int = 20):
+    """``(mask, bound)``: the regular butterfly mask of ``tension`` and its certified (or not)
+    :func:`analysis.vertex.defectsum.defect_sum_bound` (Euclidean norm, one constant per direction), the Hölder
+    exponent computed with ``budget`` (cached: one computation per process and arguments)."""
+    from .defectsum import defect_sum_bound
+
+    a = regular_butterfly_mask(tension)
+    return a, defect_sum_bound(a, holder=regular_holder(tension, budget))
+
+
+def modified_butterfly_zorin(n: int, *, ring: int | None = None, lo: int = 8, hi: int = 16, max_depth: int = 8,
+                             tension=Fraction(1, 16), prec: int = 128) -> Result:
     """Steps 0-4 of the module docstring for the modified butterfly at valence ``n``: *certified* (value True,
     "C^1 for generic initial data (Reif's criterion)") when every step is proven, else *inconclusive*; the
     ``witness`` has ``eigen`` (Reif's conditions, lambda exact, the outer-ring check), ``cells`` (proven of
     total), ``cover`` (the lemma of step 2), ``jacobian_sign_mask`` (-1: positive in the chart), ``winding``
-    (True when step 4 succeeded), ``K``, ``subcells`` (cells examined after refinement).
+    (True when step 4 succeeded), ``K`` (the largest of ``K_by_direction``, :func:`regular_defect_bound`),
+    ``subcells`` (cells examined after refinement), ``depth`` (the deepest refinement level reached). ``ring`` defaults to the smallest ring holding every cell's
+    neighbourhood (``hi + 4`` for the butterfly's invariant support: the 20-ring for rings 8..16).
     """
     import sympy as sp
     from flint import acb, ctx, fmpq
@@ -216,6 +241,12 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
 
     if hi != 2 * lo or lo < 2:
         raise AnalysisError(f"the annulus must be rings lo..2 lo (Phi(x/2) = Phi(x)/2), not {lo}..{hi}")
+    a, bound = regular_defect_bound(tension)
+    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
+    K_diag, norm = bound.witness["K_by_direction"][(1, 1)], bound.witness["norm"]
+    frame = cell_frame(a, bound, (1, 0))
+    if ring is None:                       # net() reads the chart points (x + 1 - jx, y + 1 + jy), x + y <= hi - 1
+        ring = hi - min(jx - jy for jx, jy in omega)
     rules = modified_butterfly_rules(ring, n, Fraction(tension))
     inner = modified_butterfly_rules(3, n, Fraction(tension))
     va = analyse(inner, n, curvature=False)
@@ -225,8 +256,6 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
                 and sp.Rational(va.lam_exact) == sp.Rational(1, 2) and eigen["outer_rings_nilpotent"])
     cells = annulus_cells(lo, hi)
     cover = covers_annulus(cells, lo, hi)
-    a, bound = regular_bound(tension, r, 50)
-    K, W, fam, B, omega, idx = cell_frame(a, bound, (1, 1))
     if not nested_neighbourhoods(omega, a.dilation.digits):
         raise AnalysisError("the refinements' neighbourhoods are not inside the cell's: the cover argument fails")
     old = ctx.prec
@@ -235,23 +264,25 @@ def modified_butterfly_zorin(n: int, *, ring: int = 24, lo: int = 8, hi: int = 1
         v = eigenvector(rules, n, acb(fmpq(1, 2)))
         phi, net = eigenfunction_nets(rules, n, v, omega)
 
-        proven = total = sub = 0
+        proven = total = sub = depth = 0
         signs = set()
         for x, y in cells:
             total += 1
-            res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec)
+            res = jacobian_sign_on_cell(a, net(x, y), bound, max_depth=max_depth, prec=prec, frame=frame)
             sub += res.witness["cells"]
+            depth = max(depth, res.witness["depth"])
             if res.is_certified:
                 proven += 1
                 signs.add(res.value)
         regular = proven == total and len(signs) == 1
-        winding = winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth)
+        winding = winding_of_arc(n, hi, net, phi, fam, B, W, K_diag, idx, max_depth, norm=norm)
     finally:
         ctx.prec = old
     sign = next(iter(signs)) if regular else None
     wit: dict[str, Any] = {"eigen": eigen, "cells": f"{proven} of {total}", "cover": cover,
                            "jacobian_sign_mask": sign, "regular": regular, "winding": winding, "K": K,
-                           "subcells": sub, "ring": ring, "annulus": (lo, hi), "regular_valence": n == 6}
+                           "K_by_direction": dict(bound.witness["K_by_direction"]), "norm": norm,
+                           "subcells": sub, "depth": depth, "ring": ring, "annulus": (lo, hi), "regular_valence": n == 6}
     return _verdict(n, wit, eigen_ok)
 
 
@@ -317,13 +348,16 @@ def eigenfunction_nets(rules, n: int, v: list, omega, k: int = 1):
     return phi, net
 
 
-def winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth, k: int = 1) -> bool:
+def winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth, k: int = 1, norm: str = "inf") -> bool:
     """Step 4 of the module docstring for the eigenfunction of Fourier block ``k`` (``Phi(R x) = w^k Phi(x)``):
     the image of the sector-0 arc of ring ``hi`` (from ``P0 = Phi(hi, 0)`` to ``w^k P0``) misses the ray from 0
     at the angle ``arg P0 + pi + k pi/n``, proven with tubes refined along the cells' diagonals. Then the arc's
     argument increases by exactly ``2 pi k/n`` (the only value of ``2 pi k/n + 2 pi j`` within pi of
-    ``k pi/n``), and the closed ring (the n rotations of the arc) winds exactly k times around 0."""
+    ``k pi/n``), and the closed ring (the n rotations of the arc) winds exactly k times around 0. ``K`` bounds
+    the derivative error along the diagonal direction (1, 1) in the ``norm`` of ``W c`` (:func:`.derived.net_size`)."""
     from flint import acb, acb_mat, arb, fmpq
+
+    from .derived import net_size
 
     P0 = phi(hi, 0)
     rho = -P0 * acb(fmpq(k, n)).exp_pi_i()
@@ -337,11 +371,7 @@ def winding_of_arc(n, hi, net, phi, fam, B, W, K, idx, max_depth, k: int = 1) ->
         stack = [(0, acb_mat([[z] for z in net(hi - 1 - i, i)]))]
         while stack:
             m, u = stack.pop()
-            z = WBt * u
-            rad = arb(0)
-            for t in range(z.nrows()):
-                rad = rad.max(abs(z[t, 0])) if t else abs(z[t, 0])
-            rad = Ka * rad
+            rad = Ka * net_size(WBt * u, norm)
             if _tube_misses_ray(u[i0, 0], u[i3, 0], rad, rho):
                 continue
             if m >= max_depth:
