@@ -35,9 +35,17 @@ W^{-1}||_2 N(c)`` for the second; both hold for complex ``c`` since the matrices
 ``K* <= max_w (a_{e,w} + q_w K*)``; for the maximising leaf ``K* (1 - q_w) <= a_{e,w}``, so
 ``K* <= max_w a_{e,w}/(1 - q_w) = K_e``. (iii) *Derivatives*: for x in the closed cell Q take nested cells
 ``Q = Q_k ⊃ Q_{k+1} ⊃ ...`` containing x with digits sigma; ``d_m(Q_m) - d_k(Q) = 2^k sum ...`` telescopes to
-``2^k L_sigma(c(u_k))`` in the limit, and ``d_m(Q_m) -> D_e f(x)`` because the regular scheme is C^1 (a certified
-Hölder exponent > 1, Dyn–Levin 2002) and ``d_m(Q_m)`` is the mean of ``D_e f`` over an edge of ``Q_m``
-(an interpolating scheme). So ``|D_e f(x) - d_k(Q)| <= 2^k K_e N(c(u_k))``.
+the partial sums of ``2^k L_sigma(c(u_k))``. By (i) the increments ``2^m |h . c(u_m)|`` decay geometrically,
+uniformly over all digit sequences and all nets of bounded size, so the edge differences ``d_m`` (the
+divided-difference nets along ``e``, read as functions on ``2^-m Z^2``) converge uniformly; neighbouring edges
+of level m differ by a combination of second differences, ``2^m`` times ``c(u_m)``, which decays the same way,
+so the limit ``g`` is continuous. The regular scheme converges (certified: a Hölder exponent > 1 is certified
+for it, which needs ``JSR(T|V_1) < 1`` and more, Dyn–Levin 2002), so the nets tend uniformly to the limit f,
+and along a lattice segment ``f(y + t e) - f(y)`` is the limit of sums of ``2^-m d_m`` over its edges, i.e. of
+Riemann sums of ``g``: ``f(y + t e) - f(y) = int_0^t g(y + s e) ds``, first for dyadic y and t, then for all by
+continuity. So ``D_e f = g`` and ``d_m(Q_m) -> D_e f(x)``, whence ``|D_e f(x) - d_k(Q)| <= 2^k K_e N(c(u_k))``.
+(No interpolation is needed; for an interpolating scheme ``d_m(Q_m)`` is moreover the mean of ``D_e f`` over
+an edge of ``Q_m``.)
 
 Why it is sharp: the first ``|w|`` defects are summed with their signs (no triangle inequality per step), the
 tail is charged at the rate of the whole word (in floats, products of the second-difference operators have
@@ -131,6 +139,8 @@ def _ub(x) -> Fraction:
         m, ex = y.man_exp()
         return Fraction(int(m)) * Fraction(2) ** int(ex)
 
+    if not x.is_finite():
+        raise AnalysisError("a norm bound overflowed (an infinite or undefined ball): no bound proven")
     return exact(x.mid()) + exact(x.rad())
 
 
@@ -162,10 +172,14 @@ def defect_sum_bound(a, *, W=None, holder=None, theta=THETA, max_depth: int = MA
     theta = Fraction(theta)
     if not 0 < theta < 1:
         raise AnalysisError("the leaf threshold theta must lie in (0, 1)")
+    if max_depth < 1:
+        raise AnalysisError("the prefix tree needs max_depth >= 1")
     if holder is None:
         holder = holder_exponent(a)
     defects = {e: defect_functionals(a, e) for e in DIRECTIONS}
     fam = defects[DIRECTIONS[0]]["family"]
+    if tuple(holder.witness.get("omega", ())) != tuple(fam.omega):
+        raise AnalysisError("the Hölder exponent given is not the one of this mask (another invariant support)")
     mats = [X.transpose() for X in fam.matrices]
     if W is None:
         W = ellipsoid_coordinates(mats)

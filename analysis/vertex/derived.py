@@ -25,8 +25,10 @@ Algorithm
    ``||P_w||_inf <= r^|w|`` is proven. Every word then splits into leaves and one internal node, so
    ``||W A_w W^{-1}||_inf <= C r^|w|`` with ``C = max`` over internal nodes of ``||P_w|| / r^|w|`` (an upper
    bound, rounded up to a rational).
-3. *Error bound.* With ``2 r < 1`` and ``f`` in C^1 (so ``d_m(Q_m) -> D_e f(x)``: for an interpolating
-   scheme ``d_m(Q_m)`` is the mean of ``D_e f`` over an edge of ``Q_m``), summing step 1 with step 2::
+3. *Error bound.* With ``2 r < 1`` the increments of step 1 decay geometrically, so the divided-difference
+   nets converge uniformly to a continuous ``g``; the scheme converges (its Hölder exponent > 1 is certified),
+   and Riemann sums give ``f(y + t e) - f(y) = int_0^t g``, so ``d_m(Q_m) -> D_e f(x)`` (the argument is
+   written out in :mod:`analysis.vertex.defectsum`). Summing step 1 with step 2::
 
        |D_e f(x) - d_k(Q)| <= 2^k K ||W c(u_k)||_inf,   K = H C / (1 - 2 r),   H = max_eps ||h_eps W^{-1}||_1
 
@@ -252,7 +254,7 @@ def derivative_error_bound(a, r, *, W=None, holder=None, max_nodes: int = MAX_NO
     mats = [X.transpose() for X in fam.matrices]
     if W is None:
         W = ellipsoid_coordinates(mats)
-    wit: dict[str, Any] = {"r": r, "W": W, "holder": holder}
+    wit: dict[str, Any] = {"r": r, "W": W, "holder": holder, "norm": "inf"}
     prov = {"method": "K = H C / (1 - 2r): defect functionals (exact) summed along nested cells with the "
                       "product-tree contraction of the second differences (Zorin 2000)"}
     if smoothness_verdicts(holder).get(1) is not True:
@@ -356,7 +358,9 @@ def jacobian_sign_on_cell(a, net, bound: Result, *, max_depth: int = 6, max_cell
 
     K, W, fam, B, omega, idx = frame if frame is not None else cell_frame(a, bound, (1, 0))
     K1, K2 = (bound.witness.get("K_by_direction", {}).get(e, K) for e in ((1, 0), (0, 1)))
-    norm = bound.witness.get("norm", "inf")
+    norm = bound.witness["norm"]                 # the norm of W c the constants were proven in ("inf" or "2")
+    if frame is not None and frame[1] != bound.witness["W"]:
+        raise AnalysisError("the frame's coordinates W are not the bound's")
     if len(net) != len(omega):
         raise AnalysisError(f"the local net has {len(net)} values, the invariant support {len(omega)} points")
     i0, i1, i2 = idx[(0, 0)], idx[(-1, 0)], idx[(0, -1)]

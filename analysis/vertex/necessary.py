@@ -238,7 +238,7 @@ def _winding(make, inner: LocalRules, n: int, lead: dict, prov: dict) -> Result:
     try:
         v = eigenvector(big, n, top.ball.real, k)
         phi, net = eigenfunction_nets(big, n, v[1:] if k == 0 else v, omega, k)
-        winds = winding_of_arc(n, HI, net, phi, fam, B, W, K, idx, 8, k)
+        winds = winding_of_arc(n, HI, net, phi, fam, B, W, K, idx, 8, k, norm=bound.witness["norm"])
     except AnalysisError as e:
         return _undecided(f"the eigenfunction of block {k} could not be enclosed ({e})", prov)
     finally:
