@@ -176,16 +176,18 @@ def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
 @lru_cache(maxsize=512)
 def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
     """:func:`taylor_rows` of a mask and its limits (a pure function of them, remembered)."""
-    rows = []
+    rows, done = [], {}                     # a symmetric mask repeats its coefficients: one expansion each
     try:
         for c, c0 in zip(mask, limits):
             if H not in c.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue
-            ser = _series(as_expr(c), J)
-            if sp.simplify(ser[0] - c0) != 0:
-                return None
-            rows.append((sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:]))
+            if (c, c0) not in done:
+                ser = _series(as_expr(c), J)
+                if sp.simplify(ser[0] - c0) != 0:
+                    return None
+                done[c, c0] = (sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:])
+            rows.append(done[c, c0])
     except (_Unsupported, ZeroDivisionError, TypeError, ValueError):
         return None
     return tuple(rows)
