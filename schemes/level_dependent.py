@@ -69,9 +69,19 @@ T = sp.Symbol("t", positive=True)
 _Z = sp.Symbol("z")
 
 
+def _once(f, xs) -> list:
+    """``[f(x) for x in xs]`` with ``f`` applied once per distinct ``x`` (the masks are symmetric: each
+    coefficient appears twice, and ``simplify``/``factor`` take a large part of building an entry)."""
+    done: dict = {}
+    for x in xs:
+        if x not in done:
+            done[x] = f(x)
+    return [done[x] for x in xs]
+
+
 def _from_symbol(expr, slug, title, v, shift=2) -> LevelDependentScheme:
     num = sp.Poly(sp.expand(expr * _Z ** shift), _Z)
-    coeffs = [sp.simplify(c) for c in reversed(num.all_coeffs())]
+    coeffs = _once(sp.simplify, list(reversed(num.all_coeffs())))
     return LevelDependentScheme(tuple(coeffs), -shift, (T,), slug=slug, title=title,
                                 source="exponential B-spline (Dyn-Levin 1995; Romani 2009)",
                                 notes=f"v_n = {v.subs(H, 2 ** -sp.Symbol('n'))}",
@@ -133,7 +143,7 @@ def exponential_bspline(m: int, d: int, kind: str) -> LevelDependentScheme:
     s = (d + 1) * (m - 1) // 2
     num = sp.expand(box ** (d - 1) * P)
     den = sp.Integer(m) ** (d - 2) * P.subs(_Z, 1)
-    coeffs = [sp.factor(num.coeff(_Z, i) / den) for i in range((d + 1) * (m - 1) + 1)]
+    coeffs = _once(sp.factor, [num.coeff(_Z, i) / den for i in range((d + 1) * (m - 1) + 1)])
     name = _NAMES[m]
     return LevelDependentScheme(
         tuple(coeffs), -s, (T,), slug=f"{name}-exp-bspline-{d}-{kind}",

@@ -39,15 +39,15 @@ def test_generates_its_exponentials_mpmath(slug):
     t = mpmath.mpf(7) / 10
     lams = [mpmath.mpc(0, 1) * t, mpmath.mpc(0, -1) * t] if slug.endswith("trig") else [t, -t]
     sym = sum(c * Z ** (s.start + k) for k, c in enumerate(s.mask))
+    f = sp.lambdify([Z, H, T], sym, "mpmath")          # a^n(z) as a function of z, h = m^-n and t
+    derivatives = [sp.lambdify([Z, H, T], sp.diff(sym, Z, r), "mpmath") for r in range(d - 1)]
     for n in (0, 1, 4):
-        f = sp.lambdify([Z, H, T], sym, "mpmath")
         h = mpmath.mpf(1) / m ** n
         for j in range(1, m):
             eps = mpmath.exp(2j * mpmath.pi * j / m)
             for lam in lams:
                 assert abs(f(eps * mpmath.exp(-lam * h / m), h, t)) < mpmath.mpf(10) ** -50
-            for r in range(d - 1):          # frequency 0 with multiplicity d - 1: a^n and its derivatives vanish
-                g = sp.lambdify([Z, H, T], sp.diff(sym, Z, r), "mpmath")
+            for g in derivatives:           # frequency 0 with multiplicity d - 1: a^n and its derivatives vanish
                 assert abs(g(eps, h, t)) < mpmath.mpf(10) ** -50
         assert abs(f(1, h, t) - m) < mpmath.mpf(10) ** -50           # a^n(1) = m
     name = {3: "ternary", 4: "quaternary"}[m]

@@ -127,12 +127,14 @@ def _constraints(m: int, N: int):
 
 
 def _solve(M, v):
-    """Exact solution of the square system ``M x = v`` (sympy, rationals), or None if singular."""
-    S = sp.Matrix([[sp.Rational(x.numerator, x.denominator) for x in row] for row in M])
+    """Exact solution of the square system ``M x = v`` (FLINT ``fmpq_mat``, rationals), or None if singular."""
+    from flint import fmpq, fmpq_mat
+
+    S = fmpq_mat([[fmpq(x.numerator, x.denominator) for x in row] for row in M])
     if S.det() == 0:
         return None
-    x = S.LUsolve(sp.Matrix([sp.Rational(t.numerator, t.denominator) for t in v]))
-    return [Fraction(int(t.p), int(t.q)) for t in x]
+    x = S.solve(fmpq_mat([[fmpq(t.numerator, t.denominator)] for t in v]))
+    return [Fraction(int(x[i, 0].p), int(x[i, 0].q)) for i in range(x.nrows())]
 
 
 def least_norm_correction(centre: Sequence[Fraction], radius: Sequence[Fraction], N: int):

@@ -41,10 +41,10 @@ R. P. Brent, H. T. Kung, *Fast algorithms for manipulating formal power series*,
 
 from __future__ import annotations
 
-from fractions import Fraction
 from functools import lru_cache
 
 import sympy as sp
+from flint import fmpq
 
 from .level_dependent import H, LevelDependentScheme
 from ..algebra.reader import as_expr
@@ -57,23 +57,23 @@ class _Unsupported(Exception):
 
 
 def _rational(*series) -> bool:
-    """Every coefficient a sympy Rational: the recurrences then run in exact ``Fraction`` arithmetic (the same
+    """Every coefficient a sympy Rational: the recurrences then run in exact FLINT rationals (``fmpq``: the same
     numbers as sympy's, much faster)."""
     return all(x.is_Rational for s in series for x in s)
 
 
 def _fractions(s) -> list:
-    return [Fraction(int(x.p), int(x.q)) for x in s]
+    return [fmpq(int(x.p), int(x.q)) for x in s]
 
 
 def _rationals(s) -> list:
-    return [sp.Rational(x.numerator, x.denominator) for x in s]
+    return [sp.Rational(int(x.p), int(x.q)) for x in s]
 
 
 def _mul(a, b, J):
     if _rational(a[:J], b[:J]):
         fa, fb = _fractions(a[:J]), _fractions(b[:J])
-        return _rationals(sum((fa[i] * fb[k - i] for i in range(k + 1)), Fraction(0)) for k in range(J))
+        return _rationals(sum((fa[i] * fb[k - i] for i in range(k + 1)), fmpq(0)) for k in range(J))
     return [sp.expand(sum((a[i] * b[k - i] for i in range(k + 1)), sp.Integer(0))) for k in range(J)]
 
 
@@ -85,7 +85,7 @@ def _inv(a, J):
         fa = _fractions(a[:J])
         v = [1 / fa[0]]
         for k in range(1, J):
-            v.append(-sum((fa[i] * v[k - i] for i in range(1, k + 1)), Fraction(0)) / fa[0])
+            v.append(-sum((fa[i] * v[k - i] for i in range(1, k + 1)), fmpq(0)) / fa[0])
         return _rationals(v)
     v = [1 / a0]
     for k in range(1, J):
@@ -97,9 +97,9 @@ def _exp0(w, J):
     """``exp(w)`` for ``w(0) = 0``."""
     if _rational(w[:J]):
         fw = _fractions(w[:J])
-        v = [Fraction(1)]
+        v = [fmpq(1)]
         for k in range(1, J):
-            v.append(sum((i * fw[i] * v[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
+            v.append(sum((i * fw[i] * v[k - i] for i in range(1, k + 1)), fmpq(0)) / k)
         return _rationals(v)
     v = [sp.Integer(1)]
     for k in range(1, J):
@@ -111,10 +111,10 @@ def _cos_sin0(w, J, sign):
     """``(cos w, sin w)`` (``sign = -1``) or ``(cosh w, sinh w)`` (``sign = +1``) for ``w(0) = 0``."""
     if _rational(w[:J]):
         fw = _fractions(w[:J])
-        c, s = [Fraction(1)], [Fraction(0)]
+        c, s = [fmpq(1)], [fmpq(0)]
         for k in range(1, J):
-            c.append(sign * sum((i * fw[i] * s[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
-            s.append(sum((i * fw[i] * c[k - i] for i in range(1, k + 1)), Fraction(0)) / k)
+            c.append(sign * sum((i * fw[i] * s[k - i] for i in range(1, k + 1)), fmpq(0)) / k)
+            s.append(sum((i * fw[i] * c[k - i] for i in range(1, k + 1)), fmpq(0)) / k)
         return _rationals(c), _rationals(s)
     c, s = [sp.Integer(1)], [sp.Integer(0)]
     for k in range(1, J):
@@ -176,16 +176,18 @@ def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
 @lru_cache(maxsize=512)
 def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
     """:func:`taylor_rows` of a mask and its limits (a pure function of them, remembered)."""
-    rows = []
+    rows, done = [], {}                     # a symmetric mask repeats its coefficients: one expansion each
     try:
         for c, c0 in zip(mask, limits):
             if H not in c.free_symbols:
                 rows.append(tuple(sp.Integer(0) for _ in range(J)))
                 continue
-            ser = _series(as_expr(c), J)
-            if sp.simplify(ser[0] - c0) != 0:
-                return None
-            rows.append((sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:]))
+            if (c, c0) not in done:
+                ser = _series(as_expr(c), J)
+                if sp.simplify(ser[0] - c0) != 0:
+                    return None
+                done[c, c0] = (sp.Integer(0),) + tuple(sp.factor(sp.simplify(x)) for x in ser[1:])
+            rows.append(done[c, c0])
     except (_Unsupported, ZeroDivisionError, TypeError, ValueError):
         return None
     return tuple(rows)

@@ -454,15 +454,17 @@ class LevelDependentScheme:
 @lru_cache(maxsize=512)
 def _limits_of(mask: tuple) -> tuple:
     """The limits ``a_k = lim_{h -> 0} a^n_k`` of the coefficients (exact; :class:`AnalysisError` when one is not finite)."""
-    out = []
+    out, done = [], {}                      # a symmetric mask repeats its coefficients: one limit each
     for c in mask:
         if H not in c.free_symbols:
             out.append(sp.simplify(c))
             continue
-        c0 = sp.simplify(sp.limit(c, H, 0, "+"))
-        if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
-            raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
-        out.append(c0)
+        if c not in done:
+            c0 = sp.simplify(sp.limit(c, H, 0, "+"))
+            if c0.has(sp.oo, -sp.oo, sp.zoo, sp.nan) or isinstance(c0, sp.Limit):
+                raise AnalysisError(f"the coefficient {c} has no finite limit as n -> oo")
+            done[c] = c0
+        out.append(done[c])
     return tuple(out)
 
 
