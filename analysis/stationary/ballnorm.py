@@ -9,9 +9,9 @@ Algorithm
 The coefficients of ``a`` are read once (:func:`mask_terms`); on a box the ball ``P`` containing it is
 substituted into each, and the product for ``L`` extends the one for ``L - 1`` by the factor ``a(z^(2^(L-1)))``
 (the same balls a separate computation for that ``L`` would give). ``N_L < 1`` is an Arb comparison: True only
-when proven for the whole ball. Before the Arb products, a float screen at the box's midpoint ``t``: when ``N_L(t) >= 1`` is certain
-for every ``L`` (float residue sums lowered by an a-priori rounding bound), no ball bound can be below 1 and the
-answer is False without them (most boxes near a true C^j boundary are of this kind).
+when proven for the whole ball. Before the Arb products, a float screen at the box's midpoint ``t``: when
+``N_L(t) >= 1`` is certain for every ``L`` (float residue sums lowered by an a-priori rounding bound), no ball
+bound can be below 1 and the answer is False without them (most boxes near a true C^j boundary are of this kind).
 
 Examples
 --------
@@ -93,7 +93,9 @@ def _fails_at_a_point(terms: list, box: tuple, max_L: int) -> bool:
             vals.append(sum((num / den) * t ** e for e, num, den in c))
             absv.append(sum(abs(num / den) * abs(t) ** e for e, num, den in c))
     a, A = np.array(vals), np.array(absv)
-    if not (np.isfinite(a).all() and np.isfinite(A).all()) or len(a) * max_L > 2000 or len(a) * 2 ** max_L > 10 ** 6:
+    if not (np.isfinite(a).all() and np.isfinite(A).all()):
+        return False
+    if len(a) * max_L > 2000 or len(a) * 2 ** max_L > 10 ** 6:      # beyond the sizes the error bound covers
         return False
     prod, aprod = a, A
     for L in range(1, max_L + 1):
