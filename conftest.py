@@ -4,6 +4,8 @@ Compiled bytecode is kept even where the environment sets ``PYTHONDONTWRITEBYTEC
 imports every module in each pytest-xdist worker and in hundreds of ``subdiv`` subprocesses, and
 without ``__pycache__`` each of them compiles the sources again (about 12 s of CPU per worker for
 the collection alone). The files go to ``__pycache__`` folders, which git ignores.
+
+BLAS runs one thread per process (below): the suite already runs one process per core.
 """
 
 import os
@@ -11,3 +13,11 @@ import sys
 
 sys.dont_write_bytecode = False
 os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
+# One BLAS thread per test process (set before numpy is imported; inherited by the xdist workers and the
+# `subdiv` subprocesses). The engine's float products are small to mid-sized (a 6139 x 11 by 11 x 11 Bernstein
+# screen is the largest common one); from that size on OpenBLAS starts a second thread, which on this 2-core
+# machine, with the other worker busy, spins: 7.6 ms of CPU per such product instead of 0.6 ms single-threaded.
+# A threaded product can differ from the one-thread product in the last bit of a few entries (rows at the
+# threads' boundary); the engine's float products only screen (margins of 1e-9 and more) before exact or Arb
+# decisions, and one thread computes what a one-core machine computes. Golden files: unchanged.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")

@@ -35,3 +35,19 @@ def test_a_claim_across_the_true_end_is_refuted_by_a_certified_point_beyond_it()
     assert v.status == "refuted", v.summary   # routes lies below w*; the counterexample comes from the strip
     q = sp.Rational(v.numbers[0].value)
     assert 32 * q**3 + 4 * q - 1 > 0 and q < sp.Rational(1, 5)
+
+
+def test_the_float_screen_of_a_box_skips_only_boxes_the_arb_norm_test_fails(monkeypatch):
+    """Route 3's boxes: the float screen at the midpoint (``_fails_at_a_point``) answers "not below 1" only
+    where the Arb products give that answer too, so every box is decided as by the Arb test alone."""
+    from analysis.stationary import ballnorm
+    from analysis.stationary.difference import difference_symbol
+
+    d = difference_symbol(FOUR, 2)
+    terms = ballnorm.mask_terms(d, W)
+    boxes = [(sp.Rational(i, 80), sp.Rational(i + 1, 80)) for i in range(20)]      # [0, 1/4]: C^1 ends at 0.19273
+    screened = [ballnorm._fails_at_a_point(terms, box, 8) for box in boxes]
+    monkeypatch.setattr(ballnorm, "_fails_at_a_point", lambda *args: False)
+    arb = [ballnorm.norm_below_one_on_box(terms, d.start, box, 8) for box in boxes]
+    assert any(screened) and any(arb)               # both answers occur
+    assert not any(s and a for s, a in zip(screened, arb))

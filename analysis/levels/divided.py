@@ -52,6 +52,19 @@ def _exact_zero(expr: sp.Expr) -> bool:
     e = as_expr(expr)
     if e == 0:
         return True
+    if e not in _ZERO_PROOFS:
+        if len(_ZERO_PROOFS) >= 256:
+            _ZERO_PROOFS.clear()
+        _ZERO_PROOFS[e] = _prove_zero(e)
+    return _ZERO_PROOFS[e]
+
+
+#: the answers of :func:`_exact_zero` by expression (bounded): generation, reproduction and the claims
+#: beside them ask about the same sub-symbol identities, and each simplification costs up to seconds
+_ZERO_PROOFS: dict = {}
+
+
+def _prove_zero(e: sp.Expr) -> bool:
     if _nonzero_somewhere(e):
         return False        # no simplification can prove it zero: skip them (seconds each)
     for f in (lambda x: sp.simplify(x.rewrite(sp.exp)), lambda x: sp.simplify(x),

@@ -34,7 +34,10 @@ def _chebyshev_rational_params(rng, count: int, levels: int, hyperbolic_share: f
 class _SymbolicRuns:
     """Both rules on *symbolic* data ``Q_i`` and symbolic edge parameters ``v_e = 1 - u_e``
     (the engine's :func:`step` on sympy object arrays, exact square-root update), computed on
-    demand: ``run(rule, steps)``, and seed 001 on the reversed polygon, reversed back."""
+    demand: ``run(rule, steps)``, and seed 001 on the reversed polygon, reversed back. Each run
+    continues the longest one already computed for its rule and direction (the symbolic steps are
+    the costly part; a run of ``levels`` steps is asked for more than once, and starts with the
+    one-step run)."""
 
     def __init__(self, d: int, n: int, closed: bool):
         self.d, self.closed = d, closed
@@ -43,11 +46,15 @@ class _SymbolicRuns:
         self.Q[:] = sp.symbols(f"Q0:{n}")
         self.V = np.empty(edges, dtype=object)
         self.V[:] = sp.symbols(f"v0:{edges}", positive=True)
+        self._done: dict = {}              # (rule, reverse) -> [(P, v) after 0, 1, 2, ... steps]
 
     def run(self, rule: str, steps: int, reverse: bool = False):
-        P, v = (self.Q[::-1].copy(), self.V[::-1].copy()) if reverse else (self.Q, self.V)
-        for _ in range(steps):
-            P, v = step(P, v, self.d, closed=self.closed, rule=rule, sqrt=_SYMPY_SQRT)
+        done = self._done.setdefault((rule, reverse), [(self.Q[::-1].copy(), self.V[::-1].copy()) if reverse
+                                                       else (self.Q, self.V)])
+        while len(done) <= steps:
+            P, v = done[-1]
+            done.append(step(P, v, self.d, closed=self.closed, rule=rule, sqrt=_SYMPY_SQRT))
+        P = done[steps][0]
         return list(P[::-1]) if reverse else list(P)
 
 

@@ -132,6 +132,33 @@ def _domain_transitions(a: LaurentSymbol, K):
     return _TRANSITIONS[key]
 
 
+_CROSSINGS: dict = {}
+
+
+def _crossing_polynomial(a: LaurentSymbol, K, p: sp.Symbol, word: tuple, ev):
+    """``det(T_word(p) - ev I)`` over ``QQ[p]`` as a polynomial in ``p`` with integer coefficients (``None``
+    when the coefficients are not rational): it depends on the symbol, the word and ``ev`` only, so the
+    boundaries of every C^j set of a family (each ``_locate`` tries the same short words) compute it once."""
+    key = (a, K, p, word, ev)
+    if key not in _CROSSINGS:
+        if len(_CROSSINGS) >= 512:
+            _CROSSINGS.clear()
+        T = _domain_transitions(a, K)[1]
+        P = T[word[0]]
+        for i in word[1:]:
+            P = P * T[i]
+        # the determinant over the polynomial ring QQ[p] of the coefficients, products taken there:
+        # exact, and far faster than a symbolic Berkowitz determinant of expression entries
+        M = P - DomainMatrix.eye(P.shape[0], K) * K.from_sympy(ev)
+        try:
+            # the numerator with integer coefficients (as sp.fraction(sp.together(.)) gives it)
+            num = sp.Poly.from_dict(dict(M.det().items()), p, domain=sp.QQ).clear_denoms()[1]
+        except (sp.polys.polyerrors.CoercionFailed, sp.PolynomialError):
+            num = None
+        _CROSSINGS[key] = num
+    return _CROSSINGS[key]
+
+
 def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int], lo, hi):
     """Exact parameter values in (lo, hi) where the product T_word(p) has eigenvalue +-2^{(k-j)L}."""
     if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ):
@@ -139,22 +166,12 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
     K = a.domain
     if tuple(K.symbols) != (p,):
         return []           # other free symbols: no exact crossing in p alone (bisection decides)
-    T = _domain_transitions(a, K)
-    N = T[0]
+    N = _domain_transitions(a, K)[0]
     theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
-    P = T[1][word[0]]
-    for i in word[1:]:
-        P = P * T[1][i]
-    eye = DomainMatrix.eye(P.shape[0], K)
     out = []
     for sgn in (1, -1):
-        # the determinant over the polynomial ring QQ[p] of the coefficients, products taken there:
-        # exact, and far faster than a symbolic Berkowitz determinant of expression entries
-        M = P - eye * K.from_sympy(sgn * theta)
-        try:
-            # the numerator with integer coefficients (as sp.fraction(sp.together(.)) gives it)
-            num = sp.Poly.from_dict(dict(M.det().items()), p, domain=sp.QQ).clear_denoms()[1]
-        except (sp.polys.polyerrors.CoercionFailed, sp.PolynomialError):
+        num = _crossing_polynomial(a, K, p, tuple(word), sgn * theta)
+        if num is None:
             return out      # algebraic coefficients: no exact crossing over QQ (bisection decides)
         if num.is_zero or num.degree() < 1 or num.count_roots(lo, hi) == 0:
             continue
@@ -377,9 +394,26 @@ def _simple_rational_near(r, side: int, tol_q):
 # C^j ranges from exact norm sets and eigenvalue sets (any arity)
 # --------------------------------------------------------------------------------------------
 
+_VIOLATIONS: dict = {}
+
+
 def _violation_set(a: LaurentSymbol, m: int, j: int, p: sp.Symbol, k: int) -> tuple[sp.Set, list]:
     """``{p : some T_eps(c(p)) has a real eigenvalue r(p) with |r(p)| >= m^(k-j)}`` from the linear
-    factors (in lambda) of the characteristic polynomials; nonlinear factors are listed, not used."""
+    factors (in lambda) of the characteristic polynomials; nonlinear factors are listed, not used.
+
+    Computed once per process for the same arguments (bounded; the set and the factors are immutable
+    sympy objects): a smoothness profile and the claims beside it ask for the same family and ``j``."""
+    key = (a, m, j, p, k)
+    if key not in _VIOLATIONS:
+        if len(_VIOLATIONS) >= 64:
+            _VIOLATIONS.clear()
+        V, unused = _violation_set_of(a, m, j, p, k)
+        _VIOLATIONS[key] = (V, tuple(unused))
+    V, unused = _VIOLATIONS[key]
+    return V, list(unused)
+
+
+def _violation_set_of(a: LaurentSymbol, m: int, j: int, p: sp.Symbol, k: int) -> tuple[sp.Set, list]:
     lam = sp.Symbol("lambda")
     c = factor_out(a, k + 1, arity=m) / m
     theta = sp.Integer(m) ** (k - j)

@@ -161,8 +161,20 @@ def _restricted(c: LaurentSymbol, p: sp.Symbol, arity: int = 2):
 def _strip_of(am: LaurentSymbol, p: sp.Symbol, arity: int = 2) -> ParametricStrip:
     """The restricted transition matrices of ``c = (1/m) a_{j+1}`` as a :class:`~analysis.jsr.parametric.ParametricStrip`."""
     c = LaurentSymbol.from_mask([sp.expand(as_expr(x) / arity) for x in am.mask], start=am.start)
-    R, mus, J = _restricted(c, p, arity)
-    return ParametricStrip(R, p, mus, J)
+    key = (c, p, arity)
+    if key not in _RESTRICTED:
+        if len(_RESTRICTED) >= 32:
+            _RESTRICTED.clear()
+        R, mus, J = _restricted(c, p, arity)
+        _RESTRICTED[key] = (tuple(M.copy() for M in R), tuple(mus), None if J is None else J.copy())
+    R, mus, J = _RESTRICTED[key]
+    # fresh copies: sympy matrices are mutable and each strip owns its own
+    return ParametricStrip([M.copy() for M in R], p, list(mus), None if J is None else J.copy())
+
+
+#: :func:`_restricted` by symbol, parameter and arity (bounded): the strips of one C^j set, and the C^j sets
+#: of a profile next to the same ends, restrict the same transition matrices
+_RESTRICTED: dict = {}
 
 
 def close_strip(am: LaurentSymbol, p: sp.Symbol, lo, hi, *, lo_open: bool = False, hi_open: bool = False,

@@ -74,6 +74,8 @@ from ..algebra.reader import as_expr
 
 
 def _fr(q) -> Fraction:
+    if isinstance(q, Fraction):
+        return q
     q = sp.Rational(q)
     return Fraction(int(q.p), int(q.q))
 
@@ -104,12 +106,19 @@ def _bernstein_matrix(u: Fraction, v: Fraction, n: int):
 
 def _bernstein_matrix_float(u: float, v: float, n: int) -> np.ndarray:
     if n not in _WF_CACHE:
-        _WF_CACHE[n] = np.array([[comb(j, k) / comb(n, k) if k <= j else 0.0 for j in range(n + 1)]
-                                 for k in range(n + 1)])
+        W = np.array([[comb(j, k) / comb(n, k) if k <= j else 0.0 for j in range(n + 1)] for k in range(n + 1)])
+        # the Taylor-shift pattern: binomials C(e, k) (as Python converts them in int * float) and the
+        # index e - k of the power of u, on and below the diagonal
+        e, k = np.indices((n + 1, n + 1))
+        B = np.array([[float(comb(i, j)) if j <= i else 0.0 for j in range(n + 1)] for i in range(n + 1)])
+        _WF_CACHE[n] = (W, B, np.where(k <= e, e - k, 0), k <= e)
+    W, B, shift, lower = _WF_CACHE[n]
     h = v - u
-    T = np.array([[comb(e, k) * u ** (e - k) * h ** k if k <= e else 0.0 for k in range(n + 1)]
-                  for e in range(n + 1)])
-    return T @ _WF_CACHE[n]
+    # T[e, k] = C(e, k) * u^(e-k) * h^k, the same float operations in the same order as element by element
+    up = np.array([u ** i for i in range(n + 1)])
+    hp = np.array([h ** i for i in range(n + 1)])
+    T = np.where(lower, (B * up[shift]) * hp[None, :], 0.0)
+    return T @ W
 
 
 class ParametricNorm:

@@ -349,6 +349,25 @@ def _roots_of_factor(f: sp.Poly, K, parametric: bool) -> list[sp.Expr] | None:
     return None
 
 
+#: the factorizations of characteristic polynomials already computed (a Poly and its factors are immutable;
+#: keyed on the polynomial with its domain, so the same one is factored once per process)
+_FACTORED: dict = {}
+
+
+def _factor_list(P: sp.Poly):
+    """``P.factor_list()``, remembered (bounded) for the polynomial ``P`` over its domain: the claims of a
+    paper ask for the eigenvalues of the same local subdivision matrix again and again, and factoring a
+    parametric characteristic polynomial (Wang's algorithm over ``QQ[params]``) is the costly step."""
+    key = (P, P.domain)
+    if key not in _FACTORED:
+        if len(_FACTORED) >= 64:
+            _FACTORED.clear()
+        lc, factors = P.factor_list()
+        _FACTORED[key] = (lc, tuple(factors))
+    lc, factors = _FACTORED[key]
+    return lc, list(factors)
+
+
 def local_eigenvalues(a: LaurentSymbol, window: Sequence[int] | None = None, *, arity: int = 2) -> Result:
     """The exact eigenvalues, with multiplicities, of the local subdivision matrix of ``a``.
 
@@ -419,7 +438,7 @@ def local_eigenvalues(a: LaurentSymbol, window: Sequence[int] | None = None, *, 
     parametric = not a.is_numeric
     cp = M.charpoly()
     P = sp.Poly.from_list(cp, LAMBDA, domain=K)
-    lc, factors = P.factor_list()
+    lc, factors = _factor_list(P)
     eigen: dict[sp.Expr, int] = {}
     implicit: list[tuple[sp.Expr, int]] = []
     for f, m in factors:

@@ -192,10 +192,12 @@ class EigenvalueInequality(Kind):
         dom = self.scheme.domains.get(p.name)
         return (dom.lo, dom.hi) if dom is not None else (-sp.oo, sp.oo)
 
-    def exact(self):
-        """(the exact set, the eigenvalue factors, the local-eigenvalue Result)."""
+    def exact(self, res=None):
+        """(the exact set, the eigenvalue factors, the local-eigenvalue Result); ``res``: that Result when
+        already computed (:func:`~analysis.stationary.transition.local_eigenvalues` of the claim's scheme)."""
         a, p, j = self.symbol(), self.single_parameter(), self.get("j")
-        res = local_eigenvalues(a, window=self.get("window"))
+        if res is None:
+            res = local_eigenvalues(a, window=self.get("window"))
         chi = sp.Poly(sp.expand(res.witness["charpoly"]), LAMBDA, p)
         dominant = sp.Poly(sp.prod([LAMBDA - sp.Rational(1, 2 ** i) for i in range(j + 1)]), LAMBDA, p)
         g, rem = sp.div(chi, dominant)
@@ -232,7 +234,7 @@ class EigenvalueInequality(Kind):
                                                                           "square roots, exact moduli at the sample points"),
                                text=f"{p.name} in {S}"))
         else:
-            S, factors, res = self.exact()
+            S, factors, res = self.exact(res)
             dom = ", ".join(sp.sstr(sp.Rational(1, 2 ** i)) for i in range(j + 1))
             if S is None:
                 return self.refuted(f"{dom} are not all eigenvalues of the local matrix of {self.where_text()} "
