@@ -218,9 +218,14 @@ def _alternative_reading(args):
         m = ApproximateMask(mask, start, radius=radius)
         return (m, "mask (approximate reading)", "scheme: mask   (" + m.description().split(";")[0] + ")")
     from ..algebra.closed_form import ClosedFormMask, needs_ball_route
+    from ..algebra.symbol import parse_coefficient
 
-    if needs_ball_route(mask):
-        cf = ClosedFormMask(mask, start)
+    try:        # read once for both (reading the D8 radicals takes a while); unreadable: the exact route says why
+        exprs = [parse_coefficient(c) for c in mask]
+    except AnalysisError:
+        return None
+    if needs_ball_route(exprs):
+        cf = ClosedFormMask(exprs, start)
         return cf, "mask (closed form)", "scheme: mask   (closed form; certified ball route)"
     return None
 

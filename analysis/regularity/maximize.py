@@ -220,6 +220,12 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     return best
 
 
+def _fmpq_of(x: Fraction):
+    import flint
+
+    return flint.fmpq(x.numerator, x.denominator)
+
+
 def _fmpq_poly(q: sp.Poly):
     import flint
 
@@ -262,19 +268,21 @@ def _real_root_bound(F: "_Family", word, lo, hi, P_mid) -> sp.Rational:
     lam = ev[int(np.argmax(abs(ev)))]
     if lam == 0 or abs(lam.imag) > 1e-12 * abs(lam):
         return sp.Integer(0)
+    import flint
+
     sgn = 1 if lam.real > 0 else -1
     chi = F.charpoly(word)
     n = len(chi) - 1
     tm, h = _fmpq((lo + hi) / 2), _fmpq((hi - lo) / 2)
-    for shrink in (sp.Rational(1, 10 ** 9), sp.Rational(1, 10 ** 7), sp.Rational(1, 10 ** 5),
-                   sp.Rational(1, 10 ** 4), sp.Rational(1, 10 ** 3), sp.Rational(1, 100)):
-        r = sp.Rational(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12)) * (1 - shrink)
-        x = _fmpq(sgn * r)
+    base = _fmpq_of(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12))
+    for d in (10 ** 9, 10 ** 7, 10 ** 5, 10 ** 4, 10 ** 3, 100):      # r = base (1 - 1/d), exactly
+        r = base * (1 - flint.fmpq(1, d))
+        x = r if sgn > 0 else -r
         val = chi[0] * 0
         for c in chi:                                   # Horner in x
             val = val * x + c
         if _sign_on_interval(val, tm, h) == -(sgn ** n):
-            return r
+            return sp.Rational(int(r.p), int(r.q))
     return sp.Integer(0)
 
 

@@ -132,6 +132,28 @@ def _domain_transitions(a: LaurentSymbol, K):
     return _TRANSITIONS[key]
 
 
+_SHIFTED_DETS: dict = {}
+
+
+def _shifted_det(a: LaurentSymbol, K, p: sp.Symbol, word: tuple, ev) -> sp.Poly:
+    """The numerator of ``det(T_word(p) - ev I)`` with integer coefficients, a polynomial in ``p`` (exact; one
+    computation per symbol, word and ``ev``: each boundary of a C^j set tries the same short words)."""
+    key = (a, K, p, word, ev)
+    if key not in _SHIFTED_DETS:
+        if len(_SHIFTED_DETS) > 512:
+            _SHIFTED_DETS.clear()
+        T = _domain_transitions(a, K)[1]
+        P = T[word[0]]
+        for i in word[1:]:
+            P = P * T[i]
+        # the determinant over the polynomial ring QQ[p] of the coefficients, products taken there:
+        # exact, and far faster than a symbolic Berkowitz determinant of expression entries
+        M = P - DomainMatrix.eye(P.shape[0], K) * K.from_sympy(ev)
+        # the numerator with integer coefficients (as sp.fraction(sp.together(.)) gives it)
+        _SHIFTED_DETS[key] = sp.Poly.from_dict(dict(M.det().items()), p, domain=sp.QQ).clear_denoms()[1]
+    return _SHIFTED_DETS[key]
+
+
 def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int], lo, hi):
     """Exact parameter values in (lo, hi) where the product T_word(p) has eigenvalue +-2^{(k-j)L}."""
     if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ):
@@ -139,21 +161,12 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
     K = a.domain
     if tuple(K.symbols) != (p,):
         return []           # other free symbols: no exact crossing in p alone (bisection decides)
-    T = _domain_transitions(a, K)
-    N = T[0]
+    N = _domain_transitions(a, K)[0]
     theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
-    P = T[1][word[0]]
-    for i in word[1:]:
-        P = P * T[1][i]
-    eye = DomainMatrix.eye(P.shape[0], K)
     out = []
     for sgn in (1, -1):
-        # the determinant over the polynomial ring QQ[p] of the coefficients, products taken there:
-        # exact, and far faster than a symbolic Berkowitz determinant of expression entries
-        M = P - eye * K.from_sympy(sgn * theta)
         try:
-            # the numerator with integer coefficients (as sp.fraction(sp.together(.)) gives it)
-            num = sp.Poly.from_dict(dict(M.det().items()), p, domain=sp.QQ).clear_denoms()[1]
+            num = _shifted_det(a, K, p, tuple(word), sgn * theta)
         except (sp.polys.polyerrors.CoercionFailed, sp.PolynomialError):
             return out      # algebraic coefficients: no exact crossing over QQ (bisection decides)
         if num.is_zero or num.degree() < 1 or num.count_roots(lo, hi) == 0:
@@ -198,11 +211,12 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     if not lo < hi:
         raise AnalysisError("within needs low < high")
     pts = [lo + (hi - lo) * sp.Rational(i, grid) for i in range(grid + 1)]
-    samples = []
+    samples, verdicts = [], {}
     progress.stage(f"C^{j} verdicts at the grid points", len(pts))
     for q in pts:
         progress.step()
         v, r = _verdict_at(a, p, q, j, budget)
+        verdicts[q] = r
         samples.append({"p": q, "C^j": v, "alpha": (r.witness.get("alpha").lower, r.witness.get("alpha").upper)
                         if r.witness.get("alpha") is not None else None, "status": r.status})
     boundaries = []
@@ -211,7 +225,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     progress.stage("boundaries", len(changes))
     for s0, s1 in changes:
         progress.step()
-        boundaries.append(_locate(a, p, j, s0, s1, tol, budget))
+        boundaries.append(_locate(a, p, j, s0, s1, tol, budget, verdicts))
     runs = []
     start = None
     for i, s in enumerate(samples):
@@ -302,12 +316,13 @@ def _route(r, L_max) -> str:
     return route
 
 
-def _locate(a, p, j, s0, s1, tol, budget):
-    """Boundary between two grid samples with different certified verdicts."""
+def _locate(a, p, j, s0, s1, tol, budget, verdicts=None):
+    """Boundary between two grid samples with different certified verdicts (``verdicts``: the smoothness
+    results at the grid points, already computed)."""
     q0, q1 = s0["p"], s1["p"]
     good, bad = (q0, q1) if s0["C^j"] else (q1, q0)
     # the s.m.p. on the non-C^j side gives an exact candidate
-    _, rbad = _verdict_at(a, p, bad, j, budget)
+    rbad = verdicts[bad] if verdicts and bad in verdicts else _verdict_at(a, p, bad, j, budget)[1]
     words = []
     if rbad.witness.get("product"):
         words.append(tuple(rbad.witness["product"]))
