@@ -393,14 +393,15 @@ class ParametricStrip:
 
 def _l1_coefficients(Vm: np.ndarray, x: np.ndarray):
     """A basic solution of ``min ||c||_1, V c = x`` (HiGHS), polished on its support (float; the
-    certificate re-checks everything in Arb)."""
-    from scipy.optimize import linprog
+    certificate re-checks everything in Arb). The LP is :func:`analysis.jsr._lp.small_lp`: the model and
+    the solution of ``linprog(ones(2N), A_eq=[V, -V], b_eq=x, bounds=(0, None), method="highs")`` bit for
+    bit, without linprog's input checks."""
+    from ._lp import small_lp
 
-    n, N = Vm.shape
-    res = linprog(np.ones(2 * N), A_eq=np.hstack([Vm, -Vm]), b_eq=x, bounds=(0, None), method="highs")
-    if res.status != 0:
+    res = small_lp(Vm, x)
+    if res is None:
         return None
-    c = res.x[:N] - res.x[N:]
+    c = res[1]
     supp = np.flatnonzero(np.abs(c) > 1e-12)
     if len(supp) == 0:
         return supp, c[supp]

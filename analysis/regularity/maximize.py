@@ -204,6 +204,8 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     try:
         for w in words:
             P = word_product(M, w)
+            if best is not None and _no_better(P, F.k, len(w), best[0]):
+                continue            # its bound could not be below the best one: skip the costly enclosures
             Pm = np.eye(len(Tf[0]))
             for e in w:
                 Pm = Tf[e] @ Pm
@@ -218,6 +220,31 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     finally:
         flint.ctx.prec = old
     return best
+
+
+def _no_better(P, k: int, length: int, best: Fraction, squarings: int = 5) -> bool:
+    """Certainly ``k - log2(r)/length >= best`` for every lower bound ``r`` that the word's ball product ``P``
+    can give (:func:`rho_lower`, with the real-root bound): the word cannot lower the best bound, and skipping
+    it changes nothing (only the smallest bound is used).
+
+    Each of those lower bounds is at most ``rho(Q)`` for every ``Q`` in the balls (the trace bound and the
+    eigenvalue enclosures hold for every matrix in them, the real-root bound for every ``T_w(t)``, ``t`` in
+    the interval, and those are in the balls), and ``rho(Q) <= ||Q^(2^s)||_inf^(2^-s)``, bounded above by
+    the norm of the ball power ``P^(2^s)``. Runs at the caller's ``flint.ctx.prec``."""
+    import flint
+
+    n = P.nrows()
+    Q = P
+    for _ in range(squarings):
+        Q = Q * Q
+    U = None
+    for i in range(n):
+        row = sum((abs(Q[i, j]) for j in range(n)), flint.arb(0)).upper()
+        U = row if U is None or row > U else U
+    if U is None or not U > 0:
+        return False
+    lb = k - flint.arb(U).log() / ((2 ** squarings) * length * flint.arb(2).log())
+    return bool(lb.lower() >= flint.arb(_fmpq_of(best)))
 
 
 def _fmpq_of(x: Fraction):
