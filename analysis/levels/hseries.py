@@ -27,7 +27,8 @@ Recursive evaluation on the expression tree with series truncated at ``h^J``: su
 inversion ``v_k = -(1/u_0) sum_{i>=1} u_i v_{k-i}``), and ``exp``, ``cos``, ``sin``, ``cosh``,
 ``sinh`` of a series ``u = u_0 + w`` by the addition theorems and the recurrences
 ``E' = w' E``, ``C' = -w' S``, ``S' = w' C`` (exact rational coefficients ``1/k``). Any other
-node (``sqrt``, ``acos``, a removable singularity ``sin(x h)/sin(y h)``...) is *unsupported*.
+node (``sqrt``, ``acos``...) is *unsupported*; a removable singularity ``sin(x h)/sin(y h)`` is supported by
+:func:`taylor_polynomial` only (the divisor's vanishing leading terms cancelled exactly against the numerator's).
 Coefficients are exact sympy numbers or expressions, normalised as in ``taylor``
 (``factor(simplify(.))``).
 
@@ -46,8 +47,11 @@ from functools import lru_cache
 
 import sympy as sp
 
-from .level_dependent import H, LevelDependentScheme
 from ..algebra.reader import as_expr
+
+#: the level variable ``h = 2^-n``: the symbol ``analysis.levels.level_dependent.H`` (a sympy symbol is the same by
+#: name and assumptions; not imported from there, which uses this module)
+H = sp.Symbol("h", positive=True)
 
 __all__ = ["taylor_rows", "prefill_taylor"]
 
@@ -233,7 +237,14 @@ def _series_known(e: sp.Expr, N: int) -> tuple[list, int]:
 def taylor_polynomial(g: sp.Expr, J: int) -> sp.Expr | None:
     """``expand(series(g, h, 0, J).removeO())`` by series arithmetic — the same expression when every
     coefficient is a polynomial over QQ in the parameters (its expanded form is then unique) — or ``None``
-    (unsupported: then ``sympy.series``)."""
+    (unsupported: then ``sympy.series``).
+
+    >>> a = sp.Symbol("alpha")
+    >>> taylor_polynomial(sp.sin(a * H / 4) / sp.sin(a * H), 4)
+    5*alpha**2*h**2/128 + 1/4
+    >>> taylor_polynomial(1 / sp.sin(H), 3) is None          # a pole at h = 0
+    True
+    """
     try:
         for extra in (4, 8):
             s, known = _series_known(g, J + extra)
@@ -248,8 +259,8 @@ def taylor_polynomial(g: sp.Expr, J: int) -> sp.Expr | None:
     return sp.expand(sum((x * H ** j for j, x in enumerate(s[:J])), sp.Integer(0)))
 
 
-def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
-    """``taylor(J)`` of the scheme computed by truncated series arithmetic, or ``None`` (unsupported)."""
+def taylor_rows(s, J: int) -> tuple | None:
+    """``taylor(J)`` of the scheme ``s`` (a :class:`~analysis.levels.level_dependent.LevelDependentScheme`) computed by truncated series arithmetic, or ``None`` (unsupported)."""
     return _taylor_rows(s.mask, s._limits, J)
 
 
@@ -271,7 +282,7 @@ def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
     return tuple(rows)
 
 
-def prefill_taylor(s: LevelDependentScheme, J: int = 12) -> bool:
+def prefill_taylor(s, J: int = 12) -> bool:
     """Store ``taylor(J)`` in the scheme's cache (see the module); False when unsupported."""
     cache = s.__dict__.setdefault("_taylor_cache", {})
     if any(Jc >= J for Jc in cache):
