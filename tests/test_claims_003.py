@@ -172,12 +172,19 @@ def test_theorem_5_1_centre_is_minus_half():
     assert evaluated("003:(7)").verdict.status == "refuted"
 
 
+@functools.lru_cache(maxsize=None)
+def _float_mask(scheme, n, vals):
+    """The level-n mask at the values ``vals`` (sorted items) in float64, from a 30-digit evaluation here
+    (not the engine's); once per scheme, level and values (every curve of a claim refines with the same masks)."""
+    return tuple(float(sp.N(c, 30)) for c in scheme.mask_at(n, dict(vals)))
+
+
 def _refine(scheme, P, vals, steps=6):
     """Independent float64 refinement of a closed polygon: P^(n+1)_i = sum_j a^n_(i-2j) P^n_j."""
     import numpy as np
 
     for n in range(steps):
-        a = [float(sp.N(c, 30)) for c in scheme.mask_at(n, vals)]
+        a = _float_mask(scheme, n, tuple(sorted(vals.items())))
         m = len(P)
         Q = np.zeros((2 * m, 2))
         for j in range(m):

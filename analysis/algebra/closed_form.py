@@ -174,22 +174,28 @@ def _cut(e) -> str:
 def needs_ball_route(mask: Sequence) -> bool:
     """Whether exact number-field arithmetic would likely be slow for this numeric mask: it is
     written with ``I``, ``CRootOf``, or atoms whose degree bound exceeds 16."""
+    return ball_route_exprs(mask) is not None
+
+
+def ball_route_exprs(mask: Sequence) -> list | None:
+    """The coefficients of ``mask`` read (for :class:`ClosedFormMask`, which then need not read them again)
+    when it :func:`needs_ball_route`; ``None`` otherwise (or when they cannot be read)."""
     from .symbol import parse_coefficient
 
     try:
         exprs = [parse_coefficient(c) for c in mask]
     except AnalysisError:
-        return False
+        return None
     if any(e.free_symbols for e in exprs) or all(e.is_Rational for e in exprs):
-        return False
+        return None
     if any(e.has(sp.I) or e.has(sp.CRootOf) for e in exprs):
-        return True
+        return exprs
     memo: dict = {}
     try:
         nodes = [_ir(e, memo) for e in exprs]
     except AnalysisError:
-        return False
-    return degree_bound(("add", tuple(nodes))) > 16
+        return None
+    return exprs if degree_bound(("add", tuple(nodes))) > 16 else None
 
 
 def split_mask(text: str) -> list[str]:

@@ -217,10 +217,11 @@ def _alternative_reading(args):
             radius = Fraction(int(radius.p), int(radius.q))
         m = ApproximateMask(mask, start, radius=radius)
         return (m, "mask (approximate reading)", "scheme: mask   (" + m.description().split(";")[0] + ")")
-    from ..algebra.closed_form import ClosedFormMask, needs_ball_route
+    from ..algebra.closed_form import ClosedFormMask, ball_route_exprs
 
-    if needs_ball_route(mask):
-        cf = ClosedFormMask(mask, start)
+    exprs = ball_route_exprs(mask)              # read once (reading the D8 radicals takes a while)
+    if exprs is not None:
+        cf = ClosedFormMask(exprs, start)
         return cf, "mask (closed form)", "scheme: mask   (closed form; certified ball route)"
     return None
 

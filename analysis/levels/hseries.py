@@ -27,7 +27,8 @@ Recursive evaluation on the expression tree with series truncated at ``h^J``: su
 inversion ``v_k = -(1/u_0) sum_{i>=1} u_i v_{k-i}``), and ``exp``, ``cos``, ``sin``, ``cosh``,
 ``sinh`` of a series ``u = u_0 + w`` by the addition theorems and the recurrences
 ``E' = w' E``, ``C' = -w' S``, ``S' = w' C`` (exact rational coefficients ``1/k``). Any other
-node (``sqrt``, ``acos``, a removable singularity ``sin(x h)/sin(y h)``...) is *unsupported*.
+node (``sqrt``, ``acos``...) is *unsupported*; a removable singularity ``sin(x h)/sin(y h)`` is supported by
+:func:`taylor_polynomial` only (the divisor's vanishing leading terms cancelled exactly against the numerator's).
 Coefficients are exact sympy numbers or expressions, normalised as in ``taylor``
 (``factor(simplify(.))``).
 
@@ -46,8 +47,11 @@ from functools import lru_cache
 import sympy as sp
 from flint import fmpq
 
-from .level_dependent import H, LevelDependentScheme
 from ..algebra.reader import as_expr
+
+#: the level variable ``h = 2^-n``: the symbol ``analysis.levels.level_dependent.H`` (a sympy symbol is the same by
+#: name and assumptions; not imported from there, which uses this module)
+H = sp.Symbol("h", positive=True)
 
 __all__ = ["taylor_rows", "prefill_taylor"]
 
@@ -168,8 +172,95 @@ def _series(e: sp.Expr, J: int) -> list:
     raise _Unsupported(f"{type(e).__name__}")
 
 
-def taylor_rows(s: LevelDependentScheme, J: int) -> tuple | None:
-    """``taylor(J)`` of the scheme computed by truncated series arithmetic, or ``None`` (unsupported)."""
+def _rational_poly(x: sp.Expr):
+    """``x`` as a polynomial over QQ in its free symbols (``Poly``), else :class:`_Unsupported`: the zero tests
+    below are exact only there (an expanded polynomial over QQ is 0 exactly when it is the number 0)."""
+    syms = sorted(x.free_symbols, key=lambda t: t.name)
+    try:
+        return sp.Poly(x, *syms, domain=sp.QQ) if syms else sp.Poly(x, H, domain=sp.QQ)
+    except (sp.PolynomialError, sp.polys.polyerrors.CoercionFailed) as exc:
+        raise _Unsupported(f"coefficient {x}") from exc
+
+
+def _quotient(a: list, va: int, b: list, vb: int, N: int) -> tuple[list, int]:
+    """``a / b`` for series without negative powers whose quotient has none either (``b`` may vanish at 0:
+    ``sin(x h)/sin(y h)``); ``va``, ``vb``: how many leading coefficients are known. Returns the quotient
+    and how many of its coefficients are known."""
+    v = next((i for i in range(vb) if not _rational_poly(b[i]).is_zero), None)
+    if v is None or v >= va or any(not _rational_poly(a[i]).is_zero for i in range(v)):
+        raise _Unsupported("a pole at h = 0, or too few known terms")
+    pad = [sp.Integer(0)] * v
+    return _mul(a[v:] + pad, _inv(b[v:] + pad, N), N), min(va, vb) - v
+
+
+def _series_known(e: sp.Expr, N: int) -> tuple[list, int]:
+    """``N`` Taylor coefficients of ``e`` in ``h`` and how many of them are known (a quotient by a series
+    vanishing at 0 loses terms at the end), or :class:`_Unsupported`. As :func:`_series`, plus removable
+    singularities such as ``sin(h/4)/sin(h)``."""
+    if H not in e.free_symbols or e == H:
+        return _series(e, N), N
+    if e.is_Add:
+        out, known = [sp.Integer(0)] * N, N
+        for a in e.args:
+            s, k = _series_known(a, N)
+            out, known = [x + y for x, y in zip(out, s)], min(known, k)
+        return [sp.expand(x) for x in out], known
+    if e.is_Mul:
+        out, known, den = [sp.Integer(1)] + [sp.Integer(0)] * (N - 1), N, []
+        for a in e.args:
+            if a.is_Pow and a.args[1].is_Integer and a.args[1] < 0:
+                b, kb = _series_known(a.args[0], N)
+                if _rational_poly(b[0]).is_zero:        # divided by below, once every numerator factor is in
+                    den += [(b, kb)] * int(-a.args[1])
+                    continue
+                s, k = _inv(b, N), kb
+                for _ in range(int(-a.args[1]) - 1):
+                    s = _mul(s, _inv(b, N), N)
+            else:
+                s, k = _series_known(a, N)
+            out, known = _mul(out, s, N), min(known, k)
+        for b, kb in den:
+            out, known = _quotient(out, known, b, kb, N)
+        return out, known
+    if e.is_Pow and e.args[1].is_Integer and e.args[1] > 0:
+        b, kb = _series_known(e.args[0], N)
+        out = [sp.Integer(1)] + [sp.Integer(0)] * (N - 1)
+        for _ in range(int(e.args[1])):
+            out = _mul(out, b, N)
+        return out, kb
+    if isinstance(e, (sp.exp, sp.cos, sp.sin, sp.cosh, sp.sinh)):
+        if not _series_known(e.args[0], N)[1] == N:
+            raise _Unsupported(f"{e}")
+    return _series(e, N), N
+
+
+def taylor_polynomial(g: sp.Expr, J: int) -> sp.Expr | None:
+    """``expand(series(g, h, 0, J).removeO())`` by series arithmetic — the same expression when every
+    coefficient is a polynomial over QQ in the parameters (its expanded form is then unique) — or ``None``
+    (unsupported: then ``sympy.series``).
+
+    >>> a = sp.Symbol("alpha")
+    >>> taylor_polynomial(sp.sin(a * H / 4) / sp.sin(a * H), 4)
+    5*alpha**2*h**2/128 + 1/4
+    >>> taylor_polynomial(1 / sp.sin(H), 3) is None          # a pole at h = 0
+    True
+    """
+    try:
+        for extra in (4, 8):
+            s, known = _series_known(g, J + extra)
+            if known >= J:
+                break
+        else:
+            return None
+        for x in s[:J]:
+            _rational_poly(x)
+    except (_Unsupported, ZeroDivisionError, TypeError, ValueError):
+        return None
+    return sp.expand(sum((x * H ** j for j, x in enumerate(s[:J])), sp.Integer(0)))
+
+
+def taylor_rows(s, J: int) -> tuple | None:
+    """``taylor(J)`` of the scheme ``s`` (a :class:`~analysis.levels.level_dependent.LevelDependentScheme`) computed by truncated series arithmetic, or ``None`` (unsupported)."""
     return _taylor_rows(s.mask, s._limits, J)
 
 
@@ -193,7 +284,7 @@ def _taylor_rows(mask: tuple, limits: tuple, J: int) -> tuple | None:
     return tuple(rows)
 
 
-def prefill_taylor(s: LevelDependentScheme, J: int = 12) -> bool:
+def prefill_taylor(s, J: int = 12) -> bool:
     """Store ``taylor(J)`` in the scheme's cache (see the module); False when unsupported."""
     cache = s.__dict__.setdefault("_taylor_cache", {})
     if any(Jc >= J for Jc in cache):

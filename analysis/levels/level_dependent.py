@@ -478,7 +478,11 @@ def _taylor_by_series(mask: tuple, limits: tuple, J: int) -> tuple:
             rows.append(tuple(sp.Integer(0) for _ in range(J)))
             continue
         if g not in done:
-            ser = sp.expand(sp.series(g, H, 0, J).removeO())
+            from .hseries import taylor_polynomial
+
+            ser = taylor_polynomial(g, J)       # the same polynomial by series arithmetic, or None
+            if ser is None:
+                ser = sp.expand(sp.series(g, H, 0, J).removeO())
             done[g] = tuple(sp.factor(sp.simplify(ser.coeff(H, j))) for j in range(J))
         rows.append(done[g])
     return tuple(rows)

@@ -206,6 +206,8 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     try:
         for w in words:
             P = word_product(M, w)
+            if best is not None and _no_better(P, F.k, len(w), best[0]):
+                continue            # its bound could not be below the best one: skip the costly enclosures
             Pm = np.eye(len(Tf[0]))
             for e in w:
                 Pm = Tf[e] @ Pm
@@ -220,6 +222,37 @@ def _ball_bound(F: _Family, lo, hi, words, prec=128):
     finally:
         flint.ctx.prec = old
     return best
+
+
+def _no_better(P, k: int, length: int, best: Fraction, squarings: int = 5) -> bool:
+    """Certainly ``k - log2(r)/length >= best`` for every lower bound ``r`` that the word's ball product ``P``
+    can give (:func:`rho_lower`, with the real-root bound): the word cannot lower the best bound, and skipping
+    it changes nothing (only the smallest bound is used).
+
+    Each of those lower bounds is at most ``rho(Q)`` for every ``Q`` in the balls (the trace bound and the
+    eigenvalue enclosures hold for every matrix in them, the real-root bound for every ``T_w(t)``, ``t`` in
+    the interval, and those are in the balls), and ``rho(Q) <= ||Q^(2^s)||_inf^(2^-s)``, bounded above by
+    the norm of the ball power ``P^(2^s)``. Runs at the caller's ``flint.ctx.prec``."""
+    import flint
+
+    n = P.nrows()
+    Q = P
+    for _ in range(squarings):
+        Q = Q * Q
+    U = None
+    for i in range(n):
+        row = sum((abs(Q[i, j]) for j in range(n)), flint.arb(0)).upper()
+        U = row if U is None or row > U else U
+    if U is None or not U > 0:
+        return False
+    lb = k - flint.arb(U).log() / ((2 ** squarings) * length * flint.arb(2).log())
+    return bool(lb.lower() >= flint.arb(_fmpq_of(best)))
+
+
+def _fmpq_of(x: Fraction):
+    import flint
+
+    return flint.fmpq(x.numerator, x.denominator)
 
 
 def _fmpq_poly(q: sp.Poly):
@@ -264,24 +297,22 @@ def _real_root_bound(F: "_Family", word, lo, hi, P_mid) -> sp.Rational:
     lam = ev[int(np.argmax(abs(ev)))]
     if lam == 0 or abs(lam.imag) > 1e-12 * abs(lam):
         return sp.Integer(0)
+    import flint
+
     sgn = 1 if lam.real > 0 else -1
     chi = F.charpoly(word)
     n = len(chi) - 1
     tm, h = _fmpq((lo + hi) / 2), _fmpq((hi - lo) / 2)
-    r_mid = sp.Rational(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12))
-    for shrink in _SHRINKS:
-        r = r_mid * (1 - shrink)
-        x = _fmpq(sgn * r)
+    base = _fmpq_of(Fraction(abs(float(lam.real))).limit_denominator(10 ** 12))
+    for d in (10 ** 9, 10 ** 7, 10 ** 5, 10 ** 4, 10 ** 3, 100):      # r = base (1 - 1/d), exactly
+        r = base * (1 - flint.fmpq(1, d))
+        x = r if sgn > 0 else -r
         val = chi[0] * 0
         for c in chi:                                   # Horner in x
             val = val * x + c
         if _sign_on_interval(val, tm, h) == -(sgn ** n):
-            return r
+            return sp.Rational(int(r.p), int(r.q))
     return sp.Integer(0)
-
-
-_SHRINKS = (sp.Rational(1, 10 ** 9), sp.Rational(1, 10 ** 7), sp.Rational(1, 10 ** 5),
-            sp.Rational(1, 10 ** 4), sp.Rational(1, 10 ** 3), sp.Rational(1, 100))
 
 
 def _trace_bound(P, squarings: int = 5):

@@ -215,11 +215,12 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     if not lo < hi:
         raise AnalysisError("within needs low < high")
     pts = [lo + (hi - lo) * sp.Rational(i, grid) for i in range(grid + 1)]
-    samples = []
+    samples, verdicts = [], {}
     progress.stage(f"C^{j} verdicts at the grid points", len(pts))
     for q in pts:
         progress.step()
         v, r = _verdict_at(a, p, q, j, budget)
+        verdicts[q] = r
         samples.append({"p": q, "C^j": v, "alpha": (r.witness.get("alpha").lower, r.witness.get("alpha").upper)
                         if r.witness.get("alpha") is not None else None, "status": r.status})
     boundaries = []
@@ -228,7 +229,7 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     progress.stage("boundaries", len(changes))
     for s0, s1 in changes:
         progress.step()
-        boundaries.append(_locate(a, p, j, s0, s1, tol, budget))
+        boundaries.append(_locate(a, p, j, s0, s1, tol, budget, verdicts))
     runs = []
     start = None
     for i, s in enumerate(samples):
@@ -319,12 +320,13 @@ def _route(r, L_max) -> str:
     return route
 
 
-def _locate(a, p, j, s0, s1, tol, budget):
-    """Boundary between two grid samples with different certified verdicts."""
+def _locate(a, p, j, s0, s1, tol, budget, verdicts=None):
+    """Boundary between two grid samples with different certified verdicts (``verdicts``: the smoothness
+    results at the grid points, already computed)."""
     q0, q1 = s0["p"], s1["p"]
     good, bad = (q0, q1) if s0["C^j"] else (q1, q0)
     # the s.m.p. on the non-C^j side gives an exact candidate
-    _, rbad = _verdict_at(a, p, bad, j, budget)
+    rbad = verdicts[bad] if verdicts and bad in verdicts else _verdict_at(a, p, bad, j, budget)[1]
     words = []
     if rbad.witness.get("product"):
         words.append(tuple(rbad.witness["product"]))
