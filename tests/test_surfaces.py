@@ -283,30 +283,6 @@ def test_cli_surface_errors_are_one_line(argv, match, capsys):
     assert "error" in json.loads(cap.out)
 
 
-# ----------------------------------------------------------------------------------------------
-# the documentation's console examples, run as written
-# ----------------------------------------------------------------------------------------------
-
-def _console_examples():
-    import re
-    import shlex
-    from pathlib import Path
-
-    text = (Path(__file__).resolve().parent.parent / "docs" / "surfaces.md").read_text(encoding="utf-8")
-    out = []
-    for block in re.findall(r"```console\n(.*?)```", text, flags=re.S):
-        lines = block.rstrip("\n").split("\n")
-        assert lines[0].startswith("$ subdiv ")
-        out.append((shlex.split(lines[0][len("$ subdiv "):]), "\n".join(lines[1:])))
-    return out
-
-
-@pytest.mark.parametrize("argv,expected", _console_examples(), ids=lambda x: " ".join(x)[:40] if isinstance(x, list) else "")
-def test_docs_console_examples(argv, expected, capsys):
-    assert main(argv) == 0
-    assert capsys.readouterr().out.rstrip("\n") == expected
-
-
 def test_refine_delta_keeps_the_mass_and_draws_a_figure(tmp_path, capsys):
     from analysis.bivariate.refine import basic_limit_samples
 
