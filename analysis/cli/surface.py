@@ -219,12 +219,16 @@ def _range(args) -> None:
     for b in r.witness["boundaries"]:
         if "exact" in b:
             st = b.get("strip") or {}
-            upto = (f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
+            es = b.get("end_strip") or {}
+            upto = (_end_strip_line(l, p, b, es, fmt) if st.get("method") else
+                    f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
                     f"s.m.p. T_{st['product']}, {st['pieces']} sub-intervals)" if st.get("closed") else
                     (f"C^{l} certified up to {fmt(b['certified_Cl_to'])}" if b["certified_Cl_to"] != b["certified_Cl_at"]
                      else f"no box toward it certified: the nearest certified C^{l} point is {fmt(b['certified_Cl_at'])}")
                     + (f"; the strip next to the end not closed: {st['reason']}" if st else ""))
             lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); {upto}")
+            if es and not es.get("closed") and es.get("reason"):
+                lines.append(f"    (the exact end-strip argument: {es['reason']})")
         else:
             lines.append(f"  end between {fmt(b['certified_Cl_to'])} (C^{l}) and {fmt(b['certified_not_Cl_at'])} "
                          f"(not C^{l}): no exact crossing found")
@@ -246,6 +250,18 @@ def _range(args) -> None:
                            for b in r.witness["boundaries"]],
             "work": r.provenance["work"]}
     _emit(args, data, "\n".join(lines))
+
+
+def _end_strip_line(l, p, b, es, fmt) -> str:
+    """The boundary line of a strip closed by :func:`analysis.bivariate.end_strip.close_end_strip`."""
+    q = es.get("quotient_upper")
+    quo = (f"; on the quotient JSR <= {float(q):.4g} (certified)" if q is not None else "")
+    a, e = b["strip"]["from"], b["exact"]
+    iv = f"[{fmt(a)}, {fmt(e)})" if a < e else f"({fmt(e)}, {fmt(a)}]"
+    return (f"C^{l} certified up to the end: on {p} in {iv} the JSR is {fmt(es['lambda'])} on a common "
+            f"invariant subspace of dimension {es['leading_dimension']} (eigenvalue of "
+            f"T_{','.join(map(str, es['letters']))}; invariant polytope of the convex hull in 1/lambda, "
+            f"{es['polytope_vertices']} exact vertices, norm bound {fmt(es['polytope_bound'])}){quo}")
 
 
 def cmd_surface(args) -> None:

@@ -1,0 +1,84 @@
+"""The strip next to an exact end of a C^l set, closed exactly (analysis.bivariate.end_strip) and the invariant
+polytope with exact vertices (analysis.jsr.exact_polytope)."""
+
+from __future__ import annotations
+
+from fractions import Fraction
+
+from flint import fmpq, fmpq_mat
+
+from analysis.bivariate.end_strip import close_end_strip
+from analysis.jsr._polytope import build_polytope
+from analysis.jsr._work import Work
+from analysis.jsr.exact_polytope import exact_polytope_bound, floats
+
+q = fmpq
+
+
+def _family(quotient_slope):
+    """``T_0(t) = [[t, 1/16, 1/8], [0, 1/8, 0], [0, 0, 1/5]]``, ``T_1(t) = [[1/8, 0, 0], [1/16, t, 1/8], [0, 0, 1/5 +
+    s t]]``: the fixed eigenvectors ``e1``, ``e2`` of the eigenvalue ``t``, the invariant plane ``U = <e1, e2>``, the
+    quotient ``(1/5, 1/5 + s t)``."""
+    C0 = [fmpq_mat([[0, q(1, 16), q(1, 8)], [0, q(1, 8), 0], [0, 0, q(1, 5)]]),
+          fmpq_mat([[q(1, 8), 0, 0], [q(1, 16), 0, q(1, 8)], [0, 0, q(1, 5)]])]
+    C1 = [fmpq_mat([[1, 0, 0], [0, 0, 0], [0, 0, 0]]),
+          fmpq_mat([[0, 0, 0], [0, 1, 0], [0, 0, quotient_slope]])]
+    return [[C0[e], C1[e]] for e in range(2)]
+
+
+def test_leading_plane_split_off_and_the_quotient_below_theta():
+    r = close_end_strip(_family(q(1, 10)), q(1, 2), q(1, 2), q(1, 4), budget=20_000)
+    assert r["closed"], r["reason"]
+    assert r["letters"] == [0, 1] and r["lambda"] == "0 + 1*t" and r["leading_dimension"] == 2
+    assert r["polytope_bound"] == 1                        # exactly: the roots are exact eigenvectors
+    assert Fraction(str(r["quotient_upper"])) <= Fraction(1, 4) < Fraction(1, 2)
+
+
+def test_a_quotient_at_theta_keeps_the_strip_open():
+    # the quotient entry 1/5 + 3t/5 reaches 1/2 at t* = 1/2: the hull's quotient JSR is not below theta
+    r = close_end_strip(_family(q(3, 5)), q(1, 2), q(1, 2), q(1, 4), budget=20_000)
+    assert not r["closed"] and "quotient" in r["reason"]
+
+
+def test_a_moving_eigenvector_is_refused():
+    # T_0(t) = [[t, 0], [t - 1/2, 1/8]]: at t* = 1/2 the eigenvector (1, 0) for 1/2, which moves with t
+    C = [[fmpq_mat([[0, 0], [q(-1, 2), q(1, 8)]]), fmpq_mat([[1, 0], [1, 0]])]]
+    r = close_end_strip(C, q(1, 2), q(1, 2), q(1, 4), budget=5000)
+    assert not r["closed"] and "moves" in r["reason"]
+
+
+def test_no_letter_with_the_eigenvalue_at_the_end():
+    C = [[fmpq_mat([[q(1, 8)]]), fmpq_mat([[q(1, 8)]])]]
+    r = close_end_strip(C, q(1, 2), q(1, 2), q(1, 4), budget=1000)
+    assert not r["closed"] and "no single letter" in r["reason"]
+
+
+def _two():
+    A = [fmpq_mat([[1, q(1, 4)], [0, q(1, 2)]]), fmpq_mat([[q(1, 2), 0], [q(1, 4), 1]])]
+    roots = [[q(1), q(0)], [q(0), q(1)]]
+    st = build_polytope(floats(A), 1.0, [[float(x) for x in u] for u in roots], work=Work(1000))
+    assert st.closed
+    return A, roots, st
+
+
+def test_exact_bound_is_one_for_exact_eigenvectors():
+    A, roots, st = _two()
+    b = exact_polytope_bound(A, q(1), roots, st)
+    assert b["bound"] == 1 and b["vertex_images"] >= 2
+
+
+def test_exact_bound_exceeds_one_below_the_jsr():
+    # scaled by 9/10 < JSR = 1: the roots' images are 10/9 times the roots, the bound says so exactly
+    A, roots, st = _two()
+    b = exact_polytope_bound(A, q(9, 10), roots, st)
+    assert b["bound"] >= Fraction(10, 9)
+
+
+def test_exact_bound_on_a_face_with_a_dependent_support():
+    # the square absconv{e1, e2, e1 + e2, e1 - e2}: (1, 1)/... the image (1/2, 1/2) + (1/2, -1/2) = e1 lies in it;
+    # an image on the edge between e1 + e2 and e1 - e2 (the point (1, 0) + (0, 1/3)) has norm exactly 1
+    A = [fmpq_mat([[1, 0], [q(1, 3), 0]])]
+    roots = [[q(1), q(1)], [q(1), q(-1)]]
+    st = build_polytope(floats(A), 1.0, [[float(x) for x in u] for u in roots], work=Work(1000))
+    b = exact_polytope_bound(A, q(1), roots, st)
+    assert b["bound"] == 1
