@@ -41,10 +41,20 @@ def test_a_quotient_at_theta_keeps_the_strip_open():
 
 
 def test_a_moving_eigenvector_is_refused():
-    # T_0(t) = [[t, 0], [t - 1/2, 1/8]]: at t* = 1/2 the eigenvector (1, 0) for 1/2, which moves with t
+    # T_0(t) = [[t, 0], [t - 1/2, 1/8]]: at t* = 1/2 the eigenvector (1, 0) for 1/2, which moves with t; the
+    # tangent lambda(t) = t is the eigenvalue, but the hull's two leading eigenvectors give no finite polytope
     C = [[fmpq_mat([[0, 0], [q(-1, 2), q(1, 8)]]), fmpq_mat([[1, 0], [1, 0]])]]
     r = close_end_strip(C, q(1, 2), q(1, 2), q(1, 4), budget=5000)
-    assert not r["closed"] and "moves" in r["reason"]
+    assert r["lambda_kind"] == "tangent" and r["lambda"] == "0 + 1*t"
+    assert not r["closed"] and "polytope" in r["reason"]
+
+
+def test_the_tangent_of_a_semisimple_double_eigenvalue():
+    # T(t) = [[t, 0, 0], [0, t, 0], [t - 1/2, 0, 1/8]]: at t* = 1/2 the double eigenvalue 1/2 (eigenvectors e1,
+    # e2; e1 moves with t), both branches with the derivative 1: the tangent lambda(t) = t
+    C = [[fmpq_mat([[0, 0, 0], [0, 0, 0], [q(-1, 2), 0, q(1, 8)]]), fmpq_mat([[1, 0, 0], [0, 1, 0], [1, 0, 0]])]]
+    r = close_end_strip(C, q(1, 2), q(1, 2), q(1, 4), budget=5000)
+    assert r["lambda_kind"] == "tangent" and r["lambda"] == "0 + 1*t"
 
 
 def test_no_letter_with_the_eigenvalue_at_the_end():

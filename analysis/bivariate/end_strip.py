@@ -10,7 +10,10 @@ operators of :class:`~analysis.bivariate.ranges.ParametricFamily`), an exact end
 1. **Leading eigenvectors that do not move.** Every eigenvector ``v`` of a ``T_eps(t*)`` for ``theta`` is an
    eigenvector of ``C_eps0`` and ``C_eps1`` (exact check): ``C_eps0 v = mu0 v``, ``C_eps1 v = mu1 v``, the same
    ``(mu0, mu1)`` for all of them. Then ``lambda(t) = mu0 + mu1 t`` is an eigenvalue of ``T_eps(t)`` for every
-   ``t``: ``JSR(T(t)) >= lambda(t)``, with ``lambda(t*) = theta``.
+   ``t``: ``JSR(T(t)) >= lambda(t)``, with ``lambda(t*) = theta``. Otherwise ``lambda`` is the **tangent** at
+   ``t*`` of the eigenvalue branches (semisimple ``theta``, rational derivatives: the eigenvalues of ``(L R)^-1
+   L C_eps1 R``, ``L``, ``R`` the left and right kernels), the branch that is largest on the strip's side; it is
+   then only a candidate bound, which step 3 proves or not.
 2. **Split.** ``U`` = the smallest subspace holding these eigenvectors and invariant under every coefficient
    matrix ``C_eps,d`` (exact Krylov space; it does not depend on ``t``). In a basis ``[U | E]`` all ``T_eps(t)``
    are block upper triangular, and ``JSR(T(t)) = max(JSR(T(t)|U), JSR(T(t) on R^n/U))`` (Berger–Wang).
@@ -20,7 +23,8 @@ operators of :class:`~analysis.bivariate.ranges.ParametricFamily`), an exact end
    is a convex combination of ``T_eps(a)|U / lambda(a)`` and ``T_eps(t*)|U / theta``, and the JSR of a set is
    that of its convex hull: an invariant polytope of these ``2m`` matrices with ``||.||_P <= 1``
    (:func:`analysis.jsr.exact_polytope.exact_polytope_bound`: exact vertices from the moving-free roots ``v``)
-   proves ``JSR(T(t)|U) <= lambda(t)`` on the whole of ``[a, t*]``, hence ``= lambda(t)``.
+   proves ``JSR(T(t)|U) <= lambda(t)`` on the whole of ``[a, t*]`` (hence ``= lambda(t)`` in the first case). The
+   roots are the exact eigenvectors of the ``T_eps(t*)`` for ``theta``.
 4. **The quotient**: the convex hull in ``t`` (Bernstein coefficients = the end values for an affine family),
    ``JSR(T(a) on R^n/U, T(t*) on R^n/U) < theta`` certified by the engine (:func:`analysis.jsr.jsr_bounds`).
 
@@ -82,6 +86,30 @@ def _eigen_ratio(M: fmpq_mat, v: fmpq_mat):
     return mu if all(w[a, 0] == mu * v[a, 0] for a in range(n)) else None
 
 
+def _tangent_slopes(T: fmpq_mat, C1: fmpq_mat, theta: fmpq):
+    """The derivatives in ``t`` of the branches of the eigenvalue ``theta`` of ``T = T(t*)`` (``T'(t) = C1``) when
+    it is semisimple: the eigenvalues of ``(L R)^-1 L C1 R`` for the left and right kernels ``L``, ``R`` (Kato,
+    first-order perturbation of a semisimple eigenvalue), when they are all rational; else None."""
+    R = _kernel_cols(T - _eye(T.nrows(), theta))
+    L = _kernel_cols((T - _eye(T.nrows(), theta)).transpose())
+    k, n = len(R), T.nrows()
+    if k == 0 or len(L) != k:
+        return None
+    Rm = fmpq_mat(n, k, [R[c][a, 0] for a in range(n) for c in range(k)])
+    Lm = fmpq_mat(k, n, [L[r][a, 0] for r in range(k) for a in range(n)])
+    try:
+        D = (Lm * Rm).inv() * (Lm * C1 * Rm)
+    except ZeroDivisionError:
+        return None
+    roots = []
+    _, factors = D.charpoly().factor()
+    for f, e in factors:
+        if f.degree() != 1:
+            return None
+        roots += [-f[0] / f[1]] * e
+    return roots
+
+
 def _primitive(v: fmpq_mat) -> list[fmpq]:
     """``v`` scaled to a vector of coprime integers (the roots are exact and dyadic in floats)."""
     from math import gcd, lcm
@@ -128,21 +156,27 @@ def close_end_strip(C: Sequence[Sequence[fmpq_mat]], theta: fmpq, end: fmpq, sta
     n = C[0][0].nrows()
     m = len(C)
     ends = [cs[0] + cs[1] * end for cs in C]
-    lead, mus = [], set()
-    for e, T in enumerate(ends):
-        for v in _kernel_cols(T - _eye(n, theta)):
-            mu0, mu1 = _eigen_ratio(C[e][0], v), _eigen_ratio(C[e][1], v)
-            if mu0 is None or mu1 is None:
-                return done(f"the eigenvector of T_{e} for {theta} at the end moves with the parameter")
-            lead.append((e, v))
-            mus.add((mu0, mu1))
+    lead = [(e, v) for e, T in enumerate(ends) for v in _kernel_cols(T - _eye(n, theta))]
     if not lead:
         return done(f"no single letter has the eigenvalue {theta} at the end")
-    if len(mus) != 1:
-        return done("the letters' eigenvalues at the end are different functions of the parameter")
-    (mu0, mu1), = mus
+    mus = {(_eigen_ratio(C[e][0], v), _eigen_ratio(C[e][1], v)) for e, v in lead}
+    if len(mus) == 1 and None not in next(iter(mus)):
+        (mu0, mu1), = mus
+        kind = "eigenvalue"
+    else:
+        slopes = []
+        for e in sorted({e for e, _ in lead}):
+            c = _tangent_slopes(ends[e], C[e][1], theta)
+            if c is None:
+                return done(f"the eigenvector of T_{e} for {theta} at the end moves with the parameter, and the "
+                            "eigenvalue's derivatives there are not rational (or it is not semisimple)")
+            slopes += c
+        mu1 = min(slopes) if start < end else max(slopes)     # the largest lambda on the strip's side
+        mu0 = theta - mu1 * end
+        kind = "tangent"
     lam = lambda t: mu0 + mu1 * t  # noqa: E731
-    out.update({"letters": sorted({e for e, _ in lead}), "lambda": f"{mu0} + {mu1}*t", "mu": (mu0, mu1)})
+    out.update({"letters": sorted({e for e, _ in lead}), "lambda": f"{mu0} + {mu1}*t", "mu": (mu0, mu1),
+                "lambda_kind": kind})
     if mu1 == 0 or not (0 < lam(start) < theta):
         return done("the moving eigenvalue is not below theta and positive at the other end of the strip")
     # the smallest subspace holding the eigenvectors, invariant under every coefficient matrix

@@ -19,11 +19,13 @@ Three certified ingredients (for an isotropic ``M``, :mod:`analysis.bivariate.ho
   ``S_a(t*)`` is not ``C^l`` (checked by a certified point verdict when ``t*`` is rational).
 
 The boxes approach an end of eigenvalue type geometrically but never reach it (the JSR tends to
-``rho(M)^{-l}``). The strip left next to an exact end is then given to the parametric invariant polytope
-(:func:`analysis.jsr.parametric.close_family`, the one that closes such strips for curves; operators of dimension
-at most ``MAX_STRIP_DIMENSION``), which needs a single spectrum-maximising product with a simple leading
-eigenvalue at the end; the symmetric families of surface subdivision usually have several (the symmetric
-digits), and then the strip stays *inconclusive*, reported with its width and the reason. The same
+``rho(M)^{-l}``). The strip between the last C^l grid point and an exact rational end of an affine family is
+first given to :func:`analysis.bivariate.end_strip.close_end_strip` (exact: the leading subspace split off, its
+JSR bounded by an affine ``lambda(t)`` through an invariant polytope of the convex hull in ``1/lambda``, the
+quotient by the engine; any number of letters with the eigenvalue at the end), then to the parametric invariant
+polytope (:func:`analysis.jsr.parametric.close_family`, the one that closes such strips for curves; operators of
+dimension at most ``MAX_STRIP_DIMENSION``, a single spectrum-maximising product with a simple leading eigenvalue
+at the end). When neither closes it the strip stays *inconclusive*, reported with its width and the reasons. The same
 concepts as the univariate ``range`` (:func:`analysis.regularity.ranges.ck_parameter_set`: certified grid
 verdicts, exact eigenvalue crossings of the s.m.p., certified interior); the interior here is proven by the
 convex-hull JSR on boxes instead of the Dyn–Levin norm sets (which need a factorisation the bivariate symbol
@@ -44,7 +46,8 @@ A perturbed tensor hat function: ``T_0(t)`` has the eigenvalue 1 exactly at ``t 
 ['4*x + (-3)', '4*x + 3']
 
 The whole C^0 set on ``[0, 1]`` (``ck_set(fam, 0, within=(0, 1), grid=2)``, about 5 s): C^0 certified on
-``[0, 191/256]``, not C^0 at ``3/4`` (exact) and ``1``, the strip ``(191/256, 3/4)`` undecided.
+``[0, 3/4)``, not C^0 at ``3/4`` (exact) and ``1``; the strip next to ``3/4`` by the leading subspace of
+dimension 7, where the JSR is ``t + 1/4``.
 
 References
 ----------

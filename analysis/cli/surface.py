@@ -213,7 +213,9 @@ def _range(args) -> None:
         lines.append(f"  {p} = {fmt(s['t'])}: {enc} ({s['status']}); {verdict}")
     cert = " u ".join(f"{'(' if I.left_open else '['}{fmt(I.start)}, {fmt(I.end)}{')' if I.right_open else ']'}"
                       if I.start != I.end else f"{{{fmt(I.start)}}}" for I in v["certified"]) or "nowhere"
-    lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes): {p} in {cert}")
+    ends = any((b.get("strip") or {}).get("method") for b in r.witness["boundaries"])
+    lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes"
+                 f"{', the strips next to exact ends as below' if ends else ''}): {p} in {cert}")
     lines.append(f"not C^{l} (certified counterexamples): " + (f"{p} = " + ", ".join(
         f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) if v["not_Cl"] else "none"))
     for b in r.witness["boundaries"]:

@@ -48,10 +48,15 @@ from flint import fmpq, fmpq_mat
 
 from ._pivots import qr_pivots
 
-__all__ = ["exact_polytope_bound", "floats", "MAX_SUBSETS"]
+__all__ = ["exact_polytope_bound", "floats", "MAX_SUBSETS", "MAX_NEW_VERTICES"]
 
 #: the most independent subsets of a support tried by the exact solve of a dependent support
 MAX_SUBSETS = 500
+#: the most images added as vertices by the exact closure
+MAX_NEW_VERTICES = 400
+#: an image whose bound exceeds 1 by at most this becomes a vertex (the float tolerance of the polytope is
+#: 1e-11; a larger excess is a genuine one and is reported)
+CLOSURE_EXCESS = Fraction(1, 10 ** 9)
 
 
 def floats(mats: Sequence[fmpq_mat]) -> list[np.ndarray]:
@@ -104,11 +109,15 @@ def _exact_solve(cols: list[fmpq_mat], x: fmpq_mat, max_subsets: int = MAX_SUBSE
 
 
 def exact_polytope_bound(mats: Sequence[fmpq_mat], r: fmpq, roots: Sequence[Sequence[fmpq]], st,
-                         coef_bits: int = 60) -> dict:
+                         coef_bits: int = 60, max_new: int = MAX_NEW_VERTICES) -> dict:
     """``{"bound": c*, ...}`` with ``||A_i / r||_P <= c*`` for every ``i`` (exact ``Fraction``; see the module
-    docstring), ``P`` the absolutely convex hull of the exact vertices of the float polytope ``st``; ``None``
-    as bound when the vertices do not span. Counts: ``vertex_images``, ``exact_solves``, ``residual_bounds``;
+    docstring), ``P`` the absolutely convex hull of the exact vertices of the float polytope ``st`` and of at most
+    ``max_new`` further images (an image whose bound exceeds 1 by at most ``CLOSURE_EXCESS`` becomes a vertex, exactly, and its images are
+    bounded in turn: the float polytope accepts images up to ``1 + 1e-11``); ``None`` as bound when the vertices
+    do not span. Counts: ``vertex_images``, ``exact_solves``, ``residual_bounds``, ``added_vertices``;
     ``worst``: ``(i, j)`` of the largest bound."""
+    from .parametric import _l1_coefficients
+
     n = mats[0].nrows()
     B = [M * (1 / r) for M in mats]
     base = [_col(list(u)) for u in roots]
@@ -118,7 +127,6 @@ def exact_polytope_bound(mats: Sequence[fmpq_mat], r: fmpq, roots: Sequence[Sequ
         if ro >= len(base):
             return {"bound": None, "reason": "the float polytope added complement roots (a further invariant subspace)"}
         x = base[ro]
-        key = (ro, ())
         for k, i in enumerate(path):
             key = (ro, path[: k + 1])
             if key in by_path:
@@ -137,34 +145,63 @@ def exact_polytope_bound(mats: Sequence[fmpq_mat], r: fmpq, roots: Sequence[Sequ
     except ZeroDivisionError:
         return {"bound": None, "reason": "the basis of vertices is singular"}
     index = {}
-    for k, v in enumerate(V):
+
+    def register(k, v):
         index[tuple(v[a, 0] for a in range(n))] = k
         index[tuple(-v[a, 0] for a in range(n))] = k
-    best, worst = Fraction(-1), None
-    counts = {"vertex_images": 0, "exact_solves": 0, "residual_bounds": 0}
+
+    for k, v in enumerate(V):
+        register(k, v)
+    counts = {"vertex_images": 0, "exact_solves": 0, "residual_bounds": 0, "added_vertices": 0}
     scale = 2 ** coef_bits
-    for j, v in enumerate(V):
-        for i in range(len(B)):
-            x = B[i] * v
-            if tuple(x[a, 0] for a in range(n)) in index:
-                bnd = Fraction(1)
-                counts["vertex_images"] += 1
-            else:
-                supp, lam = st.reps[(i, j)]
-                supp = [int(s) for s in supp]
-                sol = _exact_solve([V[s] for s in supp], x) if supp else None
-                if sol is not None:
-                    bnd = sum((abs(_fr(y)) for y in sol[1]), Fraction(0))
-                    counts["exact_solves"] += 1
-                else:
-                    cq = [fmpq(int(round(float(y) * scale)), scale) for y in lam]
-                    res = x
-                    for s, y in zip(supp, cq):
-                        res = res - V[s] * y
-                    g = Gi * res
-                    bnd = sum((abs(_fr(y)) for y in cq), Fraction(0)) + sum((abs(_fr(g[a, 0])) for a in range(n)),
-                                                                             Fraction(0))
-                    counts["residual_bounds"] += 1
-            if bnd > best:
-                best, worst = bnd, (i, j)
-    return {"bound": best, "worst": worst, "vertices": len(V), **counts}
+
+    def bound(x, rep):
+        if tuple(x[a, 0] for a in range(n)) in index:
+            counts["vertex_images"] += 1
+            return Fraction(1)
+        if rep is None:
+            lp = _l1_coefficients(Vf, np.array([float(x[a, 0]) for a in range(n)]))
+            if lp is None:
+                return None
+            rep = lp
+        supp, lam = [int(s) for s in rep[0]], rep[1]
+        sol = _exact_solve([V[s] for s in supp], x) if supp else None
+        if sol is not None:
+            counts["exact_solves"] += 1
+            return sum((abs(_fr(y)) for y in sol[1]), Fraction(0))
+        cq = [fmpq(int(round(float(y) * scale)), scale) for y in lam]
+        res = x
+        for s_, y in zip(supp, cq):
+            res = res - V[s_] * y
+        g = Gi * res
+        counts["residual_bounds"] += 1
+        return sum((abs(_fr(y)) for y in cq), Fraction(0)) + sum((abs(_fr(g[a, 0])) for a in range(n)), Fraction(0))
+
+    bounds: dict = {}
+    todo = [(i, j) for j in range(len(V)) for i in range(len(B))]
+    while todo:
+        outside = []
+        for i, j in todo:
+            x = B[i] * V[j]
+            b = bound(x, st.reps.get((i, j)) if j < len(st.V) else None)
+            bounds[(i, j)] = b
+            if b is not None and 1 < b <= 1 + CLOSURE_EXCESS:
+                outside.append((i, j, x))
+        todo = []
+        for i, j, x in outside:
+            if tuple(x[a, 0] for a in range(n)) in index:       # added meanwhile
+                bounds[(i, j)] = Fraction(1)
+                continue
+            if counts["added_vertices"] >= max_new:
+                break
+            counts["added_vertices"] += 1
+            V.append(x)
+            register(len(V) - 1, x)
+            bounds[(i, j)] = Fraction(1)
+            todo += [(i2, len(V) - 1) for i2 in range(len(B))]
+        if outside:
+            Vf = np.array([[float(v[a, 0]) for a in range(n)] for v in V]).T
+    if any(b is None for b in bounds.values()):
+        return {"bound": None, "reason": "a linear program of the exact closure failed", **counts}
+    worst = max(bounds, key=lambda key: bounds[key])
+    return {"bound": bounds[worst], "worst": worst, "vertices": len(V), **counts}
