@@ -51,7 +51,7 @@ from ._pivots import qr_pivots
 __all__ = ["exact_polytope_bound", "floats", "MAX_SUBSETS", "MAX_NEW_VERTICES"]
 
 #: the most independent subsets of a support tried by the exact solve of a dependent support
-MAX_SUBSETS = 500
+MAX_SUBSETS = 50
 #: the most images added as vertices by the exact closure
 MAX_NEW_VERTICES = 400
 #: an image whose bound exceeds 1 by at most this becomes a vertex (the float tolerance of the polytope is
@@ -84,10 +84,12 @@ def _solve_cols(cols: list[fmpq_mat], x: fmpq_mat):
     return rank, ([R[i, s] for i in range(s)] if len(piv) == s else None), True
 
 
-def _exact_solve(cols: list[fmpq_mat], x: fmpq_mat, max_subsets: int = MAX_SUBSETS):
-    """The least ``||c||_1`` of the exact solutions of ``sum c_k cols_k = x`` supported on independent subsets
-    of the columns (the basic solutions of the restricted linear program, which contain an optimum), as
-    ``(positions, c)``; None when ``x`` is not in their span or there are too many subsets."""
+def _exact_solve(cols: list[fmpq_mat], x: fmpq_mat, lam=None, max_subsets: int = MAX_SUBSETS):
+    """An exact solution of ``sum c_k cols_k = x`` supported on independent columns, as ``(positions, c)``: the
+    unique one when the columns are independent; else the columns taken greedily by decreasing float coefficient
+    ``|lam_k|`` while they stay independent (one exact solve), and when that is inconsistent the least ``||c||_1``
+    over at most ``max_subsets`` independent subsets (the basic solutions of the restricted linear program
+    contain an optimum). None when ``x`` is not in their span."""
     from itertools import combinations
 
     rank, c, consistent = _solve_cols(cols, x)
@@ -95,11 +97,23 @@ def _exact_solve(cols: list[fmpq_mat], x: fmpq_mat, max_subsets: int = MAX_SUBSE
         return None
     if c is not None:
         return list(range(len(cols))), c
+    if lam is not None:
+        n = x.nrows()
+        F = np.array([[float(col[a, 0]) for a in range(n)] for col in cols]).T
+        chosen: list[int] = []
+        for k in np.argsort(-np.abs(np.asarray(lam, dtype=float)), kind="stable"):
+            if np.linalg.matrix_rank(F[:, chosen + [int(k)]]) > len(chosen):
+                chosen.append(int(k))
+            if len(chosen) == rank:
+                break
+        _, c2, _ = _solve_cols([cols[j] for j in chosen], x)
+        if c2 is not None:
+            return chosen, c2
     best = None
     for k, sub in enumerate(combinations(range(len(cols)), rank)):
         if k >= max_subsets:
-            return None if best is None else best[:2]
-        r2, c2, ok = _solve_cols([cols[j] for j in sub], x)
+            break
+        _, c2, _ = _solve_cols([cols[j] for j in sub], x)
         if c2 is None:
             continue
         norm = sum((abs(_fr(y)) for y in c2), Fraction(0))
@@ -165,7 +179,7 @@ def exact_polytope_bound(mats: Sequence[fmpq_mat], r: fmpq, roots: Sequence[Sequ
                 return None
             rep = lp
         supp, lam = [int(s) for s in rep[0]], rep[1]
-        sol = _exact_solve([V[s] for s in supp], x) if supp else None
+        sol = _exact_solve([V[s] for s in supp], x, lam) if supp else None
         if sol is not None:
             counts["exact_solves"] += 1
             return sum((abs(_fr(y)) for y in sol[1]), Fraction(0))
