@@ -485,7 +485,7 @@ def _end_strip(F, theta, g, end, side, rec, work, end_budget, certified) -> bool
     except (ArithmeticError, ValueError, ZeroDivisionError) as exc:
         c = {"closed": False, "reason": f"{type(exc).__name__}: {exc}", "work": 0}
     work.charge(c.get("work", 0))
-    info = {k: c[k] for k in ("closed", "reason", "work", "letters", "lambda", "leading_dimension",
+    info = {k: c[k] for k in ("closed", "reason", "work", "letters", "lambda", "lambda_kind", "leading_dimension",
                               "polytope_vertices", "polytope_bound", "quotient_upper") if k in c}
     if "mu" in c:
         (m0, m1), q = c["mu"], lambda x: sp.Rational(int(x.p), int(x.q))

@@ -260,10 +260,12 @@ def _end_strip_line(l, p, b, es, fmt) -> str:
     quo = (f"; on the quotient JSR <= {float(q):.4g} (certified)" if q is not None else "")
     a, e = b["strip"]["from"], b["exact"]
     iv = f"[{fmt(a)}, {fmt(e)})" if a < e else f"({fmt(e)}, {fmt(a)}]"
-    return (f"C^{l} certified up to the end: on {p} in {iv} the JSR is {fmt(es['lambda'])} on a common "
-            f"invariant subspace of dimension {es['leading_dimension']} (eigenvalue of "
-            f"T_{','.join(map(str, es['letters']))}; invariant polytope of the convex hull in 1/lambda, "
-            f"{es['polytope_vertices']} exact vertices, norm bound {fmt(es['polytope_bound'])}){quo}")
+    how = ("the eigenvalue of " + ", ".join(f"T_{e}" for e in es["letters"]) if es.get("lambda_kind") == "eigenvalue"
+           else "the tangent of the eigenvalue of " + ", ".join(f"T_{e}" for e in es["letters"]))
+    rel = "is" if es.get("lambda_kind") == "eigenvalue" else "is at most"
+    return (f"C^{l} certified up to the end: on {p} in {iv} the JSR {rel} {fmt(es['lambda'])} on a common "
+            f"invariant subspace of dimension {es['leading_dimension']} ({how}; invariant polytope of the convex "
+            f"hull in 1/lambda, {es['polytope_vertices']} exact vertices, norm bound {fmt(es['polytope_bound'])}){quo}")
 
 
 def cmd_surface(args) -> None:
