@@ -92,3 +92,20 @@ def test_exact_bound_on_a_face_with_a_dependent_support():
     st = build_polytope(floats(A), 1.0, [[float(x) for x in u] for u in roots], work=Work(1000))
     b = exact_polytope_bound(A, q(1), roots, st)
     assert b["bound"] == 1
+
+
+def test_cli_line_says_equal_or_at_most():
+    import sympy as sp
+
+    from analysis.cli.surface import _end_strip_line
+
+    t = sp.Symbol("t")
+    b = {"strip": {"from": sp.Rational(1, 2), "method": "m"}, "exact": sp.Rational(3, 4)}
+    es = {"lambda": t + sp.Rational(1, 4), "lambda_kind": "eigenvalue", "letters": [0, 2], "leading_dimension": 7,
+          "polytope_vertices": 14, "polytope_bound": 1, "quotient_upper": sp.Rational(1, 2)}
+    line = _end_strip_line(0, "t", b, es, sp.sstr)
+    assert "on t in [1/2, 3/4) the JSR is t + 1/4" in line and "the eigenvalue of T_0, T_2" in line
+    assert "quotient JSR <= 0.5" in line
+    b = {"strip": {"from": sp.Rational(1, 32), "method": "m"}, "exact": sp.Integer(0)}
+    line = _end_strip_line(1, "w", b, {**es, "lambda_kind": "tangent", "quotient_upper": None}, sp.sstr)
+    assert "on w in (0, 1/32] the JSR is at most" in line and "tangent" in line and "quotient" not in line
