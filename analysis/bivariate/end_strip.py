@@ -22,7 +22,7 @@ operators of :class:`~analysis.bivariate.ranges.ParametricFamily`), an exact end
    monotone on ``[a, t*]`` (``lambda > 0`` there). So for every ``t`` in ``[a, t*]``, ``T_eps(t)|U / lambda(t)``
    is a convex combination of ``T_eps(a)|U / lambda(a)`` and ``T_eps(t*)|U / theta``, and the JSR of a set is
    that of its convex hull: an invariant polytope of these ``2m`` matrices with ``||.||_P <= 1``
-   (:func:`analysis.jsr.exact_polytope.exact_polytope_bound`: exact vertices from the moving-free roots ``v``)
+   (:func:`analysis.jsr.exact_polytope.exact_polytope_bound`: exact vertices, products applied to the exact roots)
    proves ``JSR(T(t)|U) <= lambda(t)`` on the whole of ``[a, t*]`` (hence ``= lambda(t)`` in the first case). The
    roots are the exact eigenvectors of the ``T_eps(t*)`` for ``theta``.
 4. **The quotient**: the convex hull in ``t`` (Bernstein coefficients = the end values for an affine family),
