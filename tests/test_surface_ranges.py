@@ -14,7 +14,7 @@ from analysis.bivariate.mask_file import mask_from_data, read_mask_file
 from analysis.bivariate.ranges import ck_set, parametric_family
 from analysis.bivariate.transition import restricted_transition
 from analysis.cli.main import main
-from analysis.result import INCONCLUSIVE, AnalysisError
+from analysis.result import CERTIFIED, AnalysisError
 
 #: a perturbed tensor hat function: T_0(t) has the eigenvalue 1 at t = 3/4 exactly
 HAT = "(1+z1)**2*(1+z2)**2/(4*z1*z2) + t*(1-z1**2)*(1-z2**2)/(z1*z2)"
@@ -44,18 +44,21 @@ def test_bernstein_ends_are_the_matrices_at_the_ends_and_the_hull_holds_the_midd
     assert mid == B.at((u + v) / 2)[0]
 
 
-def test_hat_family_c0_set(hat):
+def test_hat_family_c0_set_reaches_its_exact_end(hat):
     r = ck_set(hat, 0, within=(0, 1), grid=2, budget=200_000, point_budget=5000, box_budget=5000, approach=3)
-    assert r.status == INCONCLUSIVE                     # a strip next to the eigenvalue-type end stays open
     (b,) = r.witness["boundaries"]
     assert b["exact"] == sp.Rational(3, 4) and "T_0" in b["how"]
-    assert b["strip"]["closed"] is False and "not simple" in b["strip"]["reason"]     # a double eigenvalue 1
+    # the strip next to the end: a leading subspace of dimension 7 where the JSR is t + 1/4 (exact polytope
+    # of the hull in 1/lambda, bound exactly 1), the quotient's JSR at most 1/2 < 1
+    es = b["end_strip"]
+    t = sp.Symbol("t")
+    assert es["closed"] and es["lambda"] == t + sp.Rational(1, 4) and es["leading_dimension"] == 7
+    assert es["polytope_bound"] == 1 and es["quotient_upper"] < 1 and es["letters"] == [0, 1, 2, 3]
+    assert r.status == CERTIFIED and r.value["gaps"] == []
     assert sp.Rational(3, 4) in r.value["not_Cl"] and 1 in r.value["not_Cl"]
     (I,) = r.value["certified"]
-    assert I.start == 0 and sp.Rational(5, 8) < I.end < sp.Rational(3, 4)
-    (gap,) = r.value["gaps"]
-    assert gap == (I.end, sp.Rational(3, 4))
-    assert all(x["certified_Cl"] for x in r.witness["boxes"] if x["to"] <= I.end)
+    assert (I.start, I.end, I.left_open, I.right_open) == (0, sp.Rational(3, 4), False, True)
+    assert all(x["certified_Cl"] for x in r.witness["boxes"] if x["to"] <= sp.Rational(5, 8))
 
 
 def test_c_set_refuses_what_it_cannot_certify(hat):

@@ -19,11 +19,13 @@ Three certified ingredients (for an isotropic ``M``, :mod:`analysis.bivariate.ho
   ``S_a(t*)`` is not ``C^l`` (checked by a certified point verdict when ``t*`` is rational).
 
 The boxes approach an end of eigenvalue type geometrically but never reach it (the JSR tends to
-``rho(M)^{-l}``). The strip left next to an exact end is then given to the parametric invariant polytope
-(:func:`analysis.jsr.parametric.close_family`, the one that closes such strips for curves; operators of dimension
-at most ``MAX_STRIP_DIMENSION``), which needs a single spectrum-maximising product with a simple leading
-eigenvalue at the end; the symmetric families of surface subdivision usually have several (the symmetric
-digits), and then the strip stays *inconclusive*, reported with its width and the reason. The same
+``rho(M)^{-l}``). The strip between the last C^l grid point and an exact rational end of an affine family is
+first given to :func:`analysis.bivariate.end_strip.close_end_strip` (exact: the leading subspace split off, its
+JSR bounded by an affine ``lambda(t)`` through an invariant polytope of the convex hull in ``1/lambda``, the
+quotient by the engine; any number of letters with the eigenvalue at the end), then to the parametric invariant
+polytope (:func:`analysis.jsr.parametric.close_family`, the one that closes such strips for curves; operators of
+dimension at most ``MAX_STRIP_DIMENSION``, a single spectrum-maximising product with a simple leading eigenvalue
+at the end). When neither closes it the strip stays *inconclusive*, reported with its width and the reasons. The same
 concepts as the univariate ``range`` (:func:`analysis.regularity.ranges.ck_parameter_set`: certified grid
 verdicts, exact eigenvalue crossings of the s.m.p., certified interior); the interior here is proven by the
 convex-hull JSR on boxes instead of the Dyn–Levin norm sets (which need a factorisation the bivariate symbol
@@ -44,7 +46,8 @@ A perturbed tensor hat function: ``T_0(t)`` has the eigenvalue 1 exactly at ``t 
 ['4*x + (-3)', '4*x + 3']
 
 The whole C^0 set on ``[0, 1]`` (``ck_set(fam, 0, within=(0, 1), grid=2)``, about 5 s): C^0 certified on
-``[0, 191/256]``, not C^0 at ``3/4`` (exact) and ``1``, the strip ``(191/256, 3/4)`` undecided.
+``[0, 3/4)``, not C^0 at ``3/4`` (exact) and ``1``; the strip next to ``3/4`` by the leading subspace of
+dimension 7, where the JSR is ``t + 1/4``.
 
 References
 ----------
@@ -78,6 +81,9 @@ MAX_DEGREE = 6
 #: the largest restricted dimension for which the strip next to an exact end is tried with the parametric
 #: invariant polytope (:func:`analysis.jsr.parametric.close_family`)
 MAX_STRIP_DIMENSION = 24
+#: work budget of the exact end-strip argument (:func:`analysis.bivariate.end_strip.close_end_strip`: the leading
+#: subspace split off, its JSR bounded by the moving eigenvalue through a convex hull in ``1/lambda``)
+END_BUDGET = 250_000
 
 
 def _q(x) -> fmpq:
@@ -265,7 +271,7 @@ def _crossings(F, word, theta, lo, hi, work: Work):
 
 def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: int = 8,
            budget: int = 400_000, point_budget: int = 20_000, box_budget: int = 20_000, approach: int = 6,
-           tol=sp.Rational(1, 10 ** 6), strip_budget: int = 30_000) -> Result:
+           tol=sp.Rational(1, 10 ** 6), strip_budget: int = 30_000, end_budget: int = END_BUDGET) -> Result:
     """Where is the one-parameter bivariate family ``general`` ``C^l`` on ``within``?  (module docstring)
 
     ``value``: ``{"certified": [Part, ...]`` (proven C^l: intervals and points with exact ends), ``"not_Cl": [exact points certified not
@@ -336,7 +342,7 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
         else:
             good, bad = (s0, s1) if s0["C^l"] else (s1, s0)
             boundaries.append(_boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol,
-                                        try_box, certified, not_cl, gaps, strip_budget))
+                                        try_box, certified, not_cl, gaps, strip_budget, end_budget))
     for s in samples:
         if s["C^l"]:
             certified.append((s["t"], s["t"]))
@@ -346,7 +352,9 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
     undecided = [s["t"] for s in samples if s["C^l"] is None]
     status = CERTIFIED if not gap_list and not undecided else INCONCLUSIVE
     prov: dict[str, Any] = {"method": "certified Hölder verdicts at grid points; exact s.m.p. eigenvalue crossings "
-                                      "(not C^l); JSR of the Bernstein coefficient matrices on boxes (C^l on the box)",
+                                      "(not C^l); JSR of the Bernstein coefficient matrices on boxes (C^l on the box); next to an "
+                                      "exact end, a leading invariant subspace and an exact invariant polytope of the "
+                                      "convex hull in 1/lambda (the end strip)",
                             "work": work.spent, "budget": budget, "grid": grid}
     if gap_list:
         prov["message"] = ("undecided: " + ", ".join(f"({sp.sstr(a)}, {sp.sstr(b)}) (width {float(b - a):.3g})"
@@ -394,7 +402,7 @@ def _merge(gaps):
 
 
 def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol, try_box, certified, not_cl,
-              gaps, strip_budget=0) -> dict:
+              gaps, strip_budget=0, end_budget=0) -> dict:
     """Locate the end of C^l between a certified C^l grid point and a certified counterexample, and cover
     the part next to it by boxes; what stays between the last box and the end is a gap."""
     g, b = good["t"], bad["t"]
@@ -441,6 +449,10 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
         last = x = nxt
     rec["certified_Cl_to"] = last
     lo_gap, hi_gap = (last, end.expr) if side > 0 else (end.expr, last)
+    if "exact" in rec and end.is_rational and F.degree == 1 and end_budget and not work.exhausted:
+        closed = _end_strip(F, theta, g, end, side, rec, work, end_budget, certified)
+        if closed:
+            return {**rec, "status": CERTIFIED}
     if "exact" in rec and strip_budget and F.dim > MAX_STRIP_DIMENSION:
         rec["strip"] = {"closed": False, "reason": f"not attempted: the operators have dimension {F.dim} > "
                                                    f"{MAX_STRIP_DIMENSION} (the exact matrix polynomials are too large)"}
@@ -462,3 +474,33 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
     gaps.append((lo_gap, hi_gap))
     rec["status"] = CERTIFIED if "exact" in rec else INCONCLUSIVE
     return rec
+
+
+def _end_strip(F, theta, g, end, side, rec, work, end_budget, certified) -> bool:
+    """The strip between the C^l grid point ``g`` and the exact rational end, by
+    :func:`analysis.bivariate.end_strip.close_end_strip` (exact: leading subspace, hull in ``1/lambda``,
+    quotient); records ``rec["end_strip"]`` and, when it closes, the certified half-open interval."""
+    from .end_strip import close_end_strip
+
+    try:
+        c = close_end_strip(F.C, _q(theta), _q(end.expr), _q(g), budget=min(end_budget, max(1, int(work.left))))
+    except (ArithmeticError, ValueError, ZeroDivisionError) as exc:
+        c = {"closed": False, "reason": f"{type(exc).__name__}: {exc}", "work": 0}
+    work.charge(c.get("work", 0))
+    info = {k: c[k] for k in ("closed", "reason", "work", "letters", "lambda", "lambda_kind", "leading_dimension",
+                              "polytope_vertices", "polytope_bound", "quotient_upper") if k in c}
+    if "mu" in c:
+        (m0, m1), q = c["mu"], lambda x: sp.Rational(int(x.p), int(x.q))
+        info["lambda"] = q(m0) + q(m1) * F.param
+    for k in ("polytope_bound", "quotient_upper"):
+        if info.get(k) is not None:
+            info[k] = sp.Rational(str(info[k]))
+    rec["end_strip"] = info
+    if not c["closed"]:
+        return False
+    lo, hi = (g, end.expr) if side > 0 else (end.expr, g)
+    certified.append((lo, hi, side < 0, side > 0))
+    rec["certified_Cl_to"] = rec["exact"]
+    rec["strip"] = {"closed": True, "method": "leading subspace and convex hull in 1/lambda", "from": g,
+                    "work": c.get("work", 0)}
+    return True

@@ -214,18 +214,24 @@ def _range(args) -> None:
         lines.append(f"  {p} = {fmt(s['t'])}: {enc} ({s['status']}); {verdict}")
     cert = " u ".join(f"{'(' if I.left_open else '['}{fmt(I.start)}, {fmt(I.end)}{')' if I.right_open else ']'}"
                       if I.start != I.end else f"{{{fmt(I.start)}}}" for I in v["certified"]) or "nowhere"
-    lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes): {p} in {cert}")
+    ends = any((b.get("strip") or {}).get("method") for b in r.witness["boundaries"])
+    lines.append(f"C^{l} (certified: point verdicts, JSR of the Bernstein coefficient matrices on boxes"
+                 f"{', the strips next to exact ends as below' if ends else ''}): {p} in {cert}")
     lines.append(f"not C^{l} (certified counterexamples): " + (f"{p} = " + ", ".join(
         f"{fmt(x)}" + ("" if x.is_Rational else f" ~ {float(x):.12g}") for x in v["not_Cl"]) if v["not_Cl"] else "none"))
     for b in r.witness["boundaries"]:
         if "exact" in b:
             st = b.get("strip") or {}
-            upto = (f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
+            es = b.get("end_strip") or {}
+            upto = (_end_strip_line(l, p, b, es, fmt) if st.get("method") else
+                    f"C^{l} certified up to the end (the strip next to it by a parametric invariant polytope, "
                     f"s.m.p. T_{st['product']}, {st['pieces']} sub-intervals)" if st.get("closed") else
                     (f"C^{l} certified up to {fmt(b['certified_Cl_to'])}" if b["certified_Cl_to"] != b["certified_Cl_at"]
                      else f"no box toward it certified: the nearest certified C^{l} point is {fmt(b['certified_Cl_at'])}")
                     + (f"; the strip next to the end not closed: {st['reason']}" if st else ""))
             lines.append(f"  end {fmt(b['exact'])} exact: {b['how']} (JSR >= rho(M)^-{l} there); {upto}")
+            if es and not es.get("closed") and es.get("reason"):
+                lines.append(f"    (the exact end-strip argument: {es['reason']})")
         else:
             lines.append(f"  end between {fmt(b['certified_Cl_to'])} (C^{l}) and {fmt(b['certified_not_Cl_at'])} "
                          f"(not C^{l}): no exact crossing found")
@@ -259,6 +265,34 @@ def _has_free_parameter(args) -> bool:
         return any(p.name not in given for p in get(args.scheme).mask(general=True).params)
     _, a, _, _ = _mask_from_args(args, keep="")
     return bool(a.params)
+
+
+def _decimal_up(q, digits: int = 4) -> str:
+    """``q`` (a rational upper bound) rounded UP to ``digits`` decimals, so the printed bound stays a bound.
+
+    >>> _decimal_up("38284/100000"), _decimal_up(1)
+    ('0.3829', '1.0000')
+    """
+    from fractions import Fraction
+    from math import ceil
+
+    x = Fraction(str(q))
+    n = ceil(x * 10 ** digits)
+    return f"{'-' if n < 0 else ''}{abs(n) // 10 ** digits}.{abs(n) % 10 ** digits:0{digits}d}"
+
+
+def _end_strip_line(l, p, b, es, fmt) -> str:
+    """The boundary line of a strip closed by :func:`analysis.bivariate.end_strip.close_end_strip`."""
+    q = es.get("quotient_upper")
+    quo = (f"; on the quotient the JSR is at most {_decimal_up(q)} (certified)" if q is not None else "")
+    a, e = b["strip"]["from"], b["exact"]
+    iv = f"[{fmt(a)}, {fmt(e)})" if a < e else f"({fmt(e)}, {fmt(a)}]"
+    how = ("the eigenvalue of " + ", ".join(f"T_{e}" for e in es["letters"]) if es.get("lambda_kind") == "eigenvalue"
+           else "the tangent of the eigenvalue of " + ", ".join(f"T_{e}" for e in es["letters"]))
+    rel = "is" if es.get("lambda_kind") == "eigenvalue" else "is at most"
+    return (f"C^{l} certified up to the end: on {p} in {iv} the JSR {rel} {fmt(es['lambda'])} on a common "
+            f"invariant subspace of dimension {es['leading_dimension']} ({how}; invariant polytope of the convex "
+            f"hull in 1/lambda, {es['polytope_vertices']} exact vertices, norm bound {fmt(es['polytope_bound'])}){quo}")
 
 
 def cmd_surface(args) -> None:
