@@ -88,6 +88,8 @@ def test_cli_one_verdict_when_no_parameter_is_free(capsys):
     assert capsys.readouterr().out.splitlines()[-1] == "C^1: no   [certified]"
     assert main(["surface", "--symbol", bilinear, "--C", "31"]) == 2
     assert "between 0 and 30" in capsys.readouterr().err
+    assert main(["surface", "--symbol", bilinear, "--C", "1", "--within=0,1"]) == 2
+    assert "no free parameter: drop --within (--C 1 alone gives its C^1 verdict)" in capsys.readouterr().err
 
 
 # --------------------------------------------------------------------------- mask files

@@ -197,6 +197,8 @@ def _range(args) -> None:
     budget = work_arg(args.budget, "--budget")
     total = work_arg(args.range_budget, "--range-budget")
     general, _, label, vals = _mask_from_args(args, keep=args.param_name)
+    if not general.params:
+        raise AnalysisError(f"{label} has no free parameter: drop --within (--C {l} alone gives its C^{l} verdict)")
     if len(general.params) != 1:
         raise AnalysisError("a C^l set needs exactly one free parameter: fix the others with --param NAME=VALUE")
     r = ck_set(general, l, args.param_name, within=within, grid=grid, budget=total, point_budget=budget,
