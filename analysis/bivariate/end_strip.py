@@ -154,7 +154,6 @@ def close_end_strip(C: Sequence[Sequence[fmpq_mat]], theta: fmpq, end: fmpq, sta
     if any(len(cs) != 2 for cs in C):
         return done("the family is not affine in the parameter")
     n = C[0][0].nrows()
-    m = len(C)
     ends = [cs[0] + cs[1] * end for cs in C]
     lead = [(e, v) for e, T in enumerate(ends) for v in _kernel_cols(T - _eye(n, theta))]
     if not lead:
