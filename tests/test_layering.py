@@ -1,6 +1,6 @@
 """The layers of the engine cannot decay (issue 10): an AST walk over every import.
 
-algebra -> stationary -> jsr -> regularity -> levels / nonuniform -> claims -> report -> cli / api
+algebra -> stationary -> jsr -> regularity -> bivariate -> levels / nonuniform -> claims -> report -> cli / api
 (the notebook façade ``analysis.api``, a sibling of the command line):
 a module may import its own layer and the layers to its left (and the base modules
 ``analysis.result``, ``analysis.jsonable``, ``analysis.progress``, ``analysis._lazy``), never one to its right; ``levels`` and
@@ -25,7 +25,7 @@ PACKAGES = ("analysis", "schemes", "papers")
 
 #: rank of each engine layer; equal rank = siblings (may not import each other)
 LAYERS = {"result": 0, "jsonable": 0, "progress": 0, "_lazy": 0, "algebra": 1, "stationary": 2, "jsr": 3, "regularity": 4,
-          "bivariate": 4,
+          "bivariate": 4.5,
           "levels": 5, "nonuniform": 5, "claims": 6, "report": 7, "cli": 8, "api": 8, "__main__": 9}
 #: extraordinary vertices of surface schemes: above the algebra (local matrices, their spectra)
 LAYERS["vertex"] = 5

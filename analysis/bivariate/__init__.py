@@ -13,8 +13,10 @@ vectors at 0, 120 and 60 degrees), so that Loop's and the butterfly masks are ma
 Modules: :mod:`.dilation` (digits, dual points, isotropy), :mod:`.mask` (the mask and its readers),
 :mod:`.algebra` (sum rules, generation and reproduction degree, symmetry, box-spline factors),
 :mod:`.transition` (invariant support, transition operators, difference subspaces),
-:mod:`.holder` (certified Hölder exponent and C^k verdicts).
+:mod:`.holder` (certified Hölder exponent and C^k verdicts), :mod:`.ranges` (C^l sets of one-parameter
+families), :mod:`.tensor` (tensor-product masks reduced exactly to two univariate schemes).
 
-Layering: a sibling of :mod:`analysis.regularity`; may import :mod:`analysis.algebra` (the reader) and
-:mod:`analysis.jsr` (the certified joint spectral radius), nothing above.
+Layering: just above :mod:`analysis.regularity`; may import :mod:`analysis.algebra` (the reader),
+:mod:`analysis.jsr` (the certified joint spectral radius) and :mod:`analysis.regularity` (the univariate analysis,
+to which a tensor-product mask reduces: :mod:`.tensor`), nothing above.
 """

@@ -201,6 +201,11 @@ def _range(args) -> None:
         raise AnalysisError(f"{label} has no free parameter: drop --within (--C {l} alone gives its C^{l} verdict)")
     if len(general.params) != 1:
         raise AnalysisError("a C^l set needs exactly one free parameter: fix the others with --param NAME=VALUE")
+    from ..bivariate.tensor import tensor_factors
+
+    t = tensor_factors(general)
+    if t.value is not None:                       # b(z1) c(z2), M = m I: the univariate route, exactly
+        return _tensor_range(args, general, t.value, label, l, within, grid, budget)
     r = ck_set(general, l, args.param_name, within=within, grid=grid, budget=total, point_budget=budget,
                box_budget=budget)
     p = r.witness["parameter"]
@@ -254,6 +259,87 @@ def _range(args) -> None:
             "boundaries": [{k: (fmt(x) if isinstance(x, sp.Basic) else x) for k, x in b.items() if k != "between"}
                            for b in r.witness["boundaries"]],
             "work": r.provenance["work"]}
+    _emit(args, data, "\n".join(lines))
+
+
+def _set_text(S, p: str | None = None) -> str:
+    """An :class:`~analysis.algebra.algebraic.IntervalSet` with its irrational ends also as decimals."""
+    import sympy as sp
+
+    def end(x):
+        return sp.sstr(x.expr) if x.is_rational else f"{sp.sstr(x.expr)} ~ {float(x):.10g}"
+
+    out = []
+    for lo, hi, lc, hc in S.parts:
+        if lo.compare(hi) == 0:
+            out.append(end(lo) if p else "{" + end(lo) + "}")
+        else:
+            out.append(f"{'[' if lc else '('}{end(lo)}, {end(hi)}{']' if hc else ')'}")
+    if p:
+        return f"{p} = " + ", ".join(out) if out else ""
+    return " u ".join(out) or "nowhere"
+
+
+def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
+    """``--C L --within`` on a tensor-product family (:func:`analysis.bivariate.tensor.tensor_ck_set`): the factors,
+    their univariate C^L sets (the route of ``subdiv range``) and the intersection."""
+    import sympy as sp
+
+    from ..algebra.reader import as_expr
+    from ..bivariate.tensor import tensor_ck_set
+    from .regularity import _interior_lines
+
+    r = tensor_ck_set(general, l, args.param_name, within=within, grid=grid, budget=budget, factors=tf)
+    p, m, v = r.witness["parameter"], tf.m, r.value
+    fmt = sp.sstr
+    same = tf.same
+    lines = [f"{label}: where is it C^{l}? {p} in [{fmt(within[0])}, {fmt(within[1])}]   [{r.status}]",
+             f"the mask is a tensor product a(z1, z2) = b(z1) {'b' if same else 'c'}(z2) with M = {m}I (exact: its "
+             f"{tf.grid[0]} x {tf.grid[1]} coefficient grid A has rank 1 over Q({p}), {m * m} A = r s^T identically "
+             f"with r, s its row and column sums; the mask sums to {m * m} for every {p}, so "
+             f"{'b sums' if same else 'b and c sum'} to {m} on the whole interval):",
+             f"  b(z) = {tf.b}"]
+    if not same:
+        lines.append(f"  c(z) = {tf.c}")
+    lines.append(f"  so phi = phi_b (x) phi_{'b' if same else 'c'}, and S_a is C^{l} exactly where "
+                 + ("S_b is" if same else "S_b and S_c are") + f" C^{l} (docs/surfaces.md)")
+    factors = [("b", r.witness["b"])] + ([] if same else [("c", r.witness["c"])])
+    data_f = []
+    for name, f in factors:
+        st = "certified" if f.sets["undecided"].is_empty else "inconclusive"
+        how = {"ck_parameter_set": f"univariate, as subdiv range --grid {grid}",
+               "ck_range": f"univariate {m}-ary, as subdiv range: exact norm and eigenvalue sets"}.get(
+            f.route, "no parameter: one certified verdict")
+        lines.append(f"C^{l} of S_{name} ({how}): {p} in {_set_text(f.sets['Cl'])}   [{st}]")
+        for x, why in f.ends:
+            x = as_expr(x)
+            lines.append(f"  end {fmt(x)}{'' if x.is_Rational else f' ~ {float(x):.10g}'} exact: {why}")
+        for run in (f.result.value if f.route == "ck_parameter_set" else []):
+            if run.get("interior"):
+                lines.extend(_interior_lines(run["interior"], l))
+        data_f.append({"factor": name, "symbol": str(f.symbol), "mask": [fmt(x) for x in f.symbol.mask],
+                       "start": f.symbol.start, "status": st,
+                       **{k: S.to_json() for k, S in f.sets.items()},
+                       "ends": [{"exact": fmt(x), "how": why} for x, why in f.ends]})
+    lines.append(f"C^{l} (certified: the intersection of the univariate C^{l} sets): {p} in {_set_text(v['Cl'])}")
+    lines.append(f"not C^{l} (certified counterexamples): " + (_set_text(v["not_Cl"], p) or "none"))
+    if not v["undecided"].is_empty:
+        lines.append(f"undecided (inconclusive): {_set_text(v['undecided'])}")
+    if not v["sampled"].is_empty:
+        lines.append(f"between counterexamples (sampled, not examined): {_set_text(v['sampled'])}")
+
+    def part(lo, hi, lc, hc):
+        return {"from": fmt(lo.expr), "to": fmt(hi.expr), "from_open": not lc, "to_open": not hc}
+
+    data = {"scheme": label, "parameter": p, "l": l, "within": [fmt(w) for w in within], "status": r.status,
+            "route": "tensor product",
+            "tensor": {"m": m, "b": str(tf.b), "c": str(tf.c), "same_factor": same, "grid": list(tf.grid)},
+            "factors": data_f,
+            "certified": [part(*x) for x in v["Cl"].parts],
+            "not_Cl": [fmt(lo.expr) if lo.compare(hi) == 0 else part(lo, hi, lc, hc)
+                       for lo, hi, lc, hc in v["not_Cl"].parts],
+            "gaps": [[fmt(lo.expr), fmt(hi.expr)] for lo, hi, _, _ in v["undecided"].parts],
+            "between_counterexamples": [[fmt(lo.expr), fmt(hi.expr)] for lo, hi, _, _ in v["sampled"].parts]}
     _emit(args, data, "\n".join(lines))
 
 
