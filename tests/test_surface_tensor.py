@@ -97,3 +97,13 @@ def test_a_triadic_tensor_family_uses_the_m_ary_route():
     assert r.status == "certified" and r.witness["m"] == 3 and r.witness["b"].route == "ck_range"
     assert str(r.value["Cl"]) == "(1/15, 1/9)"
     assert str(r.value["not_Cl"]) == "[-1/4, 1/15] U [1/9, 1/2]"
+
+
+def test_a_factor_without_the_parameter_is_one_verdict_on_the_whole_interval():
+    """four-point(w) (x) cubic B-spline: the B-spline is C^1 for every w, so the set is the four-point scheme's."""
+    four, cubic = schemes.get("four-point").symbol, schemes.get("bspline-3").symbol
+    r = tensor_ck_set(_tensor(four, cubic), 1, within=(0, sp.Rational(1, 4)), grid=4)
+    assert r.witness["c"].route.startswith("the point verdict") and str(r.witness["c"].sets["Cl"]) == "[0, 1/4]"
+    assert r.status == "certified" and r.value["Cl"].parts == r.witness["b"].sets["Cl"].parts
+    rough = tensor_ck_set(_tensor(four, schemes.get("bspline-1").symbol), 1, within=(0, sp.Rational(1, 4)), grid=4)
+    assert rough.value["Cl"].is_empty and str(rough.value["not_Cl"]) == "[0, 1/4]"    # the hat function: not C^1

@@ -29,7 +29,8 @@ at the end). When neither closes it the strip stays *inconclusive*, reported wit
 concepts as the univariate ``range`` (:func:`analysis.regularity.ranges.ck_parameter_set`: certified grid
 verdicts, exact eigenvalue crossings of the s.m.p., certified interior); the interior here is proven by the
 convex-hull JSR on boxes instead of the Dyn–Levin norm sets (which need a factorisation the bivariate symbol
-does not have).
+does not have). A tensor-product family (``M = m I``, a coefficient grid of rank 1) is reduced exactly to its two
+univariate factors instead (:mod:`analysis.bivariate.tensor`; ``subdiv surface --C L --within`` takes that route).
 
 Examples
 --------

@@ -14,8 +14,8 @@ factors are normalised to the m-ary sum ``m``:
 
 The reduction is made only when ``S`` is the constant ``m^2`` (a polynomial of degree 0 in ``t``): then ``b`` and
 ``c`` are polynomials in ``t`` with rational coefficients, sum to ``m`` **for every** ``t`` (so on the whole
-parameter interval, not only generically), and the identity ``A = b c^T`` is checked exactly, coefficient by
-coefficient. Otherwise (a minor not identically zero, a dilation other than ``m I``, a total depending on ``t``,
+parameter interval, not only generically), and ``S A = r s^T`` is ``A = b c^T``, checked exactly coefficient
+by coefficient. Otherwise (a minor not identically zero, a dilation other than ``m I``, a total depending on ``t``,
 coefficients that are not polynomials over ``Q``) nothing is reduced, and the reason is returned.
 
 Theorem
@@ -28,7 +28,7 @@ the refinable distributions satisfy ``phi_a = phi_b (x) phi_c`` (Fourier transfo
 
 (ii) ``S_a`` is ``C^l``-convergent if and only if ``S_b`` and ``S_c`` are.
 
-(iii) For every ``alpha > 0`` the Hölder space ``C^alpha(R^2)`` contains ``phi_a`` if and only if
+(iii) For every non-integer ``alpha > 0`` the Hölder space ``C^alpha(R^2)`` contains ``phi_a`` if and only if
 ``C^alpha(R)`` contains ``phi_b`` and ``phi_c``; hence the Hölder exponent of ``phi_a`` is
 ``min(alpha_b, alpha_c)`` (and ``phi_a`` is ``C^l`` iff ``phi_b`` and ``phi_c`` are).
 
@@ -39,8 +39,9 @@ univariate ``C^l`` sets (the point verdicts of :mod:`analysis.bivariate.holder` 
 
 *Proof.* (ii) Write ``b_n = S_b^n delta``, ``c_n = S_c^n delta``; ``S_a^n`` has the mask ``b_n (x) c_n``. ``S_a`` is
 ``C^l``-convergent when for ``|beta| <= l`` the divided differences ``m^{n|beta|} Delta^beta S_a^n f`` converge
-uniformly to ``d^beta F(m^{-n} .)``, ``F = sum_gamma f(gamma) phi_a(. - gamma)``, for every bounded ``f``; for a
-stationary scheme this is the convergence to 0, in the level-``n`` coset norm ``N_n(e) = sup_k sum_j
+uniformly to ``d^beta F(m^{-n} .)``, ``F = sum_gamma f(gamma) phi_a(. - gamma)``, uniformly for ``||f||_inf <= 1``
+(the form the JSR criteria characterise, with a geometric rate); by locality this is the convergence to 0, in the
+level-``n`` coset norm ``N_n(e) = sup_k sum_j
 |e(k - m^n j)|``, of ``u_n - U_n`` with ``u_n = m^{n|beta|} Delta^beta S^n delta`` and ``U_n`` the samples
 ``d^beta phi(m^{-n} .)`` (take ``f = +-1`` where the sum is attained). For the tensor product ``u_n = u'_n (x)
 u''_n`` and ``U_n = U'_n (x) U''_n`` (``Delta^beta = Delta_1^{beta_1} Delta_2^{beta_2}``, ``d^beta phi_a =
@@ -51,14 +52,15 @@ Conversely let ``S_a`` be ``C^l``-convergent, ``g`` bounded, ``f = g (x) delta``
 and ``F = G (x) phi_c``, ``G = sum_k g(k) phi_b(. - k)``. Since ``sum c = m``, ``sum_k c_n(k) = m^n``; averaging
 ``X_n = m^{nj} Delta_1^j S_a^n f`` over its second index with weight ``m^{-n}`` gives exactly
 ``m^{nj} Delta^j S_b^n g``, and averaging ``d_1^j F(m^{-n} .)`` gives ``G^{(j)}(m^{-n} .) r_n`` with the Riemann
-sum ``r_n = m^{-n} sum_k phi_c(m^{-n} k) -> integral phi_c = 1`` (``phi_c(y) = integral phi_a(x, y) dx`` is
-continuous with compact support; ``G(x) = integral F(x, y) dy`` is ``C^l``). Both averages run over ``O(m^n)``
-indices, so ``|m^{nj} Delta^j S_b^n g - G^{(j)}(m^{-n} .)| <= C sup |X_n - d_1^j F(m^{-n} .)| + |r_n - 1|
+sum ``r_n = m^{-n} sum_k phi_c(m^{-n} k) -> integral phi_c = 1`` (``phi_a``, the limit from ``delta``, is
+continuous; with ``psi`` as in (iii), ``phi_c(y) = integral phi_a(x, y) psi(x) dx`` is continuous with compact
+support and ``G(x) = integral F(x, y) psi(y) dy`` is ``C^l``). Both averages run over ``O(m^n)`` indices (the
+supports of ``c_n`` and of ``phi_c(m^{-n} .)``), and ``||g||_inf <= 1`` gives ``||f||_inf <= 1``, so ``|m^{nj} Delta^j S_b^n g - G^{(j)}(m^{-n} .)| <= C sup |X_n - d_1^j F(m^{-n} .)| + |r_n - 1|
 max |G^{(j)}| -> 0``: ``S_b`` is ``C^l``-convergent; so is ``S_c``.
 (iii) If ``phi_b, phi_c`` are in ``C^alpha``, ``alpha = n + s``, each ``d^beta phi_a``, ``|beta| <= n``, is a
 product of bounded ``s``-Hölder functions of separate variables, hence ``s``-Hölder. Conversely take
-``psi`` smooth with compact support and ``psi = 1`` near the support of ``phi_c``: ``<phi_c, psi> = hat phi_c(0)
-= 1``, so ``phi_b(x) = integral phi_a(x, y) psi(y) dy``, and derivatives and Hölder quotients in ``x`` pass under
+``psi`` smooth with compact support and ``psi = 1`` near the supports of ``phi_b`` and ``phi_c``:
+``<phi_c, psi> = hat phi_c(0) = 1``, so ``phi_b(x) = integral phi_a(x, y) psi(y) dy``, and derivatives and Hölder quotients in ``x`` pass under
 the integral. (This needs no point ``y0`` with ``phi_c(y0) != 0``, and holds when ``phi_c`` is only a
 distribution.) QED
 

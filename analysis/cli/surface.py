@@ -16,6 +16,7 @@ Examples
     subdiv surface --mask2 "0,0:1; 1,0:1/2; -1,0:1/2; 0,1:1/2; 0,-1:1/2; 1,1:1/4; -1,-1:1/4; 1,-1:1/4; -1,1:1/4"
     subdiv surface --scheme butterfly --param w=1/16 --json
     subdiv surface --scheme butterfly --C 1 --within=0,1/8 --grid 4
+    subdiv surface --scheme kobbelt-quad --C 1 --within=0,1/4      # a tensor product: the univariate route
     subdiv surface --file mask.toml
 """
 
@@ -280,6 +281,10 @@ def _set_text(S, p: str | None = None) -> str:
     return " u ".join(out) or "nowhere"
 
 
+def _in_text(p: str, S) -> str:
+    return "nowhere" if S.is_empty else f"{p} in {_set_text(S)}"
+
+
 def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
     """``--C L --within`` on a tensor-product family (:func:`analysis.bivariate.tensor.tensor_ck_set`): the factors,
     their univariate C^L sets (the route of ``subdiv range``) and the intersection."""
@@ -310,7 +315,7 @@ def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
         how = {"ck_parameter_set": f"univariate, as subdiv range --grid {grid}",
                "ck_range": f"univariate {m}-ary, as subdiv range: exact norm and eigenvalue sets"}.get(
             f.route, "no parameter: one certified verdict")
-        lines.append(f"C^{l} of S_{name} ({how}): {p} in {_set_text(f.sets['Cl'])}   [{st}]")
+        lines.append(f"C^{l} of S_{name} ({how}): {_in_text(p, f.sets['Cl'])}   [{st}]")
         for x, why in f.ends:
             x = as_expr(x)
             lines.append(f"  end {fmt(x)}{'' if x.is_Rational else f' ~ {float(x):.10g}'} exact: {why}")
@@ -321,7 +326,7 @@ def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
                        "start": f.symbol.start, "status": st,
                        **{k: S.to_json() for k, S in f.sets.items()},
                        "ends": [{"exact": fmt(x), "how": why} for x, why in f.ends]})
-    lines.append(f"C^{l} (certified: the intersection of the univariate C^{l} sets): {p} in {_set_text(v['Cl'])}")
+    lines.append(f"C^{l} (certified: the intersection of the univariate C^{l} sets): {_in_text(p, v['Cl'])}")
     lines.append(f"not C^{l} (certified counterexamples): " + (_set_text(v["not_Cl"], p) or "none"))
     if not v["undecided"].is_empty:
         lines.append(f"undecided (inconclusive): {_set_text(v['undecided'])}")
