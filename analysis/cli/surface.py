@@ -17,6 +17,7 @@ Examples
     subdiv surface --scheme butterfly --param w=1/16 --json
     subdiv surface --scheme butterfly --C 1 --within=0,1/8 --grid 4
     subdiv surface --file mask.toml
+    subdiv surface --scheme butterfly --differences 1
 """
 
 from __future__ import annotations
@@ -54,6 +55,48 @@ def _refine(args) -> None:
         plot_basic_limit(pts, vals, args.figure, f"{label}: S^{args.refine} delta")
         data["figure"] = args.figure
         text += f"\nwrote {args.figure}"
+    _emit(args, data, text)
+
+
+def _differences(args) -> None:
+    """``--differences K``: the difference scheme of order ``K`` (M = m I), its exact identity, and for
+    ``K = 1`` the C^0 norm test (:mod:`analysis.bivariate.differences`)."""
+    import sympy as sp
+
+    from ..bivariate.differences import convergence_by_norms, difference_scheme
+
+    k = _int_arg(args.differences, "--differences")
+    for option, given in (("--C", args.C), ("--within", args.within), ("--sweep", args.sweep),
+                          ("--refine", args.refine), ("--figure", args.figure), ("--grid", args.grid)):
+        if given is not None and given is not False:
+            raise AnalysisError(f"--differences is a mode of its own: drop {option} (or drop --differences)")
+    _, a, label, vals = _mask_from_args(args, keep="")
+    B = difference_scheme(a, k).value
+    m, n = B.m, len(B.indices)
+    (i0, j0), (i1, j1) = B.support_box
+    text = (f"{label}: difference scheme of order {k} (M = {m}I): B is {n} x {n} over {B.domain}, entries in "
+            f"[{i0}, {i1}] x [{j0}, {j1}], nabla^mu(z) a(z) = sum_nu b_mu,nu(z) nabla^nu(z^{m}) checked exactly")
+    data = {"scheme": label, "dilation": [list(r) for r in a.dilation.matrix],
+            "parameters": {key: sp.sstr(v) if isinstance(v, sp.Basic) else str(v) for key, v in vals.items()},
+            "differences": {"order": k, "m": m, "indices": [list(mu) for mu in B.indices], "domain": B.domain,
+                            "matrix": [[sp.sstr(B.entry(mu, nu)) for nu in B.indices] for mu in B.indices],
+                            "identity": "checked exactly", "status": "certified"},
+            "norm_test": None}
+    if B.params:
+        text += ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
+                 " (--param " + B.params[0].name + "=VALUE)")
+    elif k != 1:
+        text += "; the C^0 norm test uses order 1 (--differences 1); C^l: the Hölder exponent (without --differences)"
+    else:
+        r = convergence_by_norms(a)
+        norms = r.witness["norms"]
+        data["norm_test"] = {"status": r.status, "L": r.value, "norms": [sp.sstr(x) for x in norms],
+                             "stopped": r.witness.get("stopped")}
+        if r.value is not None:
+            text += (f"; ||S_B^{r.value}||_inf = {sp.sstr(norms[-1])} < 1: it converges (C^0, certified)")
+        else:
+            text += (f"; ||S_B^L||_inf >= 1 for L = 1..{len(norms)}: convergence not shown up to L = {len(norms)} "
+                     f"({r.witness['stopped']}; inconclusive: the Hölder exponent decides C^0)")
     _emit(args, data, text)
 
 
@@ -302,6 +345,8 @@ def cmd_surface(args) -> None:
 
     if args.list:
         return _list(args)
+    if args.differences is not None:
+        return _differences(args)
     if args.C is not None and not 0 <= _int_arg(args.C, "--C") <= 30:     # options before any computation
         raise AnalysisError(f"--C must be between 0 and 30, not {args.C}")
     if args.within is not None or (args.C is not None and _has_free_parameter(args)):
@@ -430,6 +475,9 @@ def register(subparsers) -> None:
     s.add_argument("--grid", choices=("quad", "triangular"),
                    help="how to draw the lattice for --refine (default: the catalogue entry's grid, else quad)")
     s.add_argument("--figure", help="with --refine: write a heat map (.png, .svg, .pdf)")
+    s.add_argument("--differences", metavar="K",
+                   help="the difference scheme of order K (M = m I): the matrix B with nabla^mu a = sum_nu b_mu,nu "
+                        "nabla^nu(z^m), checked exactly; K = 1 adds the C^0 norm test")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
