@@ -11,7 +11,8 @@ import json
 import pytest
 import sympy as sp
 
-from analysis.bivariate.differences import (_verify, convergence_by_norms, difference_scheme, scheme_norm)
+from analysis.bivariate.differences import (_verify, convergence_by_norms, difference_scheme, scheme_norm,
+                                            smoothness_by_norms)
 from analysis.bivariate.mask import Z1, Z2, BivariateMask
 from analysis.cli.main import main
 from analysis.result import CERTIFIED, INCONCLUSIVE, AnalysisError
@@ -45,6 +46,14 @@ def test_the_identity_holds_exactly(name, general, k):
     assert len(B.indices) == k + 1 and all(sum(mu) == k for mu in B.indices)
     assert _identity_holds(a, B)
     assert B.domain == ("QQ[w]" if general else "QQ")
+
+
+@pytest.mark.parametrize("name,k,shift", [("butterfly", 2, (1, 1)), ("zwart-powell", 2, (1, 0))],
+                         ids=lambda x: str(x))
+def test_a_shifted_construction_is_a_difference_scheme_of_the_mask(name, k, shift):
+    a = get(name).mask()
+    B = difference_scheme(a, k, shift).value
+    assert B.shift == shift and _identity_holds(a, B)
 
 
 def test_a_wrong_entry_is_caught_by_the_check():
@@ -96,7 +105,9 @@ def test_the_norm_test_shows_convergence(name):
 
 
 def test_norms_agree_with_the_product_of_sympy_matrices():
-    B = difference_scheme(get("kobbelt-quad").mask(w="1/8"), 1).value
+    # not diagonal, and B(z^2) B(z) would have the norm 1/4 at L = 2: the order of the product is tested
+    B = difference_scheme(get("zwart-powell").mask(), 2, (1, 1)).value
+    assert len(B.entries) > len(B.indices)
     assert [scheme_norm(B, L) for L in (1, 2)] == [_brute_norm(B, L) for L in (1, 2)]
 
 
@@ -113,6 +124,26 @@ def test_the_norm_test_is_inconclusive_where_it_must_be(mask, limits):
 def test_the_size_limit_stops_the_products():
     r = convergence_by_norms(get("butterfly").mask(w="1/4"), max_terms=10_000)
     assert r.status == INCONCLUSIVE and len(r.witness["norms"]) < 8 and "size limit" in r.witness["stopped"]
+
+
+@pytest.mark.parametrize("name,l", [("zwart-powell", 1), ("kobbelt-quad", 1), ("bicubic", 2)])
+def test_c_l_by_norms_shows_what_the_sources_state(name, l):
+    e = get(name)
+    assert e.claims["C"] == l
+    r = smoothness_by_norms(e.mask(), l)
+    assert r.status == CERTIFIED and r.value == l
+    assert [v["C"] for v in r.witness["levels"]] == list(range(l + 1))
+    for v in r.witness["levels"]:                          # each level: its norm, recomputed from its scheme
+        B = difference_scheme(e.mask(), v["C"] + 1, v["shift"]).value
+        assert v["norms"][-1] == scheme_norm(B, v["L"]) * 2 ** (v["C"] * v["L"]) < 1
+
+
+def test_c_l_by_norms_is_inconclusive_where_it_must_be():
+    r = smoothness_by_norms(get("box-111").mask(), 1, max_L=4)        # the Courant element is not C^1
+    assert r.status == INCONCLUSIVE and r.value == 0 and r.witness["levels"][-1]["L"] is None
+    with pytest.raises(AnalysisError, match="2I only"):
+        smoothness_by_norms(BivariateMask.from_symbol("(1+z1+z1**2)**2*(1+z2+z2**2)**2/(9*z1**2*z2**2)",
+                                                      "triadic"), 1)
 
 
 def test_without_the_sum_rules_it_is_a_one_line_error():
@@ -139,6 +170,9 @@ def test_cli_differences(capsys):
     doc = json.loads(capsys.readouterr().out)
     assert doc["differences"]["domain"] == "QQ[t]" and doc["norm_test"] is None
     assert len(doc["differences"]["matrix"]) == 2
+    assert main(["surface", "--scheme", "zwart-powell", "--differences", "2", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["norm_test"]["status"] == CERTIFIED and doc["norm_test"]["certified_up_to"] == 1
 
 
 @pytest.mark.parametrize("argv,match", [

@@ -19,13 +19,21 @@ vanishing to order ``k`` at every such point (Möller–Sauer 2004 for general `
 Sect. 3.3 for ``M = 2I``). ``B`` is not unique; the rule below fixes one, deterministically. Coefficients are
 exact: rationals, or polynomials with rational coefficients in the mask's parameters.
 
-**C^0 norm test.** If the cosets of ``a`` each sum to 1 and ``||(S_B)^L||_inf < 1`` for some ``L``, ``B`` the
+**C^0 norm test.** If the cosets of ``a`` each sum to 1 and ``||(S_B)^L||_inf < 1`` for some ``L``, ``B`` a
 difference scheme of order 1, then ``S_a`` converges uniformly (to continuous limits) for all bounded data.
 This is the sufficient half of Dyn's theorem in its bivariate form (Dyn 1992; Dyn–Levin 2002; Warren–Weimer
 2002, Sect. 3.3; for vector schemes and general dilations Charina–Conti–Sauer 2005, where convergence is
 equivalent to the *restricted* contractivity of ``S_B`` on differences, which the norm bounds). A norm ``>= 1``
 for every ``L`` tried decides nothing (the difference scheme is not unique, and the norm is a bound of the
-restricted one): the test is then *inconclusive*, never "not convergent".
+restricted one): the test is then *inconclusive*, never "not convergent". Since ``B`` is not unique, the test
+tries the schemes built from the shifted symbols ``z^gamma a``, ``gamma in {0..m-1}^2`` (each an exact
+difference scheme of ``a``), and takes the first ``(L, gamma)`` that works.
+
+**C^l by norms** (``M = 2I`` only): ``C^0`` as above, then for ``j = 1, ..., l`` in turn, ``C^j`` from ``C^{j-1}``
+and ``||(2^j S_{B_{j+1}})^L||_inf < 1`` (Warren–Weimer 2002, Theorem 3.11: ``2^j S_{B_{j+1}}`` refines the
+differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``); :func:`smoothness_by_norms`. For
+other ``m`` and whenever the norms do not show it, ``C^l`` is left to the Hölder exponent
+(:mod:`analysis.bivariate.holder`).
 
 Proof (so the statement does not rest on a citation alone): with ``f^n = S_a^n f^0`` and ``eta = ||S_B^L||``,
 ``||nabla f^n||_inf <= C eta^{n/L} ||nabla f^0||``. Let ``g_n`` be the piecewise linear interpolant of ``f^n`` on
@@ -60,7 +68,7 @@ and one shift ``s``. Each ``q_eps(x, y)`` is expanded in ``u = 1 - x``, ``v = 1 
 The sum rules of order ``k`` are exactly the vanishing of the terms of total degree ``< k`` (checked; an error
 otherwise). A term ``c u^i v^j`` (``i + j >= k``) goes to the column ``nu`` with ``nu <= (i, j)`` whose first
 index is nearest to ``mu_1`` (``nu_1 = clamp(mu_1, max(0, k - j), min(k, i))``: the diagonal when it
-divides, which gives the diagonal ``B`` of a box spline), contributing
+divides: Loop's and the tensor B-spline masks get a diagonal ``B`` of order 1), contributing
 ``c z^{m s + eps} (1 - z1^m)^{i - nu_1} (1 - z2^m)^{j - nu_2}`` to ``b_{mu,nu}``. The identity
 ``nabla^mu a = sum_nu b_{mu,nu} nabla^nu(z^m)`` is then verified exactly before ``B`` is returned.
 
@@ -84,6 +92,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from itertools import chain
 from math import comb, lcm
 from typing import Mapping
 
@@ -93,13 +102,14 @@ from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
 from .algebra import MAX_ORDER, sum_rules
 from .mask import Z1, Z2, BivariateMask
 
-__all__ = ["DifferenceScheme", "difference_scheme", "scheme_norm", "convergence_by_norms", "scalar_dilation",
+__all__ = ["DifferenceScheme", "difference_scheme", "scheme_norm", "convergence_by_norms", "smoothness_by_norms",
+           "scalar_dilation",
            "MAX_L", "MAX_TERMS"]
 
 #: the longest product ``S_B^L`` the norm test forms by default
 MAX_L = 8
 #: the most coefficients (summed over the entries) of ``B^[L]`` the norm test forms by default
-MAX_TERMS = 2_000_000
+MAX_TERMS = 12_000_000
 
 Monomials = Mapping[tuple[int, int], sp.Expr]
 
@@ -114,6 +124,8 @@ class DifferenceScheme:
     indices: tuple[tuple[int, int], ...]
     entries: Mapping[tuple[tuple[int, int], tuple[int, int]], Monomials]
     params: tuple[sp.Symbol, ...] = ()
+    #: built from ``z^shift a(z)`` (see :func:`difference_scheme`)
+    shift: tuple[int, int] = (0, 0)
 
     def entry(self, mu: tuple[int, int], nu: tuple[int, int]) -> sp.Expr:
         """``b_{mu,nu}(z)`` as a factored sympy expression in ``z1, z2``."""
@@ -190,9 +202,13 @@ def _clamp(x: int, lo: int, hi: int) -> int:
     return max(lo, min(hi, x))
 
 
-def difference_scheme(a: BivariateMask, k: int = 1) -> Result:
+def difference_scheme(a: BivariateMask, k: int = 1, shift: tuple[int, int] = (0, 0)) -> Result:
     """The difference scheme of order ``k`` (a :class:`DifferenceScheme`, value of a certified
     :class:`~analysis.result.Result` whose witness records the exact check of the identity).
+
+    ``shift = gamma`` builds it from the shifted symbol ``z^gamma a(z)`` and returns ``z^-gamma`` times that
+    scheme: another difference scheme of ``a`` (the rule of the algorithm depends on the cosets, so a shift by
+    a non-multiple of ``m`` may give another ``B``, with other norms).
 
     Raises :class:`~analysis.result.AnalysisError` (one line) for a dilation other than ``m I``, for ``k``
     outside ``1..MAX_ORDER``, and when the mask does not satisfy the sum rules of order ``k``.
@@ -208,15 +224,16 @@ def difference_scheme(a: BivariateMask, k: int = 1) -> Result:
     if isinstance(k, bool) or not isinstance(k, int) or not 1 <= k <= MAX_ORDER:
         raise AnalysisError(f"the order of the difference scheme is an integer from 1 to {MAX_ORDER}, not {k!r}")
     params = _check_coefficients(a)
+    g = (int(shift[0]), int(shift[1]))
     indices = tuple((k - i, i) for i in range(k + 1))
     entries: dict = {}
     for mu in indices:
-        p = _times(dict(a.coeffs), _nabla(mu))
-        shift = (min(i // m for i, _ in p), min(j // m for _, j in p))
+        p = _times({(i + g[0], j + g[1]): c for (i, j), c in a}, _nabla(mu))
+        s0 = (min(i // m for i, _ in p), min(j // m for _, j in p))     # p = z^(m s0) sum_eps z^eps q_eps(z^m)
         expansion: dict[tuple[int, int], dict[tuple[int, int], sp.Expr]] = {}
         for (i, j), c in p.items():
             eps = (i % m, j % m)
-            bx, by = i // m - shift[0], j // m - shift[1]             # q_eps has the term c x^bx y^by
+            bx, by = i // m - s0[0], j // m - s0[1]                   # q_eps has the term c x^bx y^by
             cu = expansion.setdefault(eps, {})
             for s in range(bx + 1):                                   # x^bx = (1 - u)^bx
                 for t in range(by + 1):
@@ -234,23 +251,23 @@ def difference_scheme(a: BivariateMask, k: int = 1) -> Result:
                 nu1 = _clamp(mu[0], max(0, k - t), min(k, s))
                 nu = (nu1, k - nu1)
                 rest = _nabla((s - nu[0], t - nu[1]))                # (1 - z1^m)^(s-nu1) (1 - z2^m)^(t-nu2)
-                base = (m * shift[0] + eps[0], m * shift[1] + eps[1])
+                base = (m * s0[0] + eps[0], m * s0[1] + eps[1])
                 ent = row.setdefault(nu, {})
                 for (x, y), d in rest.items():
                     e = (base[0] + m * x, base[1] + m * y)
                     ent[e] = ent.get(e, 0) + c * d
         for nu, ent in row.items():
-            ent = _clean(ent)
+            ent = _clean({(i - g[0], j - g[1]): c for (i, j), c in ent.items()})
             if ent:
                 entries[(mu, nu)] = ent
-    B = DifferenceScheme(k, m, indices, entries, params)
+    B = DifferenceScheme(k, m, indices, entries, params, g)
     _verify(a, B)
     return Result(value=B, status=CERTIFIED,
                   witness={"identity": "nabla^mu(z) a(z) = sum_nu b_{mu,nu}(z) nabla^nu(z^m), checked exactly",
                            "rule": "u^i v^j -> nu with nu <= (i, j), nu_1 nearest mu_1",
                            "domain": B.domain},
                   provenance={"method": "coset split, expansion in u = 1 - z1^m, v = 1 - z2^m (exact)",
-                              "order": k, "m": m})
+                              "order": k, "m": m, "shift": g})
 
 
 def _verify(a: BivariateMask, B: DifferenceScheme) -> None:
@@ -292,10 +309,13 @@ class _IntegerScheme:
                                  if any(not P.is_zero() for P in row)), default=0) for c in (0, 1))
 
 
-def _product_terms(S: _IntegerScheme, L: int) -> int:
-    """An upper bound of the coefficients of ``B^[L]`` (summed over the entries), before forming it."""
-    span = (S.m ** L - 1) // (S.m - 1)
-    return S.n * S.n * (S.degree[0] * span + 1) * (S.degree[1] * span + 1)
+def _product_terms(S: _IntegerScheme, L: int, prev=None) -> int:
+    """An upper bound of the coefficients of ``B^[L]`` (summed over the entries), before forming it: the
+    number of products of terms, ``sum_{i,l,j} #P^[L-1]_{i,l} #P_{l,j}``."""
+    if L == 1:
+        return sum(len(P) for row in S.P for P in row)
+    out_terms = [sum(len(P) for P in row) for row in S.P]            # terms of row l of B
+    return sum(len(prev[i][l]) * out_terms[l] for i in range(S.n) for l in range(S.n))
 
 
 def _power(S: _IntegerScheme, L: int, prev=None):
@@ -327,15 +347,27 @@ def _norm_of(S: _IntegerScheme, PL, L: int) -> Fraction:
     low = (S.low[0] * span, S.low[1] * span)          # the lowest exponent of B^[L]
     best = 0
     for row in PL:
-        acc = [0] * (N * N)
+        parts = []
         for P in row:
             if P.is_zero():
                 continue
-            ex = np.array(P.monoms(), dtype=np.int64)
+            ex = np.fromiter(chain.from_iterable(P.monoms()), dtype=np.int64).reshape(-1, 2)
             r = ((ex[:, 0] + low[0]) % N) * N + (ex[:, 1] + low[1]) % N
-            for idx, c in zip(r.tolist(), P.coeffs()):
-                acc[idx] += abs(int(c))
-        best = max(best, max(acc))
+            parts.append((r, [abs(int(c)) for c in P.coeffs()]))
+        total = sum(len(c) for _, c in parts)
+        if not parts:
+            continue
+        if max(max(c) for _, c in parts) * total < 2 ** 62:              # exact in int64
+            acc = np.zeros(N * N, dtype=np.int64)
+            for r, c in parts:
+                np.add.at(acc, r, np.array(c, dtype=np.int64))
+            best = max(best, int(acc.max()))
+        else:                                                             # exact Python integers
+            sums: dict[int, int] = {}
+            for r, c in parts:
+                for idx, v in zip(r.tolist(), c):
+                    sums[idx] = sums.get(idx, 0) + v
+            best = max(best, max(sums.values()))
     return Fraction(best, S.den ** L)
 
 
@@ -355,54 +387,125 @@ def scheme_norm(B: DifferenceScheme, L: int = 1) -> Fraction:
     return _norm_of(S, P, L)
 
 
-def convergence_by_norms(a: BivariateMask, max_L: int = MAX_L, max_terms: int = MAX_TERMS) -> Result:
-    """The ``C^0`` norm test: the first ``L <= max_L`` with ``||(S_B)^L||_inf < 1`` (``B`` the difference scheme
-    of order 1), certified; or *inconclusive* ("not shown up to L") when no ``L`` within the limits gives it.
+def _shifts(m: int) -> list[tuple[int, int]]:
+    """The shifts tried by the norm tests: ``gamma in {0..m-1}^2``, ``(0, 0)`` first."""
+    return sorted(((x, y) for x in range(m) for y in range(m)), key=lambda g: (g[0] + g[1], g[1]))
 
-    ``value`` is that ``L`` (``None`` when inconclusive); ``witness["norms"]`` the exact norms for ``L = 1, 2,
-    ...``; ``witness["stopped"]`` why the search ended without success (``max_L`` or the size limit
-    ``max_terms`` on the coefficients of ``B^[L]``). Needs exact rational coefficients and cosets summing to 1.
 
-    >>> from analysis.bivariate.mask import BivariateMask
-    >>> r = convergence_by_norms(BivariateMask.from_list("0,0:1; 1,0:1; 0,1:1; 1,1:1"))     # Haar: not continuous
-    >>> r.value, r.status, r.witness["norms"][:2], r.witness["stopped"]
-    (None, 'inconclusive', [1, 1], 'L = 8 is the longest product tried (max_L)')
-    """
+def _first_contractive(a: BivariateMask, k: int, l: int, max_L: int, max_terms: int):
+    """The first ``L <= max_L`` such that one of the difference schemes ``B`` of order ``k`` built with the shifts
+    :func:`_shifts` (in that order) has ``||(m^l S_B)^L||_inf = m^{lL} ||S_B^L||_inf < 1``.
+
+    Returns ``(L or None, B, its scaled norms for L = 1, 2, ..., the norms of every candidate, why it stopped)``;
+    without success ``B`` is the unshifted scheme. ``max_terms`` bounds the coefficients of all candidates'
+    ``B^[L]`` together (bounded before they are formed)."""
+    cands = [difference_scheme(a, k, g).value for g in _shifts(scalar_dilation(a))]
+    ints = [_IntegerScheme(B) for B in cands]
+    powers: list = [None] * len(cands)
+    norms: list[list[Fraction]] = [[] for _ in cands]
+    for L in range(1, max_L + 1):
+        bound = sum(_product_terms(S, L, P) for S, P in zip(ints, powers))
+        if bound > max_terms:
+            return None, cands[0], norms[0], norms, (f"B^[{L}] would have up to {bound} > {max_terms} coefficients "
+                                                     f"over the {len(cands)} shifts (the size limit max_terms)")
+        for c, S in enumerate(ints):
+            powers[c] = _power(S, L, powers[c])
+            norms[c].append(_norm_of(S, powers[c], L) * S.m ** (l * L))
+            if norms[c][-1] < 1:
+                return L, cands[c], norms[c], norms, None
+    return None, cands[0], norms[0], norms, f"L = {max_L} is the longest product tried (max_L)"
+
+
+def _check_norm_input(a: BivariateMask, max_L: int) -> int:
     if isinstance(max_L, bool) or not isinstance(max_L, int) or not 1 <= max_L <= 16:
         raise AnalysisError(f"the longest product L of the norm test is an integer from 1 to 16, not {max_L!r}")
     m = scalar_dilation(a)
     if a.params:
         raise AnalysisError("the norm test needs values of the parameters " + ", ".join(p.name for p in a.params)
                             + " (e.g. --param w=1/16)")
-    sr = sum_rules(a)
-    if sr.value < 1:
+    if sum_rules(a).value < 1:
         raise AnalysisError("the norm test needs the cosets of the mask to sum to 1 each (sum rules of order 1): "
                             "this mask does not converge")
-    B = difference_scheme(a, 1).value
-    S = _IntegerScheme(B)
-    norms: list[Fraction] = []
-    P = None
-    stopped = f"L = {max_L} is the longest product tried (max_L)"
-    for L in range(1, max_L + 1):
-        if _product_terms(S, L) > max_terms:
-            stopped = (f"B^[{L}] would have up to {_product_terms(S, L)} > {max_terms} coefficients "
-                       "(the size limit max_terms)")
-            break
-        P = _power(S, L, P)
-        norms.append(_norm_of(S, P, L))
-        if norms[-1] < 1:
-            return Result(value=L, status=CERTIFIED,
-                          witness={"norms": [_q(x) for x in norms], "norm": _q(norms[-1]), "L": L, "scheme": B,
-                                   "theorem": "||S_B^L||_inf < 1 with cosets summing to 1 implies uniform "
-                                              "convergence (Dyn 1992; Charina-Conti-Sauer 2005)"},
-                          provenance={"method": "exact norms of the L-step difference scheme (FLINT integers)",
-                                      "m": m, "max_L": max_L, "max_terms": max_terms})
+    return m
+
+
+def convergence_by_norms(a: BivariateMask, max_L: int = MAX_L, max_terms: int = MAX_TERMS) -> Result:
+    """The ``C^0`` norm test: the first ``L <= max_L`` with ``||(S_B)^L||_inf < 1`` (``B`` the difference scheme
+    of order 1), certified; or *inconclusive* ("not shown up to L") when no ``L`` within the limits gives it.
+
+    ``value`` is that ``L`` (``None`` when inconclusive); ``witness["norms"]`` the exact norms for ``L = 1, 2,
+    ...``; ``witness["stopped"]`` why the search ended without success (``max_L``, or the size limit
+    ``max_terms`` on the coefficients of ``B^[L]``, bounded before it is formed). Needs exact rational
+    coefficients and cosets summing to 1.
+
+    >>> from analysis.bivariate.mask import BivariateMask
+    >>> r = convergence_by_norms(BivariateMask.from_list("0,0:1; 1,0:1; 0,1:1; 1,1:1"))     # Haar: not continuous
+    >>> r.value, r.status, r.witness["norms"][:2], r.witness["stopped"]
+    (None, 'inconclusive', [1, 1], 'L = 8 is the longest product tried (max_L)')
+    """
+    m = _check_norm_input(a, max_L)
+    L, B, norms, _, stopped = _first_contractive(a, 1, 0, max_L, max_terms)
+    prov = {"method": "exact norms of the L-step difference scheme (FLINT integers)", "m": m, "max_L": max_L,
+            "max_terms": max_terms}
+    if L is not None:
+        return Result(value=L, status=CERTIFIED,
+                      witness={"norms": [_q(x) for x in norms], "norm": _q(norms[-1]), "L": L, "scheme": B,
+                               "shift": B.shift,
+                               "theorem": "||S_B^L||_inf < 1 with cosets summing to 1 implies uniform "
+                                          "convergence (Dyn 1992; Charina-Conti-Sauer 2005)"},
+                      provenance=prov)
     return Result(value=None, status=INCONCLUSIVE,
                   witness={"norms": [_q(x) for x in norms], "scheme": B, "stopped": stopped,
                            "what_would_settle_it": "a larger L, another difference scheme, or the JSR route "
                                                    "(subdiv surface without --differences)"},
-                  provenance={"method": "exact norms of the L-step difference scheme (FLINT integers)",
-                              "m": m, "max_L": max_L, "max_terms": max_terms})
+                  provenance=prov)
+
+
+def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms: int = MAX_TERMS) -> Result:
+    """``C^l`` by norms, ``M = 2I``: ``C^0`` by :func:`convergence_by_norms`, then for ``j = 1, ..., l`` in turn
+    ``||(2^j S_{B_{j+1}})^L||_inf < 1`` for some ``L``, ``B_{j+1}`` the difference scheme of order ``j + 1``.
+
+    Theorem used (Warren–Weimer 2002, Theorem 3.11, dilation ``2I``): if the mask has the zeros of order
+    ``j + 1`` (sum rules of order ``j + 1``), its limits are ``C^{j-1}``, and the scheme ``2^j S_{B_{j+1}}`` of the
+    differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n`` (``|mu| = j``) has a norm ``< 1``,
+    then the limits are ``C^j``. Each level rests on the one below, so the levels are certified in order and the
+    search stops at the first one not shown.
+
+    ``value`` is the largest ``j <= l`` certified (``-1``: not even ``C^0``); status *certified* when it is ``l``,
+    else *inconclusive*; ``witness["levels"]`` lists each level tried with its ``L`` and exact scaled norms.
+    For ``m >= 3`` only ``l = 0`` is available (the reference is for ``2I``): use the Hölder exponent.
+
+    >>> from schemes.surfaces import get
+    >>> r = smoothness_by_norms(get("loop").mask(), 2)
+    >>> r.value, r.status, [(v["C"], v["L"], v["norms"][-1]) for v in r.witness["levels"]]
+    (2, 'certified', [(0, 1, 1/2), (1, 1, 1/2), (2, 3, 11/16)])
+    """
+    m = _check_norm_input(a, max_L)
+    if isinstance(l, bool) or not isinstance(l, int) or not 0 <= l < MAX_ORDER:
+        raise AnalysisError(f"the smoothness order of the norm test is an integer from 0 to {MAX_ORDER - 1}, not {l!r}")
+    if l >= 1 and m != 2:
+        raise AnalysisError(f"C^{l} by norms is available for M = 2I only (the theorem used is for 2I); "
+                            "the Hölder exponent of subdiv surface decides C^l for every dilation")
+    levels: list[dict] = []
+    top = -1
+    for j in range(l + 1):
+        try:
+            L, B, norms, _, stopped = _first_contractive(a, j + 1, j, max_L, max_terms)
+        except AnalysisError as e:
+            levels.append({"C": j, "L": None, "norms": [], "stopped": str(e), "shift": None})
+            break
+        levels.append({"C": j, "L": L, "norms": [_q(x) for x in norms], "stopped": stopped,
+                       "shift": B.shift if L is not None else None})
+        if L is None:
+            break
+        top = j
+    status = CERTIFIED if top == l else INCONCLUSIVE
+    return Result(value=top, status=status,
+                  witness={"levels": levels,
+                           "theorem": "C^0: ||S_{B_1}^L|| < 1 (Dyn 1992); C^j from C^{j-1} and "
+                                      "||(2^j S_{B_{j+1}})^L|| < 1 (Warren-Weimer 2002, Thm 3.11)"},
+                  provenance={"method": "exact norms of the L-step difference schemes (FLINT integers)", "m": m,
+                              "max_L": max_L, "max_terms": max_terms})
 
 
 def _q(x: Fraction) -> sp.Rational:

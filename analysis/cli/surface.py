@@ -59,11 +59,11 @@ def _refine(args) -> None:
 
 
 def _differences(args) -> None:
-    """``--differences K``: the difference scheme of order ``K`` (M = m I), its exact identity, and for
-    ``K = 1`` the C^0 norm test (:mod:`analysis.bivariate.differences`)."""
+    """``--differences K``: the difference scheme of order ``K`` (M = m I), its exact identity, and the norm
+    test of C^(K-1) (:mod:`analysis.bivariate.differences`; C^l with l >= 1 for M = 2I only)."""
     import sympy as sp
 
-    from ..bivariate.differences import convergence_by_norms, difference_scheme
+    from ..bivariate.differences import difference_scheme
 
     k = _int_arg(args.differences, "--differences")
     for option, given in (("--C", args.C), ("--within", args.within), ("--sweep", args.sweep),
@@ -85,19 +85,41 @@ def _differences(args) -> None:
     if B.params:
         text += ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
                  " (--param " + B.params[0].name + "=VALUE)")
-    elif k != 1:
-        text += "; the C^0 norm test uses order 1 (--differences 1); C^l: the Hölder exponent (without --differences)"
+    elif k >= 2 and m != 2:
+        text += f"; C^{k - 1} by norms: for M = 2I only (the Hölder exponent decides C^l)"
     else:
-        r = convergence_by_norms(a)
-        norms = r.witness["norms"]
-        data["norm_test"] = {"status": r.status, "L": r.value, "norms": [sp.sstr(x) for x in norms],
-                             "stopped": r.witness.get("stopped")}
-        if r.value is not None:
-            text += (f"; ||S_B^{r.value}||_inf = {sp.sstr(norms[-1])} < 1: it converges (C^0, certified)")
-        else:
-            text += (f"; ||S_B^L||_inf >= 1 for L = 1..{len(norms)}: convergence not shown up to L = {len(norms)} "
-                     f"({r.witness['stopped']}; inconclusive: the Hölder exponent decides C^0)")
+        text += "; " + _norm_test_text(a, k - 1, data)
     _emit(args, data, text)
+
+
+def _norm_test_text(a, l: int, data: dict) -> str:
+    """The C^l norm test of ``--differences l+1`` (:func:`analysis.bivariate.differences.smoothness_by_norms`):
+    its text, and its JSON in ``data["norm_test"]``."""
+    import sympy as sp
+
+    from ..bivariate.differences import smoothness_by_norms
+
+    r = smoothness_by_norms(a, l)
+    levels = r.witness["levels"]
+    data["norm_test"] = {"status": r.status, "C": l, "certified_up_to": r.value,
+                         "levels": [{"C": v["C"], "L": v["L"], "shift": None if v["shift"] is None else list(v["shift"]),
+                                     "norms": [sp.sstr(x) for x in v["norms"]], "stopped": v["stopped"]}
+                                    for v in levels]}
+    last = levels[-1]
+    norm = (lambda L: f"||S_B^{L}||_inf") if l == 0 else (lambda L: f"||({2 ** l} S_B)^{L}||_inf")
+    if r.value == l:
+        Ls = ", ".join(str(v["L"]) for v in levels[:-1])
+        lower = ("" if l == 0 else f", C^0 by order 1 (L = {Ls})" if l == 1 else
+                 f", C^0 to C^{l - 1} by the orders below (L = {Ls})")
+        via = "" if last["shift"] == (0, 0) else f" (B built from z^{last['shift']} a)"
+        verdict = "it converges (C^0, certified)" if l == 0 else f"C^{l} (certified)"
+        return f"{norm(last['L'])} = {sp.sstr(last['norms'][-1])} < 1{via}{lower}: {verdict}"
+    shown = f"; C^{r.value} is shown (certified)" if r.value >= 0 else ""
+    if last["L"] is None and last["norms"]:
+        why = (f"C^{last['C']} not shown by norms up to L = {len(last['norms'])} ({last['stopped']}){shown}")
+    else:
+        why = f"C^{last['C']} not shown by norms ({last['stopped']}){shown}"
+    return f"{why}; inconclusive: the Hölder exponent decides C^{l}"
 
 
 def _mask_from_args(args, keep=None):
@@ -477,7 +499,7 @@ def register(subparsers) -> None:
     s.add_argument("--figure", help="with --refine: write a heat map (.png, .svg, .pdf)")
     s.add_argument("--differences", metavar="K",
                    help="the difference scheme of order K (M = m I): the matrix B with nabla^mu a = sum_nu b_mu,nu "
-                        "nabla^nu(z^m), checked exactly; K = 1 adds the C^0 norm test")
+                        "nabla^nu(z^m), checked exactly; and the norm test of C^(K-1) (C^0 for K = 1; C^l for M = 2I)")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
