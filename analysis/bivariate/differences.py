@@ -406,14 +406,14 @@ def _first_contractive(a: BivariateMask, k: int, l: int, max_L: int, max_terms: 
     for L in range(1, max_L + 1):
         bound = sum(_product_terms(S, L, P) for S, P in zip(ints, powers))
         if bound > max_terms:
-            return None, cands[0], norms[0], norms, (f"B^[{L}] would have up to {bound} > {max_terms} coefficients "
-                                                     f"over the {len(cands)} shifts (the size limit max_terms)")
+            return None, cands[0], norms[0], norms, (f"B^[{L}] would have up to {bound} coefficients over the "
+                                                     f"{len(cands)} shifts, above the size limit {max_terms}")
         for c, S in enumerate(ints):
             powers[c] = _power(S, L, powers[c])
             norms[c].append(_norm_of(S, powers[c], L) * S.m ** (l * L))
             if norms[c][-1] < 1:
                 return L, cands[c], norms[c], norms, None
-    return None, cands[0], norms[0], norms, f"L = {max_L} is the longest product tried (max_L)"
+    return None, cands[0], norms[0], norms, f"L = {max_L} is the longest product tried"
 
 
 def _check_norm_input(a: BivariateMask, max_L: int) -> int:
@@ -441,7 +441,7 @@ def convergence_by_norms(a: BivariateMask, max_L: int = MAX_L, max_terms: int = 
     >>> from analysis.bivariate.mask import BivariateMask
     >>> r = convergence_by_norms(BivariateMask.from_list("0,0:1; 1,0:1; 0,1:1; 1,1:1"))     # Haar: not continuous
     >>> r.value, r.status, r.witness["norms"][:2], r.witness["stopped"]
-    (None, 'inconclusive', [1, 1], 'L = 8 is the longest product tried (max_L)')
+    (None, 'inconclusive', [1, 1], 'L = 8 is the longest product tried')
     """
     m = _check_norm_input(a, max_L)
     L, B, norms, _, stopped = _first_contractive(a, 1, 0, max_L, max_terms)

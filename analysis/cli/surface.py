@@ -116,7 +116,8 @@ def _norm_test_text(a, l: int, data: dict) -> str:
         return f"{norm(last['L'])} = {sp.sstr(last['norms'][-1])} < 1{via}{lower}: {verdict}"
     shown = f"; C^{r.value} is shown (certified)" if r.value >= 0 else ""
     if last["L"] is None and last["norms"]:
-        why = (f"C^{last['C']} not shown by norms up to L = {len(last['norms'])} ({last['stopped']}){shown}")
+        stop = "the longest product tried" if last["stopped"].startswith("L = ") else last["stopped"]
+        why = f"C^{last['C']} not shown by norms up to L = {len(last['norms'])} ({stop}){shown}"
     else:
         why = f"C^{last['C']} not shown by norms ({last['stopped']}){shown}"
     return f"{why}; inconclusive: the Hölder exponent decides C^{l}"
