@@ -56,6 +56,18 @@ def test_a_shifted_construction_is_a_difference_scheme_of_the_mask(name, k, shif
     assert B.shift == shift and _identity_holds(a, B)
 
 
+def test_rational_functions_of_a_parameter_and_what_is_refused():
+    hat = "(1+z1)**2*(1+z2)**2/(4*z1*z2)"
+    a = BivariateMask.from_symbol(hat + " + w/(1+w)*(1-z1**2)*(1-z2**2)/(z1*z2)")
+    B = difference_scheme(a, 1).value
+    assert B.domain == "QQ(w)"
+    for mu in B.indices:                                       # the identity over QQ(w)
+        rhs = sum(_entry(B, mu, nu) * _nabla(nu, 2) for nu in B.indices)
+        assert sp.cancel(_nabla(mu) * a.symbol - rhs) == 0
+    with pytest.raises(AnalysisError, match="rational functions of the parameters"):
+        difference_scheme(BivariateMask.from_symbol(hat + " + sqrt(w)*(1-z1**2)*(1-z2**2)/(z1*z2)"), 1)
+
+
 def test_a_wrong_entry_is_caught_by_the_check():
     a = get("loop").mask()
     B = difference_scheme(a, 1).value
