@@ -334,8 +334,6 @@ class _IntegerScheme:
         self.P = [[self.ctx.from_dict({(e[0] - self.low[0], e[1] - self.low[1]): int(c * self.den)
                                        for e, c in fr.get((mu, nu), {}).items()})
                    for nu in B.indices] for mu in B.indices]
-        self.degree = tuple(max((max(P.degrees()[c] for P in row if not P.is_zero()) for row in self.P
-                                 if any(not P.is_zero() for P in row)), default=0) for c in (0, 1))
 
 
 def _product_terms(S: _IntegerScheme, L: int, prev=None) -> int:
