@@ -13,7 +13,8 @@ vectors at 0, 120 and 60 degrees), so that Loop's and the butterfly masks are ma
 Modules: :mod:`.dilation` (digits, dual points, isotropy), :mod:`.mask` (the mask and its readers),
 :mod:`.algebra` (sum rules, generation and reproduction degree, symmetry, box-spline factors),
 :mod:`.transition` (invariant support, transition operators, difference subspaces),
-:mod:`.holder` (certified Hölder exponent and C^k verdicts).
+:mod:`.holder` (certified Hölder exponent and C^k verdicts),
+:mod:`.differences` (difference schemes in the quotient-ideal form for ``M = m I``, and their norm tests).
 
 Layering: a sibling of :mod:`analysis.regularity`; may import :mod:`analysis.algebra` (the reader) and
 :mod:`analysis.jsr` (the certified joint spectral radius), nothing above.
