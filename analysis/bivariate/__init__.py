@@ -14,7 +14,8 @@ Modules: :mod:`.dilation` (digits, dual points, isotropy), :mod:`.mask` (the mas
 :mod:`.algebra` (sum rules, generation and reproduction degree, symmetry, box-spline factors),
 :mod:`.transition` (invariant support, transition operators, difference subspaces),
 :mod:`.holder` (certified Hölder exponent and C^k verdicts), :mod:`.ranges` (C^l sets of one-parameter
-families), :mod:`.tensor` (tensor-product masks reduced exactly to two univariate schemes).
+families), :mod:`.tensor` (tensor-product masks reduced exactly to two univariate schemes),
+:mod:`.differences` (difference schemes in the quotient-ideal form for ``M = m I``, and their norm tests).
 
 Layering: just above :mod:`analysis.regularity`; may import :mod:`analysis.algebra` (the reader),
 :mod:`analysis.jsr` (the certified joint spectral radius) and :mod:`analysis.regularity` (the univariate analysis,

@@ -18,6 +18,7 @@ Examples
     subdiv surface --scheme butterfly --C 1 --within=0,1/8 --grid 4
     subdiv surface --scheme kobbelt-quad --C 1 --within=0,1/4      # a tensor product: the univariate route
     subdiv surface --file mask.toml
+    subdiv surface --scheme butterfly --differences 1
 """
 
 from __future__ import annotations
@@ -56,6 +57,71 @@ def _refine(args) -> None:
         data["figure"] = args.figure
         text += f"\nwrote {args.figure}"
     _emit(args, data, text)
+
+
+def _differences(args) -> None:
+    """``--differences K``: the difference scheme of order ``K`` (M = m I), its exact identity, and the norm
+    test of C^(K-1) (:mod:`analysis.bivariate.differences`; C^l with l >= 1 for M = 2I only)."""
+    import sympy as sp
+
+    from ..bivariate.differences import difference_scheme
+
+    k = _int_arg(args.differences, "--differences")
+    for option, given in (("--C", args.C), ("--within", args.within), ("--sweep", args.sweep),
+                          ("--refine", args.refine), ("--figure", args.figure), ("--grid", args.grid)):
+        if given is not None and given is not False:
+            raise AnalysisError(f"--differences is a mode of its own: drop {option} (or drop --differences)")
+    _, a, label, vals = _mask_from_args(args, keep="")
+    B = difference_scheme(a, k).value
+    m, n = B.m, len(B.indices)
+    (i0, j0), (i1, j1) = B.support_box
+    text = (f"{label}: difference scheme of order {k} (M = {m}I): B is {n} x {n} over {B.domain}, entries in "
+            f"[{i0}, {i1}] x [{j0}, {j1}], nabla^mu(z) a(z) = sum_nu b_mu,nu(z) nabla^nu(z^{m}) checked exactly")
+    data = {"scheme": label, "dilation": [list(r) for r in a.dilation.matrix],
+            "parameters": {key: sp.sstr(v) if isinstance(v, sp.Basic) else str(v) for key, v in vals.items()},
+            "differences": {"order": k, "m": m, "indices": [list(mu) for mu in B.indices], "domain": B.domain,
+                            "matrix": [[sp.sstr(B.entry(mu, nu)) for nu in B.indices] for mu in B.indices],
+                            "identity": "checked exactly", "status": "certified"},
+            "norm_test": None}
+    if B.params:
+        text += ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
+                 " (--param " + B.params[0].name + "=VALUE)")
+    elif k >= 2 and m != 2:
+        text += f"; C^{k - 1} by norms: for M = 2I only (the Hölder exponent decides C^l)"
+    else:
+        text += "; " + _norm_test_text(a, k - 1, data)
+    _emit(args, data, text)
+
+
+def _norm_test_text(a, l: int, data: dict) -> str:
+    """The C^l norm test of ``--differences l+1`` (:func:`analysis.bivariate.differences.smoothness_by_norms`):
+    its text, and its JSON in ``data["norm_test"]``."""
+    import sympy as sp
+
+    from ..bivariate.differences import smoothness_by_norms
+
+    r = smoothness_by_norms(a, l)
+    levels = r.witness["levels"]
+    data["norm_test"] = {"status": r.status, "C": l, "certified_up_to": r.value,
+                         "levels": [{"C": v["C"], "L": v["L"], "shift": None if v["shift"] is None else list(v["shift"]),
+                                     "norms": [sp.sstr(x) for x in v["norms"]], "stopped": v["stopped"]}
+                                    for v in levels]}
+    last = levels[-1]
+    norm = (lambda L: f"||S_B^{L}||_inf") if l == 0 else (lambda L: f"||({2 ** l} S_B)^{L}||_inf")
+    if r.value == l:
+        Ls = ", ".join(str(v["L"]) for v in levels[:-1])
+        lower = ("" if l == 0 else f", C^0 by order 1 (L = {Ls})" if l == 1 else
+                 f", C^0 to C^{l - 1} by the orders below (L = {Ls})")
+        via = "" if last["shift"] == (0, 0) else f" (B built from z^{last['shift']} a)"
+        verdict = "it converges (C^0, certified)" if l == 0 else f"C^{l} (certified)"
+        return f"{norm(last['L'])} = {sp.sstr(last['norms'][-1])} < 1{via}{lower}: {verdict}"
+    shown = f"; C^{r.value} is shown (certified)" if r.value >= 0 else ""
+    if last["L"] is None and last["norms"]:
+        stop = "the longest product tried" if last["stopped"].startswith("L = ") else last["stopped"]
+        why = f"C^{last['C']} not shown by norms up to L = {len(last['norms'])} ({stop}){shown}"
+    else:
+        why = f"C^{last['C']} not shown by norms ({last['stopped']}){shown}"
+    return f"{why}; inconclusive: the Hölder exponent decides C^{l}"
 
 
 def _mask_from_args(args, keep=None):
@@ -393,6 +459,8 @@ def cmd_surface(args) -> None:
 
     if args.list:
         return _list(args)
+    if args.differences is not None:
+        return _differences(args)
     if args.C is not None and not 0 <= _int_arg(args.C, "--C") <= 30:     # options before any computation
         raise AnalysisError(f"--C must be between 0 and 30, not {args.C}")
     if args.within is not None or (args.C is not None and _has_free_parameter(args)):
@@ -521,6 +589,9 @@ def register(subparsers) -> None:
     s.add_argument("--grid", choices=("quad", "triangular"),
                    help="how to draw the lattice for --refine (default: the catalogue entry's grid, else quad)")
     s.add_argument("--figure", help="with --refine: write a heat map (.png, .svg, .pdf)")
+    s.add_argument("--differences", metavar="K",
+                   help="the difference scheme of order K (M = m I): the matrix B with nabla^mu a = sum_nu b_mu,nu "
+                        "nabla^nu(z^m), checked exactly; and the norm test of C^(K-1) (C^0 for K = 1; C^l for M = 2I)")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
