@@ -101,3 +101,20 @@ def test_four_point_c1_range():
     star = RealAlgebraic.from_expr(run["right"]["exact"])
     assert star.sign_of(sp.Poly(32 * x**3 + 4 * x - 1, x)) == 0
     assert abs(float(star) - 0.19272924926) < 1e-10
+
+
+def test_not_ck_between_counterexamples_is_proven_and_never_over_a_ck_point():
+    """The complement of the C^1 set of the 4-point scheme in [0, 1/4] is proven not C^1 on the whole
+    stretch [w*, 1/4] (an exact sign of a determinant), and the same proof refuses a stretch that contains
+    C^1 points (1/8 is C^1: it lies in (0, w*))."""
+    from analysis.regularity.ranges import _prove_not_cj
+
+    a = schemes.get("four-point").symbol
+    r = ck_parameter_set(a, 1, within=(0, Q(1, 4)), grid=8)
+    assert r.status == "certified"
+    stretch = [s for s in r.witness["not_Cj"] if s["from"] != s["to"]]
+    assert len(stretch) == 1 and stretch[0]["proven"] and stretch[0]["to"] == Q(1, 4)
+    assert abs(float(stretch[0]["from"]) - 0.1927292493) < 1e-9
+    w = r.witness["parameter"]
+    assert _prove_not_cj(a, sp.Symbol(w), 1, Q(1, 8), Q(1, 4), []) is None
+    assert _prove_not_cj(a, sp.Symbol(w), 1, Q(1, 5), Q(1, 4), []) is not None

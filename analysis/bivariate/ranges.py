@@ -351,7 +351,8 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
     not_pts = sorted({x for x in not_cl}, key=float)
     gap_list = _merge([g for g in gaps])
     undecided = [s["t"] for s in samples if s["C^l"] is None]
-    status = CERTIFIED if not gap_list and not undecided else INCONCLUSIVE
+    # a cell between two counterexamples is sampled, not examined: the set is then not proven there
+    status = CERTIFIED if not gap_list and not undecided and not outer else INCONCLUSIVE
     prov: dict[str, Any] = {"method": "certified Hölder verdicts at grid points; exact s.m.p. eigenvalue crossings "
                                       "(not C^l); JSR of the Bernstein coefficient matrices on boxes (C^l on the box); next to an "
                                       "exact end, a leading invariant subspace and an exact invariant polytope of the "
@@ -362,6 +363,11 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
                                                       for a, b in gap_list)
                            + "; next to an end of eigenvalue type the boxes never reach the end (the JSR tends to "
                              "rho(M)^-l there)")
+    if outer:
+        prov["message"] = ((prov["message"] + "; " if "message" in prov else "")
+                           + "not C^%d is certified at the grid points only between the counterexamples " % l
+                           + ", ".join(f"({sp.sstr(a)}, {sp.sstr(b)})" for a, b in outer)
+                           + " (sampled, not examined)")
     return Result(value={"certified": _intervals(cert_set), "not_Cl": [x.expr for x in not_pts], "gaps": gap_list},
                   status=status,
                   witness={"parameter": p.name, "l": l, "theta": theta, "samples": samples, "boundaries": boundaries,

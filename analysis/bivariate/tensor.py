@@ -264,6 +264,9 @@ def univariate_ck_set(b: LaurentSymbol, l: int, m: int, within, *, grid: int = 8
             it = run.get("interior") or {}
             if isinstance(it.get("certified"), IntervalSet):
                 cl += list(it["certified"].parts)
+        for st in r.witness.get("not_Cj", []):          # stretches proven not C^l on the whole of them
+            if st["proven"]:
+                not_cl.append((_ra(st["from"]), _ra(st["to"]), True, True))
         return FactorSet(b, cl, not_cl, und, r, "ck_parameter_set", ends)
     r = ck_range(b, l, arity=m, within=(lo, hi), strip_budget=strip_budget)
     cl, not_cl = _sympy_parts(r.value), _sympy_parts(r.witness["not_Cj"])
@@ -380,12 +383,13 @@ def tensor_ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), 
     labels = [_combine(u, v) for u, v in zip(lb, lc)]
     value = _sets(pieces, labels)
     fb.sets, fc.sets = _sets(pieces, lb), _sets(pieces, lc)
-    status = CERTIFIED if value["undecided"].is_empty else INCONCLUSIVE
+    # certified only when every piece is decided: a piece between counterexamples is sampled, not proven
+    status = CERTIFIED if value["undecided"].is_empty and value["sampled"].is_empty else INCONCLUSIVE
     prov: dict[str, Any] = {"method": "exact tensor-product reduction (rank-1 coefficient grid, M = m I): the "
                                       "intersection of the univariate C^l sets of the factors",
                             "univariate": fb.route, "grid": grid}
     if status != CERTIFIED:
-        prov["message"] = f"undecided: {value['undecided']}"
+        prov["message"] = "; ".join(f"{k}: {value[k]}" for k in ("undecided", "sampled") if not value[k].is_empty)
     return Result(value=value, status=status,
                   witness={"parameter": p.name, "l": l, "m": factors.m, "factors": factors, "b": fb, "c": fc,
                            "same_factor": factors.same},

@@ -626,6 +626,11 @@ def cmd_range(args) -> None:
                      f"{sp.sstr(b.get('certified_not_C^j_at'))} ({b.get('how', b['status'])})")
     if r.witness["undecided"]:
         lines.append("  undecided grid points: " + ", ".join(sp.sstr(x) for x in r.witness["undecided"]))
+    for st in r.witness.get("not_Cj", []):
+        if st["proven"] and st["from"] != st["to"]:
+            def pt(x):
+                return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.12g}"
+            lines.append(f"  not C^{j} on [{pt(st['from'])}, {pt(st['to'])}] (certified: {st['how']})")
     for run in r.value:
         it = run.get("interior")
         if it:

@@ -393,7 +393,7 @@ def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
                        **{k: S.to_json() for k, S in f.sets.items()},
                        "ends": [{"exact": fmt(x), "how": why} for x, why in f.ends]})
     lines.append(f"C^{l} (certified: the intersection of the univariate C^{l} sets): {_in_text(p, v['Cl'])}")
-    lines.append(f"not C^{l} (certified counterexamples): " + (_set_text(v["not_Cl"], p) or "none"))
+    lines.append(f"not C^{l} (certified: counterexamples and proven stretches): " + (_set_text(v["not_Cl"], p) or "none"))
     if not v["undecided"].is_empty:
         lines.append(f"undecided (inconclusive): {_set_text(v['undecided'])}")
     if not v["sampled"].is_empty:

@@ -251,9 +251,20 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
     for run in runs:
         progress.step()
         interiors.append(_run_interior(a, p, j, run, interior_L_max, budget, strip_budget))
-    if boundaries_certified and runs and all(interiors):
+    # the complement: every stretch of non-C^j grid verdicts, proven not C^j on the whole of it where one
+    # product has a real eigenvalue of modulus >= the threshold throughout (exact sign of a determinant)
+    stretches = _complement_stretches(a, p, j, samples, boundaries, verdicts)
+    complement_proven = all(st["proven"] for st in stretches)
+    if boundaries_certified and (runs or stretches) and all(interiors) and complement_proven:
         status = CERTIFIED
         message = None
+    elif boundaries_certified and all(interiors) and not complement_proven:
+        status = INCONCLUSIVE
+        message = ("each reported boundary is certified on both sides and C^%d is proven on every run, but not C^%d "
+                   "is proven only at the grid points of " % (j, j)
+                   + ", ".join(f"[{sp.sstr(st['from'])}, {sp.sstr(st['to'])}]" for st in stretches if not st["proven"])
+                   + " (no product of length <= 4 or found at the grid points has a real eigenvalue of modulus "
+                     ">= the threshold on the whole of it): the C^%d set there is sampled, not proven" % j)
     else:
         status = INCONCLUSIVE
         strips = [s for run in runs for s in (run.get("interior") or {}).get("strips", [])]
@@ -273,9 +284,122 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
         prov["message"] = message
     return Result(value=runs, status=status,
                   witness={"samples": samples, "boundaries": boundaries, "parameter": p.name, "j": j,
-                           "undecided": undecided, "boundaries_certified": boundaries_certified},
+                           "undecided": undecided, "boundaries_certified": boundaries_certified,
+                           "not_Cj": stretches},
                   provenance=prov)
 
+
+def _complement_stretches(a, p, j, samples, boundaries, verdicts) -> list[dict]:
+    """The stretches of consecutive non-C^j grid verdicts, each from the certified not-C^j point of the boundary
+    on its left (or the grid's first point) to that on its right (or the last point), with ``proven``: whether
+    :func:`_prove_not_cj` shows that no point of the closed stretch is C^j. A stretch next to an undecided grid
+    point or an uncertified boundary is not attempted."""
+    out = []
+    n = len(samples)
+    i = 0
+    while i < n:
+        if samples[i]["C^j"] is not False:
+            i += 1
+            continue
+        s = i
+        while i + 1 < n and samples[i + 1]["C^j"] is False:
+            i += 1
+        e = i
+        i += 1
+        ends = []
+        for k, nb in ((s, s - 1), (e, e + 1)):
+            if nb < 0 or nb >= n:
+                ends.append(samples[k]["p"])
+                continue
+            pair = tuple(sorted((samples[k]["p"], samples[nb]["p"])))
+            b = next((b for b in boundaries if tuple(b["between"]) == pair), None)
+            if samples[nb]["C^j"] is None or b is None or b["status"] != CERTIFIED:
+                ends.append(None)
+            else:
+                ends.append(b["exact"] if "exact" in b else b["certified_not_C^j_at"])
+        st = {"from": ends[0], "to": ends[1], "proven": False}
+        if None not in ends and RealAlgebraic.from_expr(ends[0]).compare(RealAlgebraic.from_expr(ends[1])) == 0:
+            # one point: a grid point's certified verdict or the exact crossing of its boundary
+            st.update(proven=True, how="a single point, certified not C^%d" % j)
+        elif None not in ends:
+            words = []
+            for k in range(s, e + 1):
+                r = verdicts.get(samples[k]["p"]) if verdicts else None
+                for w in (r.witness.get("product") if r is not None else None,
+                          r.witness["alpha"].witness.get("product")
+                          if r is not None and r.witness.get("alpha") is not None else None):
+                    if w and tuple(w) not in words:
+                        words.append(tuple(w))
+            proof = _prove_not_cj(a, p, j, ends[0], ends[1], words)
+            if proof:
+                st.update(proven=True, how=proof)
+        out.append(st)
+    return out
+
+
+def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
+    """A proof that ``S_a(p)`` is not C^j for every ``p`` in the closed interval ``[lo, hi]`` (exact or algebraic
+    ends), or ``None``.
+
+    Algorithm: for a word ``w`` of length ``L`` and a sign ``s``, with ``theta = 2^{(N-1-j)L}`` (the threshold of
+    :func:`_exact_boundaries`: an eigenvalue of ``T_w(p)`` of modulus ``>= theta`` means not C^j) and ``n`` the size
+    of the matrices, the characteristic polynomial ``chi_p(x) = det(x I - T_w(p))`` is monic of degree ``n``, so
+    ``chi_p(theta) <= 0`` gives a real eigenvalue ``>= theta`` and ``(-1)^n chi_p(-theta) <= 0`` one ``<= -theta``
+    (intermediate values). Both are polynomials ``f`` in ``p`` over Q (up to a positive factor:
+    :func:`_crossing_polynomial`). The real roots of every candidate ``f`` inside ``(lo, hi)`` (exact isolation) cut
+    the interval into pieces on which no candidate changes sign; a piece is covered when some ``f`` is negative at a
+    rational point inside it (then ``f <= 0`` on the closed piece), and the stretch is proven when every piece is.
+    Candidates: the products found at the grid points of the stretch and every product of length at most 4.
+    """
+    from itertools import product as all_words
+
+    from ..algebra.algebraic import rational_between
+
+    if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ) or tuple(a.domain.symbols) != (p,):
+        return None
+    K = a.domain
+    N, T = _domain_transitions(a, K)
+    if j > N - 1:
+        return None
+    n = T[0].shape[0]
+    L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
+    if L.compare(H) >= 0:
+        return None
+    cands = list(words)
+    for length in range(1, 5):
+        for w in all_words(range(2), repeat=length):
+            if min(w[i:] + w[:i] for i in range(length)) == w and w not in cands:
+                cands.append(w)
+    polys = []          # (f, label) with f <= 0  =>  not C^j
+    cuts = [L, H]
+    for word in cands:
+        theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
+        for sgn in (1, -1):
+            num = _crossing_polynomial(a, K, p, tuple(word), sgn * theta)
+            if num is None:
+                return None
+            f = num if sgn < 0 else num * (-1) ** n
+            label = "a real eigenvalue %s %s of T_%s(p)" % (">=" if sgn > 0 else "<=", sp.sstr(sgn * theta),
+                                                            "".join(map(str, word)))
+            if f.is_zero:
+                return label + " identically"
+            if f.degree() >= 1:
+                cuts += [r for r in RealAlgebraic.roots_of(f) if L.compare(r) < 0 < H.compare(r)]
+            polys.append((f, label))
+    import functools
+
+    cuts = sorted(cuts, key=functools.cmp_to_key(lambda u, v: u.compare(v)))
+    cuts = [c for k, c in enumerate(cuts) if k == 0 or cuts[k - 1].compare(c) != 0]
+    used = []
+    for left, right in zip(cuts[:-1], cuts[1:]):
+        q = rational_between(left, right)
+        hit = next((label for f, label in polys if f.eval(q) < 0), None)
+        if hit is None:
+            return None
+        if hit not in used:
+            used.append(hit)
+    return ("%s on the whole stretch (exact: %d piece(s) cut at the real roots of the determinants, on each of "
+            "which one of them is negative)" % ("; ".join(used), len(cuts) - 1))
 
 def _run_interior(a, p, j, run, L_max, budget, strip_budget: int = 30_000) -> bool:
     """Cover one run by the exact parametric norm tests (and the strips they leave next to ends of
