@@ -15,12 +15,20 @@ factors are normalised to the m-ary sum ``m``:
 The reduction is made only when ``S`` is the constant ``m^2`` (a polynomial of degree 0 in ``t``): then ``b`` and
 ``c`` are polynomials in ``t`` with rational coefficients, sum to ``m`` **for every** ``t`` (so on the whole
 parameter interval, not only generically), and ``S A = r s^T`` is ``A = b c^T``, checked exactly coefficient
-by coefficient. Otherwise (a minor not identically zero, a dilation other than ``m I``, a total depending on ``t``,
-coefficients that are not polynomials over ``Q``) nothing is reduced, and the reason is returned.
+by coefficient. Otherwise (a minor not identically zero, a dilation other than ``m I`` with ``m >= 2``, a total
+depending on ``t`` or other than ``m^2``, coefficients that are not polynomials over ``Q``) nothing is reduced, and
+the reason is returned ("not reduced: ..."). What that certifies is the exact fact named in the reason, i.e. that this
+reduction does not apply — **not** that no parameter value gives a tensor product: a minor that is a nonzero
+polynomial in ``t`` leaves rank 1 possible at its zeros (where every minor may vanish), and a total depending on
+``t`` says nothing about the rank at all. Only a minor that is a nonzero constant shows rank ``>= 2`` for every
+parameter value.
 
 Theorem
 -------
-Let ``M = m I`` and ``a(z1, z2) = b(z1) c(z2)`` with univariate m-ary masks ``b, c``, ``sum b = sum c = m``.
+Let ``M = m I`` with an integer ``m >= 2`` and ``a(z1, z2) = b(z1) c(z2)`` with univariate m-ary masks ``b, c``,
+``sum b = sum c = m``. (``m >= 2`` is needed: with ``M = -m I``, ``(S_a f)(alpha) = sum_beta a(alpha + m beta) f(beta)``
+is ``S_{b (x) c}`` applied to ``f(-.)``, and its factors ``f -> S_b f(-.)`` are not the m-ary schemes ``S_b``; two
+of its steps have the symbol ``a(z) a(z^-m)``.)
 
 (i) ``S_a = S_b (x) S_c``: ``(S_a f)(alpha) = sum_beta b(alpha_1 - m beta_1) c(alpha_2 - m beta_2) f(beta)``, and
 the refinable distributions satisfy ``phi_a = phi_b (x) phi_c`` (Fourier transforms: ``M^{-k} = m^{-k} I``, so
@@ -75,7 +83,7 @@ Examples
 ('certified', '1/2*z^(-1) + 1 + 1/2*z', True)
 >>> q = tensor_factors(BivariateMask.from_symbol("(1+z1)*(1+z2)/2", "quincunx"))
 >>> q.value, q.witness["reason"]
-(None, 'the dilation [[1, 1], [1, -1]] is not m I (a multiple of the identity)')
+(None, 'not reduced: the dilation [[1, 1], [1, -1]] is not m I with m >= 2')
 
 References
 ----------
@@ -123,21 +131,28 @@ def _poly(v, gens):
 
 
 def _not_tensor(reason: str, **extra) -> Result:
-    return Result(value=None, status=CERTIFIED, witness={"reason": reason, **extra},
-                  provenance={"method": "exact 2x2 minors of the coefficient grid over Q[t] (sympy Poly)"})
+    """Not reduced: certified is the exact fact ``reason`` names, not "no parameter value is a tensor product"."""
+    return Result(value=None, status=CERTIFIED, witness={"reason": f"not reduced: {reason}", **extra},
+                  provenance={"method": "exact 2x2 minors of the coefficient grid over Q[t] (sympy Poly)",
+                              "certified": "that the exact reduction does not apply, for the reason given"})
 
 
 def tensor_factors(a: BivariateMask) -> Result:
     """Is ``a`` a tensor product ``b(z1) c(z2)`` with ``M = m I``?  (module docstring)
 
     ``value``: a :class:`TensorFactors` (certified: the exact identity ``S A = r s^T`` over ``Q[t]``), or ``None``
-    with ``witness["reason"]`` (certified too: the reason is an exact fact, e.g. a minor that is not zero).
+    with ``witness["reason"]`` = ``"not reduced: ..."``. Certified then is only the exact fact the reason names
+    (the dilation, a total depending on ``t``, a minor not identically zero, ...), i.e. that the reduction does not
+    apply on the whole parameter interval; the mask may still have rank 1 at exceptional values of ``t`` (the
+    common zeros of the minors) or, when only the total depends on ``t``, at every value. A minor that is a
+    nonzero constant shows that no parameter value gives a tensor product.
     """
     (m11, m12), (m21, m22) = a.dilation.matrix
-    if not (m12 == m21 == 0 and m11 == m22):
-        return _not_tensor(f"the dilation {[list(r) for r in a.dilation.matrix]} is not m I "
-                           "(a multiple of the identity)")
-    m = abs(m11)
+    if not (m12 == m21 == 0 and m11 == m22 and m11 >= 2):
+        return _not_tensor(f"the dilation {[list(r) for r in a.dilation.matrix]} is not m I with m >= 2"
+                           + (" (M = -m I is not reduced: S_a f = S_{b (x) c} f(-.), so the factors are not m-ary "
+                              "schemes S_b, S_c)" if m12 == m21 == 0 and m11 == m22 else ""))
+    m = m11
     gens = a.params or (sp.Dummy("t"),)
     (i0, j0), (i1, j1) = a.support_box
     A = {}
@@ -153,14 +168,15 @@ def tensor_factors(a: BivariateMask) -> Result:
     S = sum(A.values(), zero)
     if not S.is_ground or S.is_zero:
         return _not_tensor(f"the mask sums to {sp.sstr(S.as_expr())}, not a nonzero constant for every parameter "
-                           "value: the factors cannot be normalised on the whole interval")
+                           "value: the factors cannot be normalised on the whole interval (the rank of the grid "
+                           "is not examined)")
     r = [sum((get(i, j) for j in cols), zero) for i in rows]
     s = [sum((get(i, j) for i in rows), zero) for j in cols]
     # rank 1 over Q(t) with S != 0  <=>  S A = r s^T identically (then every 2x2 minor vanishes)
     for i, ri in zip(rows, r):
         for j, sj in zip(cols, s):
             if not (get(i, j) * S - ri * sj).is_zero:
-                return _not_tensor(*_nonzero_minor(get, rows, cols))
+                return _not_tensor(*_nonzero_minor(get, rows, cols, ", ".join(str(g) for g in gens)))
     if S.as_expr() != m * m:
         return _not_tensor(f"the mask sums to {sp.sstr(S.as_expr())}, not |det M| = {m * m}")
     # b = m r / S, c = m s / S with S = m^2, i.e. b = r / m, c = s / m: A = b c^T, sum b = sum c = m
@@ -172,16 +188,22 @@ def tensor_factors(a: BivariateMask) -> Result:
                                         "S = m^2 the constant total); b = m r/S, c = m s/S"})
 
 
-def _nonzero_minor(get, rows, cols) -> tuple:
-    """The first ``2 x 2`` minor of the grid that is not identically zero (it exists: the rank is at least 2)."""
+def _nonzero_minor(get, rows, cols, names: str) -> tuple:
+    """The first ``2 x 2`` minor of the grid that is not identically zero (it exists: the rank over ``Q(t)`` is at
+    least 2), and what it shows: rank ``>= 2`` for every parameter value when it is a nonzero constant, else only
+    away from its zeros."""
     for i in rows:
         for i2 in (x for x in rows if x > i):
             for j in cols:
                 for j2 in (y for y in cols if y > j):
                     d = get(i, j) * get(i2, j2) - get(i, j2) * get(i2, j)
                     if not d.is_zero:
-                        return (f"the 2x2 minor of rows z1^{i}, z1^{i2} and columns z2^{j}, z2^{j2} of the coefficient "
-                                f"grid is {sp.sstr(d.as_expr())}, not identically zero (rank 2)",)
+                        what = (f"the 2x2 minor of rows z1^{i}, z1^{i2} and columns z2^{j}, z2^{j2} of the "
+                                f"coefficient grid is {sp.sstr(d.as_expr())}")
+                        if d.is_ground:
+                            return (f"{what}, not zero: rank >= 2 (not a tensor product)",)
+                        return (f"{what}, not identically zero: rank >= 2 over Q({names}), so not a tensor product on "
+                                "the whole interval (rank 1 is still possible where every minor vanishes)",)
     raise AssertionError("rank >= 2 without a nonzero minor")          # pragma: no cover
 
 
@@ -234,8 +256,9 @@ def univariate_ck_set(b: LaurentSymbol, l: int, m: int, within, *, grid: int = 8
     ``subdiv range``: binary, :func:`analysis.regularity.ranges.ck_parameter_set` (certified grid verdicts, exact
     s.m.p. crossings, the interior by exact parametric norm tests and invariant polytopes); ``m > 2``,
     :func:`analysis.regularity.ranges.ck_range` (exact norm and eigenvalue sets) and the verdicts at the two ends
-    of ``within``. A factor without a parameter: its verdict (:func:`analysis.regularity.holder.smoothness`)
-    holds on the whole interval."""
+    of ``within``; when the family has fewer than ``l + 1`` factors ``q_m`` identically, :func:`_too_few_factors`
+    instead. A factor without a parameter: its verdict (:func:`analysis.regularity.holder.smoothness`) holds on the
+    whole interval."""
     from ..regularity.holder import smoothness
     from ..regularity.ranges import ck_parameter_set, ck_range
 
@@ -268,6 +291,9 @@ def univariate_ck_set(b: LaurentSymbol, l: int, m: int, within, *, grid: int = 8
             if st["proven"]:
                 not_cl.append((_ra(st["from"]), _ra(st["to"]), True, True))
         return FactorSet(b, cl, not_cl, und, r, "ck_parameter_set", ends)
+    few = _too_few_factors(b, l, m, (lo, hi), budget)
+    if few is not None:
+        return few
     r = ck_range(b, l, arity=m, within=(lo, hi), strip_budget=strip_budget)
     cl, not_cl = _sympy_parts(r.value), _sympy_parts(r.witness["not_Cj"])
     und = _sympy_parts(r.witness["undecided"])
@@ -275,6 +301,51 @@ def univariate_ck_set(b: LaurentSymbol, l: int, m: int, within, *, grid: int = 8
         v = smoothness(b.subs({b.params[0]: x}), l, arity=m, budget=budget).value
         (cl if v else not_cl if v is False else und).append(_point(x))
     return FactorSet(b, cl, not_cl, und, r, "ck_range", [])
+
+
+def _too_few_factors(b: LaurentSymbol, l: int, m: int, within, budget: int) -> FactorSet | None:
+    """The ``C^l`` set of an m-ary family with fewer than ``l + 1`` factors ``q_m = 1 + z + ... + z^(m-1)``
+    identically in its parameter (``None`` when it has enough): certified **not** ``C^l`` on the whole of
+    ``within`` except at the exceptional values where ``q_m`` divides ``b`` more often, each decided by its own
+    point verdict.
+
+    ``C^l`` needs ``q_m^(l+1) | b`` (the factor-count verdict of :func:`analysis.regularity.holder.smoothness`:
+    with ``k + 1`` factors, ``alpha <= k + 1``, and ``C^l`` needs ``q_m^(l+1) | b`` and ``alpha > l``). Away from the
+    exceptional values of :func:`analysis.algebra.factorization.smoothing_factor` (the common real zeros of the
+    remainder of the next division, exact) ``b`` has exactly the generic number of factors."""
+    from ..algebra.factorization import smoothing_factor
+    from ..regularity.holder import smoothness
+
+    f = smoothing_factor(b, arity=m)
+    if f.value >= l + 1:
+        return None
+    L, H = _ra(within[0]), _ra(within[1])
+    special = []
+    for case in f.witness["exceptional"]:
+        (x,) = case["condition"].values()
+        x = _ra(x)
+        if _cmp(L, x) <= 0 <= _cmp(H, x) and (case["k"] is None or case["k"] >= l + 1):
+            special.append(x)
+    special = sorted(special, key=functools.cmp_to_key(_cmp))
+    cl, not_cl, und = [], [], []
+    cuts = [L] + special + [H]
+    for k, (x, y) in enumerate(zip(cuts, cuts[1:])):
+        if _cmp(x, y) < 0:
+            not_cl.append((x, y, k == 0, k == len(cuts) - 2))
+    for x in special:
+        try:
+            v = smoothness(b.subs({b.params[0]: x.expr}), l, arity=m, budget=budget).value
+        except AnalysisError:
+            v = None
+        (cl if v else not_cl if v is False else und).append(_point(x))
+    reason = (f"only {f.value} factors q_{m} identically in {b.params[0].name} and C^{l} needs {l + 1} "
+              f"(q_{m}^{l + 1} | b): not C^{l} on the whole interval"
+              + (f" except at {b.params[0].name} = {', '.join(sp.sstr(x.expr) for x in special)}, where q_{m} "
+                 "divides b more often (each decided by its own verdict)" if special else ""))
+    res = Result(value=False, status=CERTIFIED if not und else INCONCLUSIVE,
+                 witness={"reason": reason, "factors": f.value, "exceptional": special},
+                 provenance={"method": "factor count (exact division by q_m; exceptional values exact)"})
+    return FactorSet(b, cl, not_cl, und, res, "factor count", [])
 
 
 # --------------------------------------------------------------------------------------------
@@ -365,7 +436,7 @@ def tensor_ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), 
     if factors is None:
         t = tensor_factors(general)
         if t.value is None:
-            raise AnalysisError(f"not a tensor-product mask: {t.witness['reason']}")
+            raise AnalysisError(f"the tensor-product route does not apply ({t.witness['reason']})")
         factors = t.value
     fb = univariate_ck_set(factors.b, l, factors.m, (lo, hi), grid=grid, budget=budget, tol=tol,
                            strip_budget=strip_budget)

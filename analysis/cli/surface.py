@@ -379,7 +379,8 @@ def _tensor_range(args, general, tf, label, l, within, grid, budget) -> None:
     for name, f in factors:
         st = "certified" if f.sets["undecided"].is_empty else "inconclusive"
         how = {"ck_parameter_set": f"univariate, as subdiv range --grid {grid}",
-               "ck_range": f"univariate {m}-ary, as subdiv range: exact norm and eigenvalue sets"}.get(
+               "ck_range": f"univariate {m}-ary, as subdiv range: exact norm and eigenvalue sets",
+               "factor count": f"univariate {m}-ary: {f.result.witness.get('reason')}"}.get(
             f.route, "no parameter: one certified verdict")
         lines.append(f"C^{l} of S_{name} ({how}): {_in_text(p, f.sets['Cl'])}   [{st}]")
         for x, why in f.ends:
