@@ -199,3 +199,46 @@ def test_cli_differences_errors_are_one_line(argv, match, capsys):
     cap = capsys.readouterr()
     assert cap.err.count("\n") == 1 and cap.err.startswith("subdiv: error:") and match in cap.err
     assert "error" in json.loads(cap.out)
+
+
+def _json_norm(matrix, L, m=2):
+    """||S_B^L||_inf of a matrix given as JSON strings (read back with the input reader)."""
+    from analysis.algebra.reader import read_expression
+
+    B = sp.Matrix([[read_expression(e, names={"z1": Z1, "z2": Z2}) for e in row] for row in matrix])
+    P = sp.eye(B.rows)
+    for l in range(L):
+        P = (P * B.subs({Z1: Z1 ** m ** l, Z2: Z2 ** m ** l}, simultaneous=True)).applyfunc(sp.expand)
+    N, best = m ** L, 0
+    for i in range(P.rows):
+        sums: dict = {}
+        for j in range(P.cols):
+            e = sp.expand(P[i, j] * (Z1 * Z2) ** (8 * N))
+            if e != 0:
+                for (x, y), c in sp.Poly(e, Z1, Z2).terms():
+                    sums[(x % N, y % N)] = sums.get((x % N, y % N), 0) + abs(c)
+        best = max(best, max(sums.values()))
+    return B, best
+
+
+def test_the_json_shows_the_scheme_whose_norm_is_certified(capsys):
+    """Zwart-Powell C^1: the norm 1/2 at L = 2 is that of the scheme built from z^(1, 1) a, not of the unshifted one;
+    the JSON gives each level's scheme, so every certified norm and identity is checked here from the JSON alone."""
+    assert main(["surface", "--scheme", "zwart-powell", "--differences", "2", "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    a = get("zwart-powell").mask()
+    assert doc["differences"]["shift"] == [1, 1]
+    top = doc["norm_test"]["levels"][-1]
+    assert top["shift"] == [1, 1] and top["order"] == 2 and top["matrix"] == doc["differences"]["matrix"]
+    for v in doc["norm_test"]["levels"]:
+        k = v["order"]
+        B, norm = _json_norm(v["matrix"], v["L"])
+        indices = [(k - i, i) for i in range(k + 1)]
+        for r, mu in enumerate(indices):            # the identity, from the JSON matrix
+            assert sp.expand(_nabla(mu) * a.symbol - sum(B[r, c] * _nabla(nu, 2) for c, nu in enumerate(indices))) == 0
+        assert sp.Rational(v["norms"][-1]) == norm * v["scaled_by"] ** v["L"] < 1
+    unshifted = difference_scheme(a, 2).value
+    assert scheme_norm(unshifted, 2) * 4 >= 1                  # the unshifted scheme does not show it at L = 2
+    assert main(["surface", "--scheme", "zwart-powell", "--differences", "2"]) == 0
+    out = capsys.readouterr().out
+    assert "difference scheme of order 2 (M = 2I, B built from z^(1, 1) a): B is 3 x 3 over QQ, entries in [-1, 2]" in out

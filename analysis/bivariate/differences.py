@@ -499,7 +499,11 @@ def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms:
     search stops at the first one not shown.
 
     ``value`` is the largest ``j <= l`` certified (``-1``: not even ``C^0``); status *certified* when it is ``l``,
-    else *inconclusive*; ``witness["levels"]`` lists each level tried with its ``L`` and exact scaled norms.
+    else *inconclusive*; ``witness["levels"]`` lists each level tried with its ``L``, the exact scaled norms
+    ``||(2^j S_B)^L||_inf`` for ``L = 1, 2, ...`` and the scheme ``B`` they are the norms of (``scheme``, the
+    :class:`DifferenceScheme` of order ``j + 1``, and its ``shift``: ``B`` is built from ``z^shift a``; when no
+    ``L`` works, the unshifted one), so that each norm can be recomputed from the level alone
+    (``None`` for a level where no scheme exists).
     For ``m >= 3`` only ``l = 0`` is available (the reference is for ``2I``): use the Hölder exponent.
 
     >>> from schemes.surfaces import get
@@ -519,10 +523,10 @@ def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms:
         try:
             L, B, norms, _, stopped = _first_contractive(a, j + 1, j, max_L, max_terms)
         except AnalysisError as e:
-            levels.append({"C": j, "L": None, "norms": [], "stopped": str(e), "shift": None})
+            levels.append({"C": j, "L": None, "norms": [], "stopped": str(e), "shift": None, "scheme": None})
             break
-        levels.append({"C": j, "L": L, "norms": [_q(x) for x in norms], "stopped": stopped,
-                       "shift": B.shift if L is not None else None})
+        levels.append({"C": j, "L": L, "norms": [_q(x) for x in norms], "stopped": stopped, "shift": B.shift,
+                       "scheme": B})
         if L is None:
             break
         top = j

@@ -73,29 +73,42 @@ def _differences(args) -> None:
             raise AnalysisError(f"--differences is a mode of its own: drop {option} (or drop --differences)")
     _, a, label, vals = _mask_from_args(args, keep="")
     B = difference_scheme(a, k).value
-    m, n = B.m, len(B.indices)
-    (i0, j0), (i1, j1) = B.support_box
-    text = (f"{label}: difference scheme of order {k} (M = {m}I): B is {n} x {n} over {B.domain}, entries in "
-            f"[{i0}, {i1}] x [{j0}, {j1}], nabla^mu(z) a(z) = sum_nu b_mu,nu(z) nabla^nu(z^{m}) checked exactly")
+    m = B.m
     data = {"scheme": label, "dilation": [list(r) for r in a.dilation.matrix],
             "parameters": {key: sp.sstr(v) if isinstance(v, sp.Basic) else str(v) for key, v in vals.items()},
-            "differences": {"order": k, "m": m, "indices": [list(mu) for mu in B.indices], "domain": B.domain,
-                            "matrix": [[sp.sstr(B.entry(mu, nu)) for nu in B.indices] for mu in B.indices],
-                            "identity": "checked exactly", "status": "certified"},
-            "norm_test": None}
+            "differences": None, "norm_test": None}
     if B.params:
-        text += ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
-                 " (--param " + B.params[0].name + "=VALUE)")
+        test = ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
+                " (--param " + B.params[0].name + "=VALUE)")
     elif k >= 2 and m != 2:
-        text += f"; C^{k - 1} by norms: for M = 2I only (the Hölder exponent decides C^l)"
+        test = f"; C^{k - 1} by norms: for M = 2I only (the Hölder exponent decides C^l)"
     else:
-        text += "; " + _norm_test_text(a, k - 1, data)
+        text, tested = _norm_test_text(a, k - 1, data)
+        test = "; " + text
+        B = tested if tested is not None else B            # show the scheme whose norm is certified
+    n = len(B.indices)
+    (i0, j0), (i1, j1) = B.support_box
+    built = "" if B.shift == (0, 0) else f", B built from z^{B.shift} a"
+    data["differences"] = {"order": k, "m": m, "shift": list(B.shift), **_scheme_json(B),
+                           "identity": "checked exactly", "status": "certified"}
+    text = (f"{label}: difference scheme of order {k} (M = {m}I{built}): B is {n} x {n} over {B.domain}, entries in "
+            f"[{i0}, {i1}] x [{j0}, {j1}], nabla^mu(z) a(z) = sum_nu b_mu,nu(z) nabla^nu(z^{m}) checked exactly"
+            + test)
     _emit(args, data, text)
 
 
-def _norm_test_text(a, l: int, data: dict) -> str:
+def _scheme_json(B) -> dict:
+    """A difference scheme in the JSON: its indices, domain and matrix entry by entry (exact, sympy strings)."""
+    import sympy as sp
+
+    return {"indices": [list(mu) for mu in B.indices], "domain": B.domain,
+            "matrix": [[sp.sstr(B.entry(mu, nu)) for nu in B.indices] for mu in B.indices]}
+
+
+def _norm_test_text(a, l: int, data: dict):
     """The C^l norm test of ``--differences l+1`` (:func:`analysis.bivariate.differences.smoothness_by_norms`):
-    its text, and its JSON in ``data["norm_test"]``."""
+    its text, its JSON in ``data["norm_test"]`` (each level with the scheme its norms are of: order, shift,
+    matrix), and the scheme of order ``l + 1`` whose norms are reported (``None`` when the test stopped below)."""
     import sympy as sp
 
     from ..bivariate.differences import smoothness_by_norms
@@ -103,25 +116,28 @@ def _norm_test_text(a, l: int, data: dict) -> str:
     r = smoothness_by_norms(a, l)
     levels = r.witness["levels"]
     data["norm_test"] = {"status": r.status, "C": l, "certified_up_to": r.value,
-                         "levels": [{"C": v["C"], "L": v["L"], "shift": None if v["shift"] is None else list(v["shift"]),
-                                     "norms": [sp.sstr(x) for x in v["norms"]], "stopped": v["stopped"]}
+                         "levels": [{"C": v["C"], "L": v["L"], "order": v["C"] + 1,
+                                     "shift": None if v["shift"] is None else list(v["shift"]),
+                                     "scaled_by": 2 ** v["C"],
+                                     "norms": [sp.sstr(x) for x in v["norms"]], "stopped": v["stopped"],
+                                     **({} if v["scheme"] is None else {"matrix": _scheme_json(v["scheme"])["matrix"]})}
                                     for v in levels]}
     last = levels[-1]
+    tested = last["scheme"] if last["C"] == l else None
     norm = (lambda L: f"||S_B^{L}||_inf") if l == 0 else (lambda L: f"||({2 ** l} S_B)^{L}||_inf")
     if r.value == l:
         Ls = ", ".join(str(v["L"]) for v in levels[:-1])
         lower = ("" if l == 0 else f", C^0 by order 1 (L = {Ls})" if l == 1 else
                  f", C^0 to C^{l - 1} by the orders below (L = {Ls})")
-        via = "" if last["shift"] == (0, 0) else f" (B built from z^{last['shift']} a)"
         verdict = "it converges (C^0, certified)" if l == 0 else f"C^{l} (certified)"
-        return f"{norm(last['L'])} = {sp.sstr(last['norms'][-1])} < 1{via}{lower}: {verdict}"
+        return f"{norm(last['L'])} = {sp.sstr(last['norms'][-1])} < 1{lower}: {verdict}", tested
     shown = f"; C^{r.value} is shown (certified)" if r.value >= 0 else ""
     if last["L"] is None and last["norms"]:
         stop = "the longest product tried" if last["stopped"].startswith("L = ") else last["stopped"]
         why = f"C^{last['C']} not shown by norms up to L = {len(last['norms'])} ({stop}){shown}"
     else:
         why = f"C^{last['C']} not shown by norms ({last['stopped']}){shown}"
-    return f"{why}; inconclusive: the Hölder exponent decides C^{l}"
+    return f"{why}; inconclusive: the Hölder exponent decides C^{l}", tested
 
 
 def _mask_from_args(args, keep=None):
