@@ -242,3 +242,17 @@ def test_the_json_shows_the_scheme_whose_norm_is_certified(capsys):
     assert main(["surface", "--scheme", "zwart-powell", "--differences", "2"]) == 0
     out = capsys.readouterr().out
     assert "difference scheme of order 2 (M = 2I, B built from z^(1, 1) a): B is 3 x 3 over QQ, entries in [-1, 2]" in out
+
+
+@pytest.mark.parametrize("name,j,shift", [("loop", 1, (0, 0)), ("loop", 3, (0, 0)), ("butterfly", 1, (1, 1)),
+                                          ("zwart-powell", 1, (1, 0)), ("bicubic", 2, (0, 0))], ids=lambda x: str(x))
+def test_with_the_sum_rules_of_order_j_plus_1_two_to_the_j_s_b_j_keeps_constant_vectors(name, j, shift):
+    """Step (a) of the C^l proof in the module docstring: when B_{j+1} exists, every coset of B_j sums to 2^-j I,
+    i.e. 2^j S_{B_j} maps constant vectors to themselves (for every difference scheme of order j, shifted or not)."""
+    a = get(name).mask()
+    difference_scheme(a, j + 1)                                       # the sum rules of order j + 1 hold
+    B = difference_scheme(a, j, shift).value
+    for eps in [(0, 0), (1, 0), (0, 1), (1, 1)]:
+        coset = sp.Matrix([[sum((c for (x, y), c in B.entries.get((mu, nu), {}).items()
+                                 if (x % 2, y % 2) == eps), sp.Integer(0)) for nu in B.indices] for mu in B.indices])
+        assert coset == sp.eye(j + 1) / 2 ** j

@@ -31,7 +31,7 @@ difference scheme of ``a``), and takes the first ``(L, gamma)`` that works.
 
 **C^l by norms** (``M = 2I`` only): ``C^0`` as above, then for ``j = 1, ..., l`` in turn, ``C^j`` from ``C^{j-1}``
 and ``||(2^j S_{B_{j+1}})^L||_inf < 1`` (Warren–Weimer 2002, Theorem 3.11: ``2^j S_{B_{j+1}}`` refines the
-differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``); :func:`smoothness_by_norms`. For
+differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``; proved below); :func:`smoothness_by_norms`. For
 other ``m`` and whenever the norms do not show it, ``C^l`` is left to the Hölder exponent
 (:mod:`analysis.bivariate.holder`).
 
@@ -42,6 +42,34 @@ the three-direction triangulation of ``m^{-n} Z^2``. Since ``sum_beta a(alpha - 
 each bracket is a sum of boundedly many first differences of ``f^n`` (``beta`` runs over a fixed window around
 ``alpha/m``). ``g_{n+1} - g_n`` is piecewise linear on the finer grid, so ``||g_{n+1} - g_n||_inf <= K ||nabla
 f^n||_inf``, a geometric sequence: ``g_n`` converges uniformly to a continuous limit.
+
+Proof of the ``C^l`` step (``M = 2I``; likewise self-contained). Let ``j >= 1``, ``S_a`` be ``C^{j-1}`` (the divided
+differences ``2^{n(j-1)} nabla^nu f^n``, ``|nu| = j - 1``, converge uniformly to ``d^nu F``; for ``j = 1`` this is
+``f^n -> F``), ``B_j``, ``B_{j+1}`` difference schemes of orders ``j`` and ``j + 1``, and ``eta = ||(2^j
+S_{B_{j+1}})^L||_inf < 1``.
+(a) *``2^j S_{B_j}`` maps constant vectors to themselves.* ``B_{j+1}`` exists (built and checked exactly), so ``a``
+vanishes to order ``j + 1`` at ``(-1, 1)``, ``(1, -1)``, ``(-1, -1)`` (in the identity take ``mu = (j+1, 0)`` near
+``z1 = -1`` and ``mu = (0, j+1)`` near ``z2 = -1``: ``nabla^mu(z)`` is a unit there and every ``nabla^nu(z^2)``
+vanishes to order ``j + 1``); with the cosets summing to 1 these are the sum rules of order ``j + 1``: the moments
+``sum_{gamma = eps mod 2} a(gamma) gamma^r``, ``|r| <= j``, do not depend on the coset ``eps``. Every ``v in
+R^{j+1}`` is the vector ``(nabla^mu q)_{|mu| = j}`` of the ``j``-th differences of the homogeneous polynomial ``q(x)
+= sum_mu v_mu x^mu / mu!`` of degree ``j`` (``nabla^mu q = d^mu q = v_mu``, a constant). Expanding ``q((alpha -
+gamma)/2)`` in ``gamma``, ``(S_a q)(alpha) = sum_{gamma = alpha mod 2} a(gamma) q((alpha - gamma)/2) = sum_{|r| <= j}
+c_r (d^r q)(alpha/2)`` with ``c_0 = 1``: ``S_a q = q(./2) + (terms of degree < j)``, whose ``j``-th differences are
+``2^{-j} v``. The identity holds for every sequence, so ``S_{B_j} v = (nabla^mu S_a q)_mu = 2^{-j} v``.
+(b) ``D^n = 2^{nj} (nabla^mu f^n)_{|mu| = j}`` satisfies ``D^{n+1} = 2^j S_{B_j} D^n``. Its first differences
+``nabla_i D^n_mu = 2^{nj} nabla^{mu + e_i} f^n`` are entries of ``E^n = 2^{nj} (nabla^nu f^n)_{|nu| = j+1}``, and
+``E^{n+1} = 2^j S_{B_{j+1}} E^n``, so ``||nabla D^n||_inf <= ||E^n||_inf <= C eta^{n/L} ||E^0||_inf``.
+(c) The ``C^0`` argument runs on ``D^n`` (with (a) in place of the cosets summing to 1): ``D^{n+1}(alpha) -
+g_n(alpha/2^{n+1}) = (2^j S_{B_j} (D^n - g_n(alpha/2^{n+1})))(alpha)`` is at most ``K ||E^n||_inf``, so the
+piecewise linear interpolants of ``D^n`` converge uniformly to continuous limits ``G_mu``.
+(d) For ``mu_i >= 1``, ``D^n_mu = 2^n nabla_i (2^{n(j-1)} nabla^{mu - e_i} f^n)``; summing along ``e_i`` and passing
+to the limit (level ``j - 1`` converges uniformly to ``H = d^{mu - e_i} F``, level ``j`` to the continuous
+``G_mu``), ``H(x + s e_i) - H(x) = int_0^s G_mu(x + sigma e_i) d sigma``: ``d_i H = G_mu``. So the ``j``-th
+derivatives of ``F`` exist, are continuous and are the limits of the ``j``-th divided differences: ``C^j``.
+The norm bounds ``2^j S_{B_{j+1}}`` on all vector sequences, while ``E^n`` are ``(j+1)``-th differences, a
+constrained subset (``nabla_2 E_{(j+1, 0)} = nabla_1 E_{(j, 1)}``): ``eta < 1`` is sufficient, not necessary, and a
+norm ``>= 1`` stays *inconclusive*.
 
 Examples
 --------
@@ -492,10 +520,10 @@ def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms:
     """``C^l`` by norms, ``M = 2I``: ``C^0`` by :func:`convergence_by_norms`, then for ``j = 1, ..., l`` in turn
     ``||(2^j S_{B_{j+1}})^L||_inf < 1`` for some ``L``, ``B_{j+1}`` the difference scheme of order ``j + 1``.
 
-    Theorem used (Warren–Weimer 2002, Theorem 3.11, dilation ``2I``): if the mask has the zeros of order
-    ``j + 1`` (sum rules of order ``j + 1``), its limits are ``C^{j-1}``, and the scheme ``2^j S_{B_{j+1}}`` of the
-    differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n`` (``|mu| = j``) has a norm ``< 1``,
-    then the limits are ``C^j``. Each level rests on the one below, so the levels are certified in order and the
+    Theorem used (Warren–Weimer 2002, Theorem 3.11, dilation ``2I``; proved in the module docstring): if the mask
+    has the zeros of order ``j + 1`` (sum rules of order ``j + 1``), its limits are ``C^{j-1}``, and the scheme
+    ``2^j S_{B_{j+1}}`` of the differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``
+    (``|mu| = j``) has a norm ``< 1``, then the limits are ``C^j``. Each level rests on the one below, so the levels are certified in order and the
     search stops at the first one not shown.
 
     ``value`` is the largest ``j <= l`` certified (``-1``: not even ``C^0``); status *certified* when it is ``l``,
