@@ -163,4 +163,4 @@ def test_too_few_factors_for_m_above_two_is_not_cl_on_the_whole_interval(capsys)
                  "--within=-1,1"]) == 0
     out = capsys.readouterr().out
     assert "C^3 needs 4 (q_3^4 | b): not C^3 on the whole interval except at t = 0" in out
-    assert "not C^3 (certified counterexamples): t = [-1, 0), (0, 1]" in out
+    assert "not C^3 (certified: counterexamples and proven stretches): t = [-1, 0), (0, 1]" in out
