@@ -14,7 +14,7 @@ from __future__ import annotations
 from fractions import Fraction
 
 from .common import (WORK_HELP, _add_scheme_args, _emit, _int_arg, _parse_params, _parse_within, check_figure,
-                     check_writable, require_values, scheme_arity, scheme_from_args, work_arg)
+                     require_values, scheme_arity, scheme_from_args, work_arg)
 from ..result import AnalysisError
 
 

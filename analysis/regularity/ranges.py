@@ -56,7 +56,7 @@ from ..stationary.ballnorm import mask_terms, norm_below_one_on_box
 from ..stationary.difference import difference_symbol
 from ..stationary.normset import _parameter, norm_solution_set
 from ..stationary.transition import transition_matrices
-from .holder import holder_exponent, smoothness, word_product
+from .holder import holder_exponent, smoothness
 from ..algebra.reader import as_expr
 from .. import progress
 
@@ -349,8 +349,10 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
     :func:`_crossing_polynomial`). The real roots of every candidate ``f`` inside ``(lo, hi)`` (exact isolation) cut
     the interval into pieces on which no candidate changes sign; a piece is covered when some ``f`` is negative at a
     rational point inside it (then ``f <= 0`` on the closed piece), and the stretch is proven when every piece is.
-    Candidates: the products found at the grid points of the stretch and every product of length at most 4.
+    Candidates, added one at a time until every piece is covered: the products found at the grid points of the
+    stretch, then every product of length at most 4.
     """
+    import functools
     from itertools import product as all_words
 
     from ..algebra.algebraic import rational_between
@@ -371,8 +373,9 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
             if min(w[i:] + w[:i] for i in range(length)) == w and w not in cands:
                 cands.append(w)
     polys = []          # (f, label) with f <= 0  =>  not C^j
-    cuts = [L, H]
-    for word in cands:
+    roots = [L, H]
+    covered = None
+    for word in cands:  # the products of the grid points first: most stretches need nothing else
         theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
         for sgn in (1, -1):
             num = _crossing_polynomial(a, K, p, tuple(word), sgn * theta)
@@ -384,22 +387,27 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
             if f.is_zero:
                 return label + " identically"
             if f.degree() >= 1:
-                cuts += [r for r in RealAlgebraic.roots_of(f) if L.compare(r) < 0 < H.compare(r)]
+                roots += [r for r in RealAlgebraic.roots_of(f) if L.compare(r) < 0 < H.compare(r)]
             polys.append((f, label))
-    import functools
-
-    cuts = sorted(cuts, key=functools.cmp_to_key(lambda u, v: u.compare(v)))
-    cuts = [c for k, c in enumerate(cuts) if k == 0 or cuts[k - 1].compare(c) != 0]
-    used = []
-    for left, right in zip(cuts[:-1], cuts[1:]):
-        q = rational_between(left, right)
-        hit = next((label for f, label in polys if f.eval(q) < 0), None)
-        if hit is None:
-            return None
-        if hit not in used:
-            used.append(hit)
+        cuts = sorted(roots, key=functools.cmp_to_key(lambda u, v: u.compare(v)))
+        cuts = [c for k, c in enumerate(cuts) if k == 0 or cuts[k - 1].compare(c) != 0]
+        used = []
+        for left, right in zip(cuts[:-1], cuts[1:]):
+            q = rational_between(left, right)
+            hit = next((label for f, label in polys if f.eval(q) < 0), None)
+            if hit is None:
+                break
+            if hit not in used:
+                used.append(hit)
+        else:
+            covered = (used, len(cuts) - 1)
+            break
+    if covered is None:
+        return None
+    used, pieces = covered
     return ("%s on the whole stretch (exact: %d piece(s) cut at the real roots of the determinants, on each of "
-            "which one of them is negative)" % ("; ".join(used), len(cuts) - 1))
+            "which one of them is negative)" % ("; ".join(used), pieces))
+
 
 def _run_interior(a, p, j, run, L_max, budget, strip_budget: int = 30_000) -> bool:
     """Cover one run by the exact parametric norm tests (and the strips they leave next to ends of
