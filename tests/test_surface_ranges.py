@@ -14,7 +14,7 @@ from analysis.bivariate.mask_file import mask_from_data, read_mask_file
 from analysis.bivariate.ranges import ck_set, parametric_family
 from analysis.bivariate.transition import restricted_transition
 from analysis.cli.main import main
-from analysis.result import CERTIFIED, AnalysisError
+from analysis.result import CERTIFIED, INCONCLUSIVE, AnalysisError
 
 #: a perturbed tensor hat function: T_0(t) has the eigenvalue 1 at t = 3/4 exactly
 HAT = "(1+z1)**2*(1+z2)**2/(4*z1*z2) + t*(1-z1**2)*(1-z2**2)/(z1*z2)"
@@ -54,8 +54,12 @@ def test_hat_family_c0_set_reaches_its_exact_end(hat):
     t = sp.Symbol("t")
     assert es["closed"] and es["lambda"] == t + sp.Rational(1, 4) and es["leading_dimension"] == 7
     assert es["polytope_bound"] == 1 and es["quotient_upper"] < 1 and es["letters"] == [0, 1, 2, 3]
-    assert r.status == CERTIFIED and r.value["gaps"] == []
+    assert r.value["gaps"] == []
     assert sp.Rational(3, 4) in r.value["not_Cl"] and 1 in r.value["not_Cl"]
+    # between the exact end 3/4 and the counterexample 1 every letter has the eigenvalue t + 1/4 twice: the sign of
+    # det(T_w(t) - I) does not see it, so (3/4, 1) is sampled, not proven, and the C^0 set is not certified there
+    assert r.witness["between_counterexamples"] == [(sp.Rational(3, 4), 1)] and r.witness["not_Cl_proven"] == []
+    assert r.status == INCONCLUSIVE
     (I,) = r.value["certified"]
     assert (I.start, I.end, I.left_open, I.right_open) == (0, sp.Rational(3, 4), False, True)
     assert all(x["certified_Cl"] for x in r.witness["boxes"] if x["to"] <= sp.Rational(5, 8))
@@ -139,3 +143,24 @@ def test_cli_c_set_of_a_closed_run(capsys):
     assert doc["status"] == "certified" and doc["gaps"] == [] and doc["not_Cl"] == []
     assert doc["certified"] == [{"from": "0", "to": "1/2", "from_open": False, "to_open": False}]
     assert [s["Cl"] for s in doc["samples"]] == [True, True]
+
+
+def test_the_stretch_between_an_exact_end_and_a_counterexample_is_proven_not_c0():
+    """A perturbed tensor hat family whose eigenvalue t + 1/4 of T_0 is simple: [3/4, 1] is proven not C^0 (the
+    sign of det(T_0(t) - I) between its real roots) and the C^0 set is certified on both sides; the same proof
+    refuses an interval that contains C^0 points."""
+    from analysis.bivariate.ranges import _prove_not_cl, parametric_family
+    from analysis.jsr._work import Work
+
+    g = BivariateMask.from_symbol("(1+z1)**2*(1+z2)**2/(4*z1*z2) + t*(1-z1**2)*(1-z2**2)/z1")
+    r = ck_set(g, 0, within=(0, 1), grid=2, budget=200_000, point_budget=5000, box_budget=5000, approach=1,
+               strip_budget=0, end_budget=0)
+    (st,) = r.witness["not_Cl_proven"]
+    assert (st["from"], st["to"]) == (sp.Rational(3, 4), 1) and "T_0" in st["how"]
+    assert r.witness["between_counterexamples"] == []
+    # (the strip next to 3/4 on the C^0 side is left open here: no end-strip budget)
+    assert r.status == INCONCLUSIVE and r.value["gaps"]
+    F = parametric_family(g, 1)
+    t = g.params[0]
+    assert _prove_not_cl(F, g, t, 0, 1, sp.Rational(1, 2), 1, [(0,)], 5000, Work(100_000)) is None
+    assert _prove_not_cl(F, g, t, 0, 1, sp.Rational(7, 8), 1, [(0,)], 5000, Work(100_000)) is not None

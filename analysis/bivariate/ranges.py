@@ -65,7 +65,7 @@ from typing import Any, NamedTuple
 import sympy as sp
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from ..algebra.algebraic import RealAlgebraic
+from ..algebra.algebraic import RealAlgebraic, rational_between
 from ..algebra.reader import as_expr
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
@@ -270,6 +270,67 @@ def _crossings(F, word, theta, lo, hi, work: Work):
     return out
 
 
+def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Work) -> str | None:
+    """A proof that the family is not C^l at any ``t`` of the closed interval ``[lo, hi]`` (exact or algebraic
+    ends), or ``None`` -- the argument of :func:`analysis.regularity.ranges._prove_not_cj`: with ``n = F.dim``,
+    ``(-1)^n det(Pi_w(t) - theta^L I) <= 0`` forces a real eigenvalue ``>= theta^L`` of ``Pi_w(t)`` and
+    ``det(Pi_w(t) + theta^L I) <= 0`` one ``<= -theta^L`` (intermediate values of the characteristic polynomial),
+    hence ``JSR >= theta``: not C^l. The interval is cut at the real roots of these determinants (exact
+    polynomials in ``t``, :meth:`ParametricFamily.crossing_polynomial`) and every piece must have one of them
+    negative at a rational point inside. Candidates, one word at a time: ``words``, then the single digits. A
+    special value of the family in ``[lo, hi]`` (where the generic support is too large) is decided by its own
+    certified point verdict."""
+    import functools
+
+    L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
+    if L.compare(H) >= 0:
+        return None
+    specials = []
+    for q in F.special:
+        Q = RealAlgebraic.rational(q)
+        if L.compare(Q) <= 0 <= H.compare(Q):
+            v = _verdict(general, p, q, l, point_budget)
+            work.charge(v["work"])
+            if v["C^l"] is not False:
+                return None
+            specials.append(q)
+    cands = [tuple(w) for w in words if w]
+    cands += [(e,) for e in range(F.n) if (e,) not in cands]
+    polys, roots = [], [L, H]
+    for word in cands:
+        if work.exhausted:
+            return None
+        s = _q(theta) ** len(word)
+        for sgn in (1, -1):
+            poly = F.crossing_polynomial(word, s * sgn)
+            work.charge(len(word) * F.dim * (F.degree + 1) // 4 + 1)
+            P = sp.Poly([sp.Rational(int(x.p), int(x.q)) for x in reversed(poly.coeffs())] or [0], p)
+            f = P if sgn < 0 else P * (-1) ** F.dim
+            label = "a real eigenvalue %s %s of T_%s(%s)" % (">=" if sgn > 0 else "<=", sp.sstr(sgn * sp.Rational(int(s.p), int(s.q))),
+                                                             "".join(map(str, word)), p.name)
+            if f.is_zero:
+                return label + " identically"
+            if f.degree() >= 1:
+                roots += [r for r in RealAlgebraic.roots_of(f) if L.compare(r) < 0 < H.compare(r)]
+            polys.append((f, label))
+        cuts = sorted(roots, key=functools.cmp_to_key(lambda u, v: u.compare(v)))
+        cuts = [c for k, c in enumerate(cuts) if k == 0 or cuts[k - 1].compare(c) != 0]
+        used = []
+        for left, right in zip(cuts[:-1], cuts[1:]):
+            q = rational_between(left, right)
+            hit = next((label for f, label in polys if f.eval(q) < 0), None)
+            if hit is None:
+                break
+            if hit not in used:
+                used.append(hit)
+        else:
+            return ("%s on the whole of it (exact: %d piece(s) cut at the real roots of the determinants, on each "
+                    "of which one of them is negative)%s" % ("; ".join(used), len(cuts) - 1,
+                    "; special value(s) %s by their point verdicts" % ", ".join(map(sp.sstr, specials))
+                    if specials else ""))
+    return None
+
+
 def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: int = 8,
            budget: int = 400_000, point_budget: int = 20_000, box_budget: int = 20_000, approach: int = 6,
            tol=sp.Rational(1, 10 ** 6), strip_budget: int = 30_000, end_budget: int = END_BUDGET) -> Result:
@@ -342,8 +403,21 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
             gaps.append((s0["t"], s1["t"]))
         else:
             good, bad = (s0, s1) if s0["C^l"] else (s1, s0)
-            boundaries.append(_boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol,
-                                        try_box, certified, not_cl, gaps, strip_budget, end_budget))
+            rec = _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, tol,
+                            try_box, certified, not_cl, gaps, strip_budget, end_budget)
+            boundaries.append(rec)
+            if "exact" in rec and RealAlgebraic.from_expr(rec["exact"]).compare(RealAlgebraic.rational(bad["t"])):
+                # from the exact end to the counterexample of the grid: sampled, not examined
+                outer.append((rec["exact"], bad["t"]) if bad["t"] > good["t"] else (bad["t"], rec["exact"]))
+    # between counterexamples: proven not C^l where one product has a real eigenvalue of modulus >= theta^L
+    proven_not = []
+    for a_, b_ in list(outer):
+        words = [s.get("product") for s in samples if s["C^l"] is False and a_ <= s["t"] <= b_]
+        words += [tuple(rec["word"]) for rec in boundaries if "word" in rec and rec["exact"] in (a_, b_)]
+        how = _prove_not_cl(F, general, p, l, theta, a_, b_, words, point_budget, work)
+        if how:
+            outer.remove((a_, b_))
+            proven_not.append({"from": a_, "to": b_, "how": how})
     for s in samples:
         if s["C^l"]:
             certified.append((s["t"], s["t"]))
@@ -365,13 +439,15 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
                              "rho(M)^-l there)")
     if outer:
         prov["message"] = ((prov["message"] + "; " if "message" in prov else "")
-                           + "not C^%d is certified at the grid points only between the counterexamples " % l
+                           + "not C^%d is certified at the counterexamples only (grid points and exact ends), not between "
+                             "them: " % l
                            + ", ".join(f"({sp.sstr(a)}, {sp.sstr(b)})" for a, b in outer)
                            + " (sampled, not examined)")
     return Result(value={"certified": _intervals(cert_set), "not_Cl": [x.expr for x in not_pts], "gaps": gap_list},
                   status=status,
                   witness={"parameter": p.name, "l": l, "theta": theta, "samples": samples, "boundaries": boundaries,
-                           "boxes": boxes, "undecided": undecided, "between_counterexamples": outer, "special": F.special, "dimension": F.dim,
+                           "boxes": boxes, "undecided": undecided, "between_counterexamples": outer,
+                           "not_Cl_proven": proven_not, "special": F.special, "dimension": F.dim,
                            "omega": len(F.omega)},
                   provenance=prov)
 
@@ -438,7 +514,7 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
             if v["C^l"] is not False:
                 continue
         end = r
-        rec.update({"exact": r.expr, "exact_float": float(r), "certified_not_Cl_at": r.expr,
+        rec.update({"exact": r.expr, "exact_float": float(r), "certified_not_Cl_at": r.expr, "word": list(w),
                     "how": f"eigenvalue {'-' if sgn < 0 else ''}{sp.sstr(theta ** len(w))} of "
                            f"T_{''.join(map(str, w))}({p.name})"})
         break

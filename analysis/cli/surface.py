@@ -328,10 +328,14 @@ def _range(args) -> None:
     if v["gaps"]:
         lines.append("undecided (inconclusive): " + ", ".join(
             f"({fmt(a)}, {fmt(b)}) width {float(b - a):.3g}" for a, b in v["gaps"]))
+    for st in r.witness.get("not_Cl_proven", []):
+        lines.append(f"not C^{l} on [{fmt(st['from'])}, {fmt(st['to'])}] (certified: {st['how']})")
     if r.witness["between_counterexamples"]:
         lines.append("between counterexamples (sampled, not examined): " + ", ".join(
             f"({fmt(a)}, {fmt(b)})" for a, b in r.witness["between_counterexamples"]))
     data = {"scheme": label, "parameter": p, "l": l, "within": [fmt(w) for w in within], "status": r.status,
+            "not_Cl_proven": [{"from": fmt(st["from"]), "to": fmt(st["to"]), "how": st["how"]}
+                              for st in r.witness.get("not_Cl_proven", [])],
             "certified": [{"from": fmt(I.start), "to": fmt(I.end), "from_open": bool(I.left_open),
                            "to_open": bool(I.right_open)} for I in v["certified"]],
             "not_Cl": [fmt(x) for x in v["not_Cl"]], "gaps": [[fmt(a), fmt(b)] for a, b in v["gaps"]],
