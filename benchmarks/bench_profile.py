@@ -14,7 +14,7 @@ import schemes
 from analysis.algebra.factorization import factor_out, smoothing_factor
 from analysis.claims.model import evaluate_paper, get_paper
 from analysis.regularity.holder import word_product
-from analysis.regularity.ranges import _exact_boundaries
+from analysis.regularity.crossings import _exact_boundaries
 from analysis.stationary.transition import transition_matrices
 
 

@@ -22,7 +22,7 @@ from analysis.claims.kinds.base import SchemeSpec
 from analysis.claims.kinds.profile import SmoothnessProfile
 from analysis.claims.paperfile import parse_paper
 from analysis.regularity.holder import word_product
-from analysis.regularity.ranges import _exact_boundaries
+from analysis.regularity.crossings import _exact_boundaries
 from analysis.result import AnalysisError
 from analysis.stationary.transition import transition_matrices
 

@@ -107,7 +107,7 @@ def test_not_ck_between_counterexamples_is_proven_and_never_over_a_ck_point():
     """The complement of the C^1 set of the 4-point scheme in [0, 1/4] is proven not C^1 on the whole
     stretch [w*, 1/4] (an exact sign of a determinant), and the same proof refuses a stretch that contains
     C^1 points (1/8 is C^1: it lies in (0, w*))."""
-    from analysis.regularity.ranges import _prove_not_cj
+    from analysis.regularity.crossings import _prove_not_cj
 
     a = schemes.get("four-point").symbol
     r = ck_parameter_set(a, 1, within=(0, Q(1, 4)), grid=8)

@@ -272,7 +272,7 @@ def _crossings(F, word, theta, lo, hi, work: Work):
 
 def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Work) -> str | None:
     """A proof that the family is not C^l at any ``t`` of the closed interval ``[lo, hi]`` (exact or algebraic
-    ends), or ``None`` -- the argument of :func:`analysis.regularity.ranges._prove_not_cj`: with ``n = F.dim``,
+    ends), or ``None`` -- the argument of :func:`analysis.regularity.crossings._prove_not_cj`: with ``n = F.dim``,
     ``(-1)^n det(Pi_w(t) - theta^L I) <= 0`` forces a real eigenvalue ``>= theta^L`` of ``Pi_w(t)`` and
     ``det(Pi_w(t) + theta^L I) <= 0`` one ``<= -theta^L`` (intermediate values of the characteristic polynomial),
     hence ``JSR >= theta``: not C^l. The interval is cut at the real roots of these determinants (exact

@@ -296,8 +296,7 @@ def _stability_part(args, a, budget):
             parts.append(f"the blocking cycle {_cycle_text(n)} (Phi_{2 * n} | a)")
         lines = [f"basic limit function: shifts unstable [{st.status}]: a(z) has " + " and ".join(parts)
                  + f"; phi_a = q(tau) phi_b / q(1), q(z) = {w['q'].pretty()}, b(z) = {w['reduced_mask'].pretty()} "
-                 "(stable)",
-                 "  alpha above is the Hölder exponent of the scheme (all its limits); "
+                 "(stable)", "  alpha above is the Hölder exponent of the scheme (all its limits); "
                  "the Hölder exponent of phi_a is >= alpha"]
     else:
         lines = [f"basic limit function: stability of the shifts undecided [{st.status}] — {w.get('reason')}"]
@@ -621,16 +620,13 @@ def cmd_range(args) -> None:
             return f"in [{fmt_bound(lo, 'lower', 12, 'g')}, {fmt_bound(hi, 'upper', 12, 'g')}]"
         lines.append(f"  C^{j} from {end(run['left'], 'left')} to {end(run['right'], 'right')}")
     for b in r.witness["boundaries"]:
-        lo, hi = b["bracket"]
         lines.append(f"  boundary: certified C^{j} at {sp.sstr(b.get('certified_C^j_at'))}, certified not C^{j} at "
                      f"{sp.sstr(b.get('certified_not_C^j_at'))} ({b.get('how', b['status'])})")
     if r.witness["undecided"]:
         lines.append("  undecided grid points: " + ", ".join(sp.sstr(x) for x in r.witness["undecided"]))
-    for st in r.witness.get("not_Cj", []):
-        if st["proven"] and st["from"] != st["to"]:
-            def pt(x):
-                return sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.12g}"
-            lines.append(f"  not C^{j} on [{pt(st['from'])}, {pt(st['to'])}] (certified: {st['how']})")
+    pt = lambda x: sp.sstr(x) if x.is_Rational else f"{sp.sstr(x)} ~ {float(x):.12g}"  # noqa: E731
+    lines += [f"  not C^{j} on [{pt(s['from'])}, {pt(s['to'])}] (certified: {s['how']})"
+              for s in r.witness.get("not_Cj", []) if s["proven"] and s["from"] != s["to"]]
     for run in r.value:
         it = run.get("interior")
         if it:
