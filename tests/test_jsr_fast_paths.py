@@ -38,6 +38,20 @@ def test_small_lp_is_linprog_bit_for_bit(case):
         assert np.array_equal(ours[1], ref[1]) and np.array_equal(ours[2], ref[2])
 
 
+def test_small_lp_reuses_its_highs_object_without_carrying_state():
+    """:func:`small_lp` solves every problem on one HiGHS object per thread: a sequence of problems of
+    different sizes, infeasible ones among them, solved twice in different orders, gives each time exactly
+    what a fresh object (``linprog``) gives."""
+    probs = _problems()
+    refs = [_linprog_lp(V, x) for V, x in probs]
+    for order in (range(len(probs)), reversed(range(len(probs)))):
+        for i in order:
+            got, ref = small_lp(*probs[i]), refs[i]
+            assert (got is None) == (ref is None)
+            if ref is not None:
+                assert got[0] == ref[0] and np.array_equal(got[1], ref[1]) and np.array_equal(got[2], ref[2])
+
+
 def test_small_lp_values():
     """The optimum is the Minkowski norm: a vertex has norm 1, the origin 0, twice a vertex 2."""
     V = np.array([[1.0, 0.0, 1.0], [0.0, 1.0, 1.0]])
