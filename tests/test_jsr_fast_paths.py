@@ -38,6 +38,37 @@ def test_small_lp_is_linprog_bit_for_bit(case):
         assert np.array_equal(ours[1], ref[1]) and np.array_equal(ours[2], ref[2])
 
 
+def test_small_lp_reuses_its_highs_object_without_carrying_state():
+    """:func:`small_lp` solves every problem on one HiGHS object per thread: a sequence of problems of
+    different sizes, infeasible ones among them, solved twice in different orders, gives each time exactly
+    what a fresh object (``linprog``) gives."""
+    probs = _problems()
+    refs = [_linprog_lp(V, x) for V, x in probs]
+    for order in (range(len(probs)), reversed(range(len(probs)))):
+        for i in order:
+            got, ref = small_lp(*probs[i]), refs[i]
+            assert (got is None) == (ref is None)
+            if ref is not None:
+                assert got[0] == ref[0] and np.array_equal(got[1], ref[1]) and np.array_equal(got[2], ref[2])
+
+
+def test_lstsq_solution_is_numpy_lstsq_bit_for_bit():
+    """The polish and strip least-squares solves call numpy's lstsq ufunc directly: the same solutions, for
+    full-rank, rank-deficient, nearly rank-deficient (decided by rcond), square, wide and tall systems."""
+    from analysis.jsr._lsq import lstsq_solution
+
+    rng = np.random.default_rng(5)
+    for t in range(60):
+        m, n = int(rng.integers(1, 9)), int(rng.integers(1, 12))
+        A = rng.standard_normal((m, n)) * 10.0 ** int(rng.integers(-6, 7))
+        if t % 4 == 0 and n > 1:
+            A[:, -1] = A[:, 0] * 3.0                                 # rank deficient
+        if t % 4 == 1 and n > 1:                                     # nearly: decided by rcond
+            A[:, -1] = A[:, 0] * 3.0 + 1e-11 * np.abs(A).max() * rng.standard_normal(m)
+        b = rng.standard_normal(m)
+        assert np.array_equal(lstsq_solution(A, b), np.linalg.lstsq(A, b, rcond=None)[0])
+
+
 def test_small_lp_values():
     """The optimum is the Minkowski norm: a vertex has norm 1, the origin 0, twice a vertex 2."""
     V = np.array([[1.0, 0.0, 1.0], [0.0, 1.0, 1.0]])

@@ -42,7 +42,8 @@ def test_six_point_family_smoothest_member():
     assert dd6["alpha"][0] <= 2.8301 and dd6["alpha"][1] >= 2.8300
     assert r.lower > 3.2
     # the box bound dominates certified exponents computed by the exact JSR route near the maximiser
-    for t in (R(13, 1000), R(27, 2000), R(14, 1000), R(29, 2000)):
+    # (t* ~ 0.013824; at 69/5000 alpha is within 1e-5 of alpha(t*): the tightest of the comparisons)
+    for t in (R(13, 1000), R(27, 2000), R(69, 5000), R(14, 1000)):
         h = holder_exponent(a.subs({"t1": t}), budget=10000)
         assert h.lower <= r.upper and h.upper <= r.witness["alpha_at"].upper + R(1, 1000)
 

@@ -14,7 +14,8 @@ Two solvers, both HiGHS (Huangfu–Hall dual simplex) and both without a modelli
   model each time. It builds the very model that ``scipy.optimize.linprog(method="highs")``
   builds and passes it, with the same options, to the same HiGHS library (the copy bundled with
   SciPy), skipping linprog's input validation and option checking, which cost three times the
-  solve on these 16 x 100 problems. Same model, same options, same library: the same solution,
+  solve on these 16 x 100 problems; one HiGHS object per thread takes every model (``passModel``
+  clears the previous basis and solution, so nothing carries over; a test checks it). Same model, same options, same library: the same solution,
   bit for bit, as ``linprog`` (a test compares them), so polytopes, certificates and the work
   counted do not change. Without the bundled module (another SciPy layout) it calls ``linprog``.
 
@@ -176,6 +177,17 @@ def _bundled_core():
 
 
 _CORE = None
+#: one HiGHS object per thread for :func:`small_lp`, reused: ``passModel`` replaces the model and clears the
+#: solver state (basis, solution, factorization), so a solve gives what a fresh object gives, bit for bit (a
+#: test compares them); constructing the object cost a third of the solve on these small problems
+_SMALL = threading.local()
+
+
+def _small_highs(core):
+    h = getattr(_SMALL, "highs", None)
+    if h is None:
+        h = _SMALL.highs = core._Highs()
+    return h
 
 
 def small_lp(Vm: np.ndarray, x: np.ndarray):
@@ -208,7 +220,7 @@ def small_lp(Vm: np.ndarray, x: np.ndarray):
     lp.a_matrix_.start_ = start
     lp.a_matrix_.index_ = rows.astype(np.int32)
     lp.a_matrix_.value_ = At[nz]
-    h = h_._Highs()
+    h = _small_highs(h_)
     h.passOptions(opts)
     h.passModel(lp)
     h.run()

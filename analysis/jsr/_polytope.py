@@ -54,6 +54,7 @@ from flint import arb, arb_mat, fmpq_mat, fmpz_mat
 
 from ._exact import Family, arb_precision, arb_to_fraction_bounds, fraction_to_arb
 from ._lp import WarmLP, small_lp
+from ._lsq import lstsq_solution
 from ._pivots import qr_pivots
 from ._work import Work
 
@@ -242,7 +243,7 @@ class _Member:
         lam[supp] = lam0
         if len(supp) == 0:
             return 0.0, np.array([0]), np.array([0.0])
-        sol, *_ = np.linalg.lstsq(Vm[:, supp], x, rcond=None)
+        sol = lstsq_solution(Vm[:, supp], x)
         if np.linalg.norm(Vm[:, supp] @ sol - x, 1) <= np.linalg.norm(Vm[:, supp] @ lam[supp] - x, 1):
             lam_s = sol
         else:

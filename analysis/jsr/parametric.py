@@ -25,6 +25,7 @@ from flint import arb, arb_mat, ctx, fmpq
 
 from ..algebra.algebraic import RealAlgebraic
 from ..algebra.reader import as_expr
+from ._lsq import lstsq_solution
 from ._pivots import qr_pivots
 from ._polytope import build_polytope
 from ._work import Work
@@ -382,7 +383,7 @@ class ParametricStrip:
                     supp, cf = lp
                 else:
                     supp = self._supp[(i, k)]
-                    cf = np.linalg.lstsq(Vm[:, supp], xf, rcond=None)[0]
+                    cf = lstsq_solution(Vm[:, supp], xf)
                 bound = self._image_bound(walk(self.roots[k], self.paths[k] + (i,)), verts, Gi, H, supp, cf)
                 if bound < 1:
                     self._supp[(i, k)] = supp
@@ -400,8 +401,8 @@ class ParametricStrip:
         centred form (``res`` is a combination of the basis vertices, so ``||res||_P <= ||G^-1 res||_1``)."""
         d = Gi.nrows()
         # the coefficients rounded to multiples of 2^-50 (np.round rounds half to even, as round() does;
-        # the scaling by 2^50 is exact)
-        cq = [arb(fmpq(int(x), 2 ** 50)) for x in np.round(np.asarray(cf, dtype=float) * 2.0 ** 50)]
+        # the scaling by 2^50 and back is exact, so each ball is the exact dyadic int(x) / 2^50)
+        cq = [arb(x) for x in (np.round(np.asarray(cf, dtype=float) * 2.0 ** 50) * 2.0 ** -50).tolist()]
         rm, _, dr = image
         for j, cj in zip(supp, cq):
             rm, dr = rm - verts[j][0] * cj, dr - verts[j][2] * cj
@@ -422,7 +423,7 @@ def _l1_coefficients(Vm: np.ndarray, x: np.ndarray):
     supp = np.flatnonzero(np.abs(c) > 1e-12)
     if len(supp) == 0:
         return supp, c[supp]
-    cs = np.linalg.lstsq(Vm[:, supp], x, rcond=None)[0]
+    cs = lstsq_solution(Vm[:, supp], x)
     return supp, cs
 
 
