@@ -297,6 +297,10 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512, curvature: bool =
     lists and dicts of the result."""
     from flint import ctx
 
+    try:
+        hash(rules)
+    except TypeError:                            # rules holding a mutable part: computed, not remembered
+        return _analyse.__wrapped__(rules, n, max_prec, curvature, ctx.prec)
     a = _analyse(rules, n, max_prec, curvature, ctx.prec)
     return replace(a, eigenvalues=list(a.eigenvalues), checks=dict(a.checks), notes=list(a.notes))
 
