@@ -276,7 +276,7 @@ def test_the_ceiling_of_a_partial_factorisation_is_only_a_lower_bound():
     m = ApproximateMask(["0.125", "0.5", "0.75", "0.5", "0.125"])
     assert m.sum_rules == 4
     m.sum_rules = 1
-    r = holder_exponent(m, budget=5000)
+    r = holder_exponent(m, budget=1000)      # the polytope does not close (budget 5000 neither): the same bounds
     assert r.upper is None and r.value is None and float(r.lower) <= 1 and r.witness["ceiling_reached"]
     assert "lower" in r.provenance["message"] or ">=" in r.provenance["message"]
 

@@ -328,7 +328,18 @@ def test_catmull_clark_exact_lambda_is_certified_where_the_double_misses_the_bal
     assert sp.simplify(a.lam_exact - value) == 0
 
 
-def test_a_jordan_block_at_lambda_squared_is_not_bounded_curvature(monkeypatch):
+@pytest.fixture
+def uncached_analyse():
+    """``analyse`` recomputed while a test replaces its internals (its per-process cache emptied before, and
+    after, so that no later test sees a result of the replaced code)."""
+    from analysis.vertex.spectrum import _analyse
+
+    _analyse.cache_clear()
+    yield
+    _analyse.cache_clear()
+
+
+def test_a_jordan_block_at_lambda_squared_is_not_bounded_curvature(monkeypatch, uncached_analyse):
     """Catmull–Clark n = 4: lambda^2 = 1/4 is double in block 2 and semisimple (bounded curvature). Block 2
     replaced by its companion matrix (same characteristic polynomial, so the same spectrum, but one Jordan
     block per eigenvalue) must not be called bounded."""
@@ -354,12 +365,13 @@ def test_a_jordan_block_at_lambda_squared_is_not_bounded_curvature(monkeypatch):
         return C
 
     monkeypatch.setattr(spec, "fourier_block", companion)
+    spec._analyse.cache_clear()
     b = analyse(rules, 4)
     assert b.mu_vs_lam2 == "=" and (b.curvature, b.curvature_status) == ("inconclusive", "inconclusive")
     assert "not semisimple in block 2" in b.curvature_reason
 
 
-def test_curvature_needs_an_eigenfunction_nonzero_on_the_ring(monkeypatch):
+def test_curvature_needs_an_eigenfunction_nonzero_on_the_ring(monkeypatch, uncached_analyse):
     """Loop n = 3: mu = 1/8 > lambda^2 = 1/16 (a 2-ring eigenvalue); its eigenfunctions in blocks 0 and 1
     are certified nonzero on the ring. If they vanished there, mu would not decide the curvature."""
     from flint import acb
@@ -379,6 +391,7 @@ def test_curvature_needs_an_eigenfunction_nonzero_on_the_ring(monkeypatch):
     zero = [acb(0)] * len(eigenvector(rules, 3, a.mu.ball, a.mu.k))
     assert all(x.contains(0) for x in segment_ordinates(rules, 3, zero, a.mu.ball, a.mu.k))
     monkeypatch.setattr(spec, "_arb_eigenvectors", lambda r, n, e: [[acb(0)] * len(zero)])
+    spec._analyse.cache_clear()
     b = analyse(rules, 3)
     assert b.mu_vs_lam2 == ">" and b.curvature == "inconclusive"
     assert "certified nonzero" in b.curvature_reason

@@ -337,21 +337,37 @@ def papers(packages: str | Sequence[str] = PAPER_PACKAGES) -> dict[str, Paper]:
     ``__init__.py`` defines ``PAPER``.
     """
     found: dict[str, Paper] = {}
+    for mod, paper in _paper_modules(packages):
+        if paper.id in found:
+            raise RuntimeError(f"two modules define paper {paper.id}")
+        found[paper.id] = paper
+    return dict(sorted(found.items()))
+
+
+def _paper_modules(packages: str | Sequence[str], prefer: str = ""):
+    """``(module, PAPER)`` for the modules of ``packages`` that define a paper, each package's modules
+    in name order, those whose name ends with ``prefer`` first (imported one at a time, as asked for:
+    a paper's folder is usually named after its id, so a command on one paper imports that paper only)."""
     for package in ([packages] if isinstance(packages, str) else packages):
         try:
             pkg = importlib.import_module(package)
         except ModuleNotFoundError:
             continue
-        for info in sorted(pkgutil.iter_modules(pkg.__path__), key=lambda m: m.name):
+        infos = sorted(pkgutil.iter_modules(pkg.__path__), key=lambda m: m.name)
+        if prefer:
+            infos.sort(key=lambda m: not m.name.endswith(prefer))
+        for info in infos:
             mod = importlib.import_module(f"{package}.{info.name}")
             paper = getattr(mod, "PAPER", None)
             if isinstance(paper, Paper):
-                if paper.id in found:
-                    raise RuntimeError(f"two modules define paper {paper.id}")
                 if not paper.origin:
                     object.__setattr__(paper, "origin", mod.__name__)
-                found[paper.id] = paper
-    return dict(sorted(found.items()))
+                yield mod, paper
+
+
+def _find_paper(key: str, packages: str | Sequence[str] = PAPER_PACKAGES) -> Paper | None:
+    """The paper with id ``key`` (exactly), loading no more paper modules than needed; None if none."""
+    return next((paper for _, paper in _paper_modules(packages, prefer=key) if paper.id == key), None)
 
 
 def golden_path(paper: Paper) -> Path | None:
@@ -370,12 +386,13 @@ def get_paper(pid: str, packages: str | Sequence[str] = PAPER_PACKAGES) -> Paper
     """The paper with id ``pid`` (``"004"``; ``"4"`` and ``"seed004"`` are accepted too)."""
     from ..result import AnalysisError
 
-    allp = papers(packages)
     key = str(pid).strip().lower().removeprefix("seed")
     if key.isdigit():
         key = key.zfill(3)
-    if key in allp:
-        return allp[key]
+    found = _find_paper(key, packages)
+    if found is not None:
+        return found
+    allp = papers(packages)
     raise AnalysisError(f"unknown paper {pid!r}; known: {', '.join(allp) or 'none'}")
 
 
@@ -451,9 +468,8 @@ def verdicts_json(results: Mapping[str, Sequence[Evaluated]], titles: Mapping[st
     timings or dates, so that regenerating an unchanged report leaves the file unchanged.
     """
     out: dict = {"schema": 1, "papers": {}}
-    allp = papers() if titles is None else {}
     for pid, evs in sorted(results.items()):
-        paper = allp.get(pid)
+        paper = _find_paper(pid) if titles is None else None
         claims = {}
         for ev in evs:
             claims[ev.claim.id] = {

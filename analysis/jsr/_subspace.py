@@ -133,25 +133,28 @@ def _to_mod_p(A: fmpq_mat) -> nmod_mat | None:
     return nmod_mat(A.nrows(), A.ncols(), [int(x) % _PRIME * inv % _PRIME for x in N.entries()], _PRIME)
 
 
-def _full_mod_p(mats_p: Sequence[nmod_mat], start: list[fmpq], n: int) -> bool:
-    """True when the spin of ``start`` reduced mod p spans ``F_p^n``: then the rational spin spans ``Q^n``
-    (the rank of the reductions of the vectors ``A_w v`` is at most their rank over ``Q``), and the exact
-    spin, which could only return the whole space, is skipped. Pure speed-up: False decides nothing."""
+def _dim_mod_p(mats_p: Sequence[nmod_mat], start: list[fmpq], n: int, stop: int) -> int:
+    """The dimension of the spin of ``start`` reduced mod p, computed until it reaches ``stop`` (then
+    ``stop`` or more is returned); 0 when ``start`` does not reduce. It is a lower bound of the dimension
+    of the rational spin (the rank of the reductions of the vectors ``A_w v`` is at most their rank over
+    ``Q``): when it reaches ``n`` the rational spin spans ``Q^n``, and when it reaches the dimension of a
+    subspace already found the rational spin cannot be smaller; either way the exact spin is skipped. Pure
+    speed-up: a smaller value decides nothing."""
     col = _to_mod_p(fmpq_mat(n, 1, start))
     if col is None:
-        return False
+        return 0
     S = col.transpose()                                  # rows span the current space
     dim = S.rank()
-    while dim < n:
+    while dim < stop:
         rows = [S] + [(A * S.transpose()).transpose() for A in mats_p]
         stacked = nmod_mat(sum(r.nrows() for r in rows), n,
                            [int(x) for r in rows for x in r.entries()], _PRIME)
         R, rank = stacked.rref()
         if rank == dim:
-            return False
+            return dim
         dim = rank
         S = nmod_mat(rank, n, [int(R[i, j]) for i in range(rank) for j in range(n)], _PRIME)
-    return True
+    return dim
 
 
 def _krylov_guided(mats: Sequence[fmpq_mat], mats_p: Sequence[nmod_mat], start: list[fmpq],
@@ -256,11 +259,13 @@ def _spin_candidates(mats: Sequence[fmpq_mat], trials: int = 3):
                 yield v
 
 
-def _spin(mats, mats_p, v, n) -> list[list[fmpq]] | None:
-    """The exact Krylov space of ``v``, or None when it is known (mod p) to be the whole space."""
+def _spin(mats, mats_p, v, n, below: int | None = None) -> list[list[fmpq]] | None:
+    """The exact Krylov space of ``v``, or None when it is known (mod p) to be the whole space or, with
+    ``below``, to have dimension ``>= below`` (it cannot improve on a subspace of that dimension)."""
     if mats_p is None:
         return _krylov(mats, v, n, n)
-    if _full_mod_p(mats_p, v, n):
+    stop = n if below is None else min(n, below)
+    if _dim_mod_p(mats_p, v, n, stop) >= stop:
         return None
     W = _krylov_guided(mats, mats_p, v, n)
     if W is None:
@@ -281,14 +286,17 @@ def invariant_subspace(mats: Sequence[fmpq_mat]) -> fmpq_mat | None:
     if any(A is None for A in mats_p):
         mats_p = None
     for v in _spin_candidates(mats):
-        W = _spin(mats, mats_p, v, n)
+        if best is not None and len(best) == 1:
+            break                                        # a line: nothing smaller is proper
+        W = _spin(mats, mats_p, v, n, None if best is None else len(best))
         if W is None:
             continue
         if 0 < len(W) < n and (best is None or len(W) < len(best)):
             best = W
     trans = [A.transpose() for A in mats]
     trans_p = None if mats_p is None else [A.transpose() for A in mats_p]
-    for v in _spin_candidates(trans):
+    # (after a line nothing is smaller: the transposed spins are not needed)
+    for v in _spin_candidates(trans) if best is None or len(best) > 1 else ():
         U = _spin(trans, trans_p, v, n)
         if U is None:
             continue

@@ -44,7 +44,7 @@ F. Johansson, Arb: efficient arbitrary-precision midpoint-radius interval arithm
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import lru_cache
 
 import sympy as sp
@@ -290,7 +290,25 @@ def _equal_exact(mu: Eigenvalue, lam_e: Eigenvalue, lam_exact: sp.Expr | None, n
 def analyse(rules: LocalRules, n: int, *, max_prec: int = 512, curvature: bool = True) -> VertexAnalysis:
     """The certified eigen-structure at valence n (see the module docstring), at the first precision of
     :data:`PRECISIONS` (up to ``max_prec`` bits) where everything is decided (``curvature=False``: the
-    eigen-conditions only, the curvature left undecided)."""
+    eigen-conditions only, the curvature left undecided).
+
+    Computed once per process for the same rules, valence, options and working precision (the claims, the
+    command line and the C^1 tests ask for the same valences again); each caller gets its own copy of the
+    lists and dicts of the result."""
+    from flint import ctx
+
+    try:
+        hash(rules)
+    except TypeError:                            # rules holding a mutable part: computed, not remembered
+        return _analyse.__wrapped__(rules, n, max_prec, curvature, ctx.prec)
+    a = _analyse(rules, n, max_prec, curvature, ctx.prec)
+    return replace(a, eigenvalues=list(a.eigenvalues), checks=dict(a.checks), notes=list(a.notes))
+
+
+@lru_cache(maxsize=128, typed=True)
+def _analyse(rules: LocalRules, n: int, max_prec: int, curvature: bool, working_prec: int) -> VertexAnalysis:
+    """:func:`analyse`, computed (``working_prec``: Arb's working precision of the caller, which the few
+    comparisons made outside the precision loop use)."""
     eig, res = None, None
     for prec in PRECISIONS:
         if prec > max_prec:
