@@ -65,7 +65,7 @@ from typing import Any, NamedTuple
 import sympy as sp
 from flint import fmpq, fmpq_mat, fmpq_poly
 
-from ..algebra.algebraic import RealAlgebraic, rational_between
+from ..algebra.algebraic import RealAlgebraic
 from ..algebra.reader import as_expr
 from ..jsr._work import Work
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
@@ -270,6 +270,16 @@ def _crossings(F, word, theta, lo, hi, work: Work):
     return out
 
 
+def single_parameter(general: BivariateMask, param=None) -> sp.Symbol:
+    """The one free parameter of a family (``param``, if given, must name it); an :class:`AnalysisError` otherwise."""
+    if len(general.params) != 1:
+        raise AnalysisError("a C^l set needs a mask with exactly one free parameter (fix the others with --param)")
+    p = general.params[0]
+    if param is not None and str(param) != p.name:
+        raise AnalysisError(f"unknown parameter {str(param)!r} (the family's parameter is {p.name})")
+    return p
+
+
 def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Work) -> str | None:
     """A proof that the family is not C^l at any ``t`` of the closed interval ``[lo, hi]`` (exact or algebraic
     ends), or ``None`` -- the argument of :func:`analysis.regularity.crossings._prove_not_cj`: with ``n = F.dim``,
@@ -280,7 +290,7 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
     negative at a rational point inside. Candidates, one word at a time: ``words``, then the single digits. A
     special value of the family in ``[lo, hi]`` (where the generic support is too large) is decided by its own
     certified point verdict."""
-    import functools
+    from ..regularity.crossings import sign_cover
 
     L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
     if L.compare(H) >= 0:
@@ -296,39 +306,26 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
             specials.append(q)
     cands = [tuple(w) for w in words if w]
     cands += [(e,) for e in range(F.n) if (e,) not in cands]
-    polys, roots = [], [L, H]
-    for word in cands:
-        if work.exhausted:
-            return None
-        s = _q(theta) ** len(word)
-        for sgn in (1, -1):
-            poly = F.crossing_polynomial(word, s * sgn)
-            work.charge(len(word) * F.dim * (F.degree + 1) // 4 + 1)
-            P = sp.Poly([sp.Rational(int(x.p), int(x.q)) for x in reversed(poly.coeffs())] or [0], p)
-            f = P if sgn < 0 else P * (-1) ** F.dim
-            label = "a real eigenvalue %s %s of T_%s(%s)" % (">=" if sgn > 0 else "<=", sp.sstr(sgn * sp.Rational(int(s.p), int(s.q))),
-                                                             "".join(map(str, word)), p.name)
-            if f.is_zero:
-                return label + " identically"
-            if f.degree() >= 1:
-                roots += [r for r in RealAlgebraic.roots_of(f) if L.compare(r) < 0 < H.compare(r)]
-            polys.append((f, label))
-        cuts = sorted(roots, key=functools.cmp_to_key(lambda u, v: u.compare(v)))
-        cuts = [c for k, c in enumerate(cuts) if k == 0 or cuts[k - 1].compare(c) != 0]
-        used = []
-        for left, right in zip(cuts[:-1], cuts[1:]):
-            q = rational_between(left, right)
-            hit = next((label for f, label in polys if f.eval(q) < 0), None)
-            if hit is None:
-                break
-            if hit not in used:
-                used.append(hit)
-        else:
-            return ("%s on the whole of it (exact: %d piece(s) cut at the real roots of the determinants, on each "
-                    "of which one of them is negative)%s" % ("; ".join(used), len(cuts) - 1,
-                    "; special value(s) %s by their point verdicts" % ", ".join(map(sp.sstr, specials))
-                    if specials else ""))
-    return None
+
+    def batches():
+        for word in cands:
+            if work.exhausted:
+                return
+            s = _q(theta) ** len(word)
+            out = []
+            for sgn in (1, -1):
+                poly = F.crossing_polynomial(word, s * sgn)
+                work.charge(len(word) * F.dim * (F.degree + 1) // 4 + 1)
+                P = sp.Poly([sp.Rational(int(x.p), int(x.q)) for x in reversed(poly.coeffs())] or [0], p)
+                out.append((P if sgn < 0 else P * (-1) ** F.dim, "a real eigenvalue %s %s of T_%s(%s)" % (
+                    ">=" if sgn > 0 else "<=", sp.sstr(sgn * sp.Rational(int(s.p), int(s.q))),
+                    "".join(map(str, word)), p.name)))
+            yield out
+
+    how = sign_cover(L, H, batches())
+    if how and specials:
+        how += "; special value(s) %s by their point verdicts" % ", ".join(map(sp.sstr, specials))
+    return how
 
 
 def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: int = 8,
@@ -346,11 +343,7 @@ def ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), grid: i
     ``budget`` in all (what is not examined when it is spent is reported as a gap); ``approach`` boxes at most
     toward each end of a run (halving the distance), ``tol`` the narrowest box.
     """
-    if len(general.params) != 1:
-        raise AnalysisError("a C^l set needs a mask with exactly one free parameter (fix the others with --param)")
-    p = general.params[0]
-    if param is not None and str(param) != p.name:
-        raise AnalysisError(f"unknown parameter {str(param)!r} (the family's parameter is {p.name})")
+    p = single_parameter(general, param)
     D = general.dilation
     if not D.isotropic:
         raise AnalysisError("M is anisotropic: the Hölder exponent is not -log_rho(M) JSR (Charina-Protasov 2019); "

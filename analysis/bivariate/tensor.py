@@ -425,11 +425,9 @@ def tensor_ck_set(general: BivariateMask, l: int, param=None, *, within=(0, 1), 
     ``sets`` in the same form as ``value``). Budgets are those of the univariate route
     (work units per verdict and per strip, counted, never timed).
     """
-    if len(general.params) != 1:
-        raise AnalysisError("a C^l set needs a mask with exactly one free parameter (fix the others with --param)")
-    p = general.params[0]
-    if param is not None and str(param) != p.name:
-        raise AnalysisError(f"unknown parameter {str(param)!r} (the family's parameter is {p.name})")
+    from .ranges import single_parameter
+
+    p = single_parameter(general, param)
     lo, hi = (sp.Rational(as_expr(w)) for w in within)
     if not lo < hi:
         raise AnalysisError("within needs low < high")

@@ -12,7 +12,7 @@ Examples
 >>> import schemes, sympy as sp
 >>> a = schemes.get("four-point").symbol
 >>> print(_prove_not_cj(a, a.params[0], 1, sp.Rational(1, 5), sp.Rational(1, 4), []))    # doctest: +ELLIPSIS
-a real eigenvalue >= 1 of T_01(p) on the whole stretch (exact: ...)
+a real eigenvalue >= 1 of T_01(p) on the whole of it (exact: ...)
 
 Algorithm
 ---------
@@ -26,6 +26,7 @@ I. Daubechies, J. C. Lagarias, *Two-scale difference equations II*, SIAM J. Math
 
 from __future__ import annotations
 
+import functools
 from typing import Sequence
 
 import sympy as sp
@@ -169,10 +170,7 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
     Candidates, added one at a time until every piece is covered: the products found at the grid points of the
     stretch, then every product of length at most 4.
     """
-    import functools
     from itertools import product as all_words
-
-    from ..algebra.algebraic import rational_between
 
     if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ) or tuple(a.domain.symbols) != (p,):
         return None
@@ -189,18 +187,32 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
         for w in all_words(range(2), repeat=length):
             if min(w[i:] + w[:i] for i in range(length)) == w and w not in cands:
                 cands.append(w)
-    polys = []          # (f, label) with f <= 0  =>  not C^j
-    roots = [L, H]
-    covered = None
-    for word in cands:  # the products of the grid points first: most stretches need nothing else
-        theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
-        for sgn in (1, -1):
-            num = _crossing_polynomial(a, K, p, tuple(word), sgn * theta)
-            if num is None:
-                return None
-            f = num if sgn < 0 else num * (-1) ** n
-            label = "a real eigenvalue %s %s of T_%s(p)" % (">=" if sgn > 0 else "<=", sp.sstr(sgn * theta),
-                                                            "".join(map(str, word)))
+    def batches():      # the products of the grid points first: most stretches need nothing else
+        for word in cands:
+            theta = sp.Integer(2) ** ((N - 1 - j) * len(word))
+            out = []
+            for sgn in (1, -1):
+                num = _crossing_polynomial(a, K, p, tuple(word), sgn * theta)
+                if num is None:
+                    return
+                out.append((num if sgn < 0 else num * (-1) ** n, "a real eigenvalue %s %s of T_%s(p)" % (
+                    ">=" if sgn > 0 else "<=", sp.sstr(sgn * theta), "".join(map(str, word)))))
+            yield out
+
+    return sign_cover(L, H, batches())
+
+
+def sign_cover(L: RealAlgebraic, H: RealAlgebraic, batches) -> str | None:
+    """Whether the polynomials ``f`` of ``batches`` (lists of ``(f, label)``, one-variable ``sp.Poly`` over Q, each
+    ``f <= 0`` meaning "not C^j" there) cover the closed interval ``[L, H]``: the real roots of every ``f`` so far
+    inside ``(L, H)`` (exact isolation) cut it into pieces on which none changes sign, and a piece is covered when
+    one ``f`` is negative at a rational point inside it (then ``f <= 0`` on the closed piece). Batches are added
+    one at a time until every piece is covered; the proof text, or ``None``."""
+    from ..algebra.algebraic import rational_between
+
+    polys, roots = [], [L, H]
+    for batch in batches:
+        for f, label in batch:
             if f.is_zero:
                 return label + " identically"
             if f.degree() >= 1:
@@ -217,10 +229,6 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
             if hit not in used:
                 used.append(hit)
         else:
-            covered = (used, len(cuts) - 1)
-            break
-    if covered is None:
-        return None
-    used, pieces = covered
-    return ("%s on the whole stretch (exact: %d piece(s) cut at the real roots of the determinants, on each of "
-            "which one of them is negative)" % ("; ".join(used), pieces))
+            return ("%s on the whole of it (exact: %d piece(s) cut at the real roots of the determinants, on each "
+                    "of which one of them is negative)" % ("; ".join(used), len(cuts) - 1))
+    return None
