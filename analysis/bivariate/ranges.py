@@ -280,6 +280,33 @@ def single_parameter(general: BivariateMask, param=None) -> sp.Symbol:
     return p
 
 
+def _squarefree_signs(F, word, s: fmpq, p: sp.Symbol, work: Work) -> list:
+    """``[(f, label), ...]`` for the square-free part ``g(x, t)`` of ``chi(x, t) = det(x I - Pi_word(t))`` (``g``
+    monic in ``x`` up to a rational constant, a divisor of ``chi`` in ``Q[t][x]``): ``g(s, t) <= 0`` forces a real
+    eigenvalue ``>= s`` and ``(-1)^deg g(-s, t) <= 0`` one ``<= -s``. ``chi`` by interpolation in ``x`` from the
+    exact determinants ``det(Pi - k I)``, ``k = 0..n``; ``[]`` when ``g`` is not monic up to a constant."""
+    x = sp.Dummy("x")
+    n = F.dim
+    pts = []
+    for k in range(n + 1):
+        poly = F.crossing_polynomial(word, fmpq(k))
+        work.charge(len(word) * F.dim * (F.degree + 1) // 4 + 1)
+        pts.append((k, (-1) ** n * sp.Poly([sp.Rational(int(c.p), int(c.q)) for c in reversed(poly.coeffs())] or [0],
+                                           p).as_expr()))
+    chi = sp.Poly(sp.expand(sp.interpolate(pts, x)), x, p)
+    g = sp.Poly(sp.sqf_part(chi.as_expr(), x, p), x, p)
+    lc = sp.Poly(g.as_expr(), x).LC()
+    if not (lc.is_Rational and lc != 0):
+        return []
+    d = sp.Poly(g.as_expr(), x).degree()
+    q = sp.Rational(int(s.p), int(s.q))
+    name = "".join(map(str, word))
+    return [(sp.Poly(sp.expand(g.as_expr().subs(x, q) / lc), p),
+             f"a real eigenvalue >= {sp.sstr(q)} of T_{name}({p.name}) (square-free characteristic polynomial)"),
+            (sp.Poly(sp.expand((-1) ** d * g.as_expr().subs(x, -q) / lc), p),
+             f"a real eigenvalue <= {sp.sstr(-q)} of T_{name}({p.name}) (square-free characteristic polynomial)")]
+
+
 def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Work) -> str | None:
     """A proof that the family is not C^l at any ``t`` of the closed interval ``[lo, hi]`` (exact or algebraic
     ends), or ``None`` -- the argument of :func:`analysis.regularity.crossings._prove_not_cj`: with ``n = F.dim``,
@@ -321,6 +348,14 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
                     ">=" if sgn > 0 else "<=", sp.sstr(sgn * sp.Rational(int(s.p), int(s.q))),
                     "".join(map(str, word)), p.name)))
             yield out
+        # an eigenvalue of even multiplicity (symmetric schemes) hides from det(Pi - s I): the same signs on the
+        # square-free part of the characteristic polynomial, a divisor of it for every t (operators up to 24)
+        for word in cands if F.dim <= MAX_STRIP_DIMENSION else ():
+            if work.exhausted:
+                return
+            out = _squarefree_signs(F, word, _q(theta) ** len(word), p, work)
+            if out:
+                yield out
 
     how = sign_cover(L, H, batches())
     if how and specials:
