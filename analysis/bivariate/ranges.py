@@ -102,6 +102,7 @@ class ParametricFamily:
         p = general.params[0]
         degs = []
         special = set()
+        self.vanishing = []             # the non-constant coefficient polynomials (their roots: smaller supports)
         for ij, v in general:
             try:
                 P = sp.Poly(v, p)
@@ -112,6 +113,7 @@ class ParametricFamily:
                 if not all(c.is_Rational for c in P.all_coeffs()):
                     raise AnalysisError("a C^l set needs rational coefficients in the parameter")
                 special |= {r for r in sp.Poly(P, p).ground_roots() if r.is_Rational}
+                self.vanishing.append(P)
         D = max(degs)
         if D > MAX_DEGREE:
             raise AnalysisError(f"the coefficients have degree {D} in {p.name} (limit {MAX_DEGREE})")
@@ -322,6 +324,9 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
     L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
     if L.compare(H) >= 0:
         return None
+    for P in F.vanishing:      # an irrational value where a coefficient vanishes: no point verdict there
+        if any(not r.is_rational and L.compare(r) <= 0 <= H.compare(r) for r in RealAlgebraic.roots_of(P)):
+            return None
     specials = []
     for q in F.special:
         Q = RealAlgebraic.rational(q)
@@ -536,6 +541,8 @@ def _boundary(F, general, p, l, theta, good, bad, work, point_budget, approach, 
     for r, sgn, w in cands:
         # an eigenvalue +-theta^L of Pi(r) gives JSR >= theta at r: not C^l, exactly -- except at a value where a
         # coefficient vanishes (the generic support is too large there): decided by the point verdict
+        if not r.is_rational and any(r.sign_of(P) == 0 for P in F.vanishing):
+            continue        # a coefficient vanishes at this irrational t*: the generic eigenvalue proves nothing
         if r.is_rational and r.expr in F.special:
             v = _verdict(general, p, r.expr, l, point_budget)
             work.charge(v["work"])
