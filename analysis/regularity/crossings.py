@@ -84,6 +84,22 @@ def _crossing_polynomial(a: LaurentSymbol, K, p: sp.Symbol, word: tuple, ev):
     return _CROSSINGS[key]
 
 
+def _support_shrinks(a: LaurentSymbol, p: sp.Symbol) -> list:
+    """The non-constant end coefficients of ``c = 2^(N-1) a / (1+z)^N`` as polynomials in ``p``: where one
+    vanishes the support of ``c`` is smaller than the generic one, and an eigenvalue of the generic matrices
+    ``T_eps(p)`` there may belong to no operator of the scheme (for example ``c_{N-1}`` when ``c_N = 0``), so it
+    proves nothing by itself."""
+    K = a.domain
+    N = _domain_transitions(a, K)[0]
+    c = factor_out(a, N) / 2
+    out = []
+    for e in (c.mask[0], c.mask[-1]):
+        P = sp.Poly(e, p)
+        if P.degree() >= 1:
+            out.append(P)
+    return out
+
+
 def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int], lo, hi):
     """Exact parameter values in (lo, hi) where the product T_word(p) has eigenvalue +-2^{(k-j)L}."""
     if not (a.domain.is_PolynomialRing and a.domain.domain.is_QQ):
@@ -107,7 +123,7 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
 
 
 
-def _complement_stretches(a, p, j, samples, boundaries, verdicts) -> list[dict]:
+def _complement_stretches(a, p, j, samples, boundaries, verdicts, point_verdict=None) -> list[dict]:
     """The stretches of consecutive non-C^j grid verdicts, each from the certified not-C^j point of the boundary
     on its left (or the grid's first point) to that on its right (or the last point), with ``proven``: whether
     :func:`_prove_not_cj` shows that no point of the closed stretch is C^j. A stretch next to an undecided grid
@@ -148,14 +164,14 @@ def _complement_stretches(a, p, j, samples, boundaries, verdicts) -> list[dict]:
                           if r is not None and r.witness.get("alpha") is not None else None):
                     if w and tuple(w) not in words:
                         words.append(tuple(w))
-            proof = _prove_not_cj(a, p, j, ends[0], ends[1], words)
+            proof = _prove_not_cj(a, p, j, ends[0], ends[1], words, point_verdict)
             if proof:
                 st.update(proven=True, how=proof)
         out.append(st)
     return out
 
 
-def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
+def _prove_not_cj(a, p, j, lo, hi, words, point_verdict=None) -> str | None:
     """A proof that ``S_a(p)`` is not C^j for every ``p`` in the closed interval ``[lo, hi]`` (exact or algebraic
     ends), or ``None``.
 
@@ -168,7 +184,9 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
     the interval into pieces on which no candidate changes sign; a piece is covered when some ``f`` is negative at a
     rational point inside it (then ``f <= 0`` on the closed piece), and the stretch is proven when every piece is.
     Candidates, added one at a time until every piece is covered: the products found at the grid points of the
-    stretch, then every product of length at most 4.
+    stretch, then every product of length at most 4. Where the support of the mask shrinks
+    (:func:`_support_shrinks`) the determinants prove nothing: such a point must be rational and
+    ``point_verdict(value)`` (the scheme's certified C^j verdict there) ``False``.
     """
     from itertools import product as all_words
 
@@ -182,6 +200,11 @@ def _prove_not_cj(a, p, j, lo, hi, words) -> str | None:
     L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
     if L.compare(H) >= 0:
         return None
+    for P in _support_shrinks(a, p):            # there only the scheme's own verdict counts
+        for r in RealAlgebraic.roots_of(P):
+            if L.compare(r) <= 0 <= H.compare(r) and (
+                    not r.is_rational or point_verdict is None or point_verdict(r.expr) is not False):
+                return None
     cands = list(words)
     for length in range(1, 5):
         for w in all_words(range(2), repeat=length):

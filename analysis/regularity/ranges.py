@@ -55,7 +55,7 @@ from ..stationary.ballnorm import mask_terms, norm_below_one_on_box
 from ..stationary.difference import difference_symbol
 from ..stationary.normset import _parameter, norm_solution_set
 from ..stationary.transition import transition_matrices
-from .crossings import _complement_stretches, _exact_boundaries
+from .crossings import _complement_stretches, _exact_boundaries, _support_shrinks
 from .holder import holder_exponent, smoothness
 from ..algebra.reader import as_expr
 from .. import progress
@@ -186,7 +186,8 @@ def ck_parameter_set(a: LaurentSymbol, j: int, param=None, *, within=(-1, 1), gr
         interiors.append(_run_interior(a, p, j, run, interior_L_max, budget, strip_budget))
     # the complement: every stretch of non-C^j grid verdicts, proven not C^j on the whole of it where one
     # product has a real eigenvalue of modulus >= the threshold throughout (exact sign of a determinant)
-    stretches = _complement_stretches(a, p, j, samples, boundaries, verdicts)
+    stretches = _complement_stretches(a, p, j, samples, boundaries, verdicts,
+                                      lambda q: verdicts[q].value if q in verdicts else _verdict_at(a, p, q, j, budget)[0])
     complement_proven = all(st["proven"] for st in stretches)
     if boundaries_certified and (runs or stretches) and all(interiors) and complement_proven:
         status = CERTIFIED
@@ -294,6 +295,11 @@ def _locate(a, p, j, s0, s1, tol, budget, verdicts=None):
 
     candidates.sort(key=functools.cmp_to_key(lambda u, v: side * v[0].compare(u[0])))
     for r, ev, poly, word in candidates[:4]:
+        if any(r.sign_of(P) == 0 for P in _support_shrinks(a, p)):
+            # the support shrinks at r: the generic eigenvalue proves nothing there, the scheme's verdict does
+            if not r.is_rational or (verdicts[r.expr].value if verdicts and r.expr in verdicts
+                                     else _verdict_at(a, p, r.expr, j, budget)[0]) is not False:
+                continue
         probe = _simple_rational_near(r, side, tol_q)
         if probe is None or (probe - good) * side > 0:
             continue
