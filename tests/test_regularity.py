@@ -118,3 +118,16 @@ def test_not_ck_between_counterexamples_is_proven_and_never_over_a_ck_point():
     w = r.witness["parameter"]
     assert _prove_not_cj(a, sp.Symbol(w), 1, Q(1, 8), Q(1, 4), []) is None
     assert _prove_not_cj(a, sp.Symbol(w), 1, Q(1, 5), Q(1, 4), []) is not None
+
+
+def test_a_stretch_through_a_point_where_the_support_shrinks_needs_the_point_verdict():
+    """At w = 0 the four-point scheme's c has a smaller support (its end coefficients are -2w): a generic
+    eigenvalue proves nothing there, so [-1/8, 0] is proven not C^1 only with the scheme's verdict at 0."""
+    from analysis.regularity.crossings import _prove_not_cj, _support_shrinks
+
+    a = schemes.get("four-point").symbol
+    w = a.params[0]
+    assert [P.as_expr() for P in _support_shrinks(a, w)] == [-2 * w, -2 * w]
+    assert _prove_not_cj(a, w, 1, Q(-1, 8), 0, []) is None
+    assert _prove_not_cj(a, w, 1, Q(-1, 8), 0, [], point_verdict=lambda q: smoothness(a.subs({w: q}), 1).value) \
+        is not None
