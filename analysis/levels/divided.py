@@ -67,7 +67,8 @@ _ZERO_PROOFS: dict = {}
 def _prove_zero(e: sp.Expr) -> bool:
     if _nonzero_somewhere(e):
         return False        # no simplification can prove it zero: skip them (seconds each)
-    for f in (lambda x: sp.simplify(x.rewrite(sp.exp)), lambda x: sp.simplify(x),
+    for f in (lambda x: sp.cancel(sp.together(x.rewrite(sp.exp))), lambda x: sp.simplify(x.rewrite(sp.exp)),
+              lambda x: sp.simplify(x),
               lambda x: sp.simplify(sp.expand_trig(x))):
         try:
             if f(e) == 0:
