@@ -302,7 +302,9 @@ def q_factors(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.E
 
 def _frequencies(poly_expr, X, gens, arity: int = 2) -> list[tuple[sp.Expr, sp.Expr]]:
     """``(lambda_i, w_i)`` for the factors ``1 + w_i z`` (``q_m(w_i z)`` for arity m; ``w_i`` a monomial in the ``X_j``)."""
-    num, _ = sp.fraction(sp.cancel(sp.together(poly_expr)))
+    # the denominator of together(P) is free of z (P is a polynomial in z), so cancelling it changes only the
+    # factors of degree 0 in z, which are not read: the same factors in z, without the gcds of cancel
+    num, _ = sp.fraction(sp.together(poly_expr))
     if arity != 2:
         pairs, rest = q_factors(num, X, gens, arity)
         if not pairs or sp.degree(rest, _Z) != 0:
