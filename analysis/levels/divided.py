@@ -67,7 +67,8 @@ _ZERO_PROOFS: dict = {}
 def _prove_zero(e: sp.Expr) -> bool:
     if _nonzero_somewhere(e):
         return False        # no simplification can prove it zero: skip them (seconds each)
-    for f in (lambda x: sp.simplify(x.rewrite(sp.exp)), lambda x: sp.simplify(x),
+    for f in (lambda x: sp.cancel(sp.together(x.rewrite(sp.exp))), lambda x: sp.simplify(x.rewrite(sp.exp)),
+              lambda x: sp.simplify(x),
               lambda x: sp.simplify(sp.expand_trig(x))):
         try:
             if f(e) == 0:
@@ -143,22 +144,30 @@ def divide_by_q(coeffs, m: int, j: int) -> list:
     return list(_divide_by_q(tuple(coeffs), m, j))
 
 
-@lru_cache(maxsize=256)
 def _divide_by_q(coeffs: tuple, m: int, j: int) -> tuple:
-    """:func:`divide_by_q` (a pure function of its arguments, remembered: the C^k routes ask for the same division
-    for every k; a failed division raises each time)."""
-    coeffs = list(coeffs)
-    q = q_label(m)
+    """:func:`divide_by_q` as ``j`` single divisions (:func:`_divide_step`, remembered: the C^k routes ask for the
+    same divisions for every k and every j; a failed division raises each time)."""
     for _ in range(j):
-        if len(coeffs) < m:
-            raise AnalysisError(f"{q} does not divide a^n(z): the mask is too short")
-        quot, rem = _divide_once(coeffs, m)
-        for x in rem:
-            if not _exact_zero(sp.expand(x)):
-                raise AnalysisError(f"{q} does not divide a^n(z) identically in n (remainder coefficient "
-                                    f"{sp.sstr(sp.simplify(x))})")
-        coeffs = [sp.cancel(m * c) if as_expr(c).is_rational_function(H) else sp.simplify(m * c) for c in quot]
-    return tuple(coeffs)
+        out = _divide_step(coeffs, m)
+        if isinstance(out, str):
+            raise AnalysisError(out)
+        coeffs = out
+    return coeffs
+
+
+@lru_cache(maxsize=256)
+def _divide_step(coeffs: tuple, m: int) -> tuple | str:
+    """The coefficients of ``(m/q_m) a^n`` (``coeffs`` those of ``a^n``), or the message of the
+    :class:`AnalysisError` when ``q_m`` does not divide ``a^n`` identically (a pure function of its arguments)."""
+    q = q_label(m)
+    if len(coeffs) < m:
+        return f"{q} does not divide a^n(z): the mask is too short"
+    quot, rem = _divide_once(coeffs, m)
+    for x in rem:
+        if not _exact_zero(sp.expand(x)):
+            return (f"{q} does not divide a^n(z) identically in n (remainder coefficient "
+                    f"{sp.sstr(sp.simplify(x))})")
+    return tuple(sp.cancel(m * c) if as_expr(c).is_rational_function(H) else sp.simplify(m * c) for c in quot)
 
 
 def divided_difference(s: LevelDependentScheme, j: int, arity: int | None = None) -> LevelDependentScheme:

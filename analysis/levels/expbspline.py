@@ -196,6 +196,20 @@ def to_exponential_generators(exprs, *, in_h: bool = False) -> tuple[list[sp.Exp
     return out, X, list(gens)
 
 
+def _rational_zero(e: sp.Expr) -> bool:
+    """``cancel(together(e)) == 0``: first as the numerator of ``together(e)`` being the zero polynomial in its
+    symbols (a proof, and much cheaper than the gcds of ``cancel``), else by ``cancel`` itself."""
+    num = sp.fraction(sp.together(e))[0]
+    gens = sorted(as_expr(num).free_symbols, key=lambda x: x.name)
+    if gens:
+        try:
+            if sp.Poly(num, *gens).is_zero:
+                return True
+        except sp.PolynomialError:
+            pass
+    return sp.cancel(sp.together(e)) == 0
+
+
 @lru_cache(maxsize=1024)
 def _cancelled(e: sp.Expr) -> sp.Expr:
     """``cancel(together(e))`` (a pure function of ``e``, remembered)."""
@@ -279,7 +293,7 @@ def q_factors(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.E
     for lam, w in cands:
         while sp.degree(rest, _Z) >= m - 1:
             qq, rr = sp.div(rest, sp.expand(sp.together(q_factor(w, m) * sp.denom(w) ** (m - 1))), _Z)
-            if sp.cancel(sp.together(rr)) != 0:
+            if not _rational_zero(rr):
                 break
             out.append((lam, w))
             rest = sp.expand(sp.cancel(sp.together(qq)))
@@ -288,7 +302,9 @@ def q_factors(num, X, gens, m: int) -> tuple[list[tuple[sp.Expr, sp.Expr]], sp.E
 
 def _frequencies(poly_expr, X, gens, arity: int = 2) -> list[tuple[sp.Expr, sp.Expr]]:
     """``(lambda_i, w_i)`` for the factors ``1 + w_i z`` (``q_m(w_i z)`` for arity m; ``w_i`` a monomial in the ``X_j``)."""
-    num, _ = sp.fraction(sp.cancel(sp.together(poly_expr)))
+    # the denominator of together(P) is free of z (P is a polynomial in z), so cancelling it changes only the
+    # factors of degree 0 in z, which are not read: the same factors in z, without the gcds of cancel
+    num, _ = sp.fraction(sp.together(poly_expr))
     if arity != 2:
         pairs, rest = q_factors(num, X, gens, arity)
         if not pairs or sp.degree(rest, _Z) != 0:
@@ -345,7 +361,7 @@ def _recognise(s: LevelDependentScheme, arity: int) -> Result:
         prod = sp.Integer(arity)
         for _, w in pairs:
             prod = prod * q_factor(w, arity) / q_factor(w, arity).subs(_Z, 1)
-        if sp.cancel(sp.together(prod - P)) != 0:
+        if not _rational_zero(prod - P):
             raise _NotOfForm("the normalisation differs from 2 prod (1 + w_i z)/(1 + w_i)" if arity == 2 else
                              f"the normalisation differs from {arity} prod q(w_i z)/q(w_i)")
         lams = [lam for lam, _ in pairs]

@@ -54,6 +54,7 @@ goldens record them; for ``m > 2`` the m sub-symbols are compared (the same cond
 
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import Any, Mapping, Sequence
 
 import numpy as np
@@ -300,6 +301,16 @@ def reproduction(s: LevelDependentScheme, lambdas: Sequence, values: Mapping[str
                   provenance={"method": "exact generalized sum rules at every level and every parameter (sympy)"})
 
 
+@lru_cache(maxsize=256)
+def _root_frequency(r: sp.Expr) -> sp.Expr | None:
+    """``lim_{h->0} -2 log(-r(h))/h`` simplified, or ``None`` when sympy cannot take the limit (a pure function
+    of the root ``r(h)``, remembered: the same factors recur across schemes, and each limit costs up to a second)."""
+    try:
+        return sp.simplify(sp.limit(-2 * sp.log(-r) / H, H, 0))
+    except (NotImplementedError, ValueError):
+        return None
+
+
 def exponential_frequencies(s: LevelDependentScheme, values: Mapping[str, Any] | None = None) -> Result:
     """The frequencies ``lambda`` (with multiplicity) whose exponential polynomials ``x^j e^{lambda x}``
     every level generates, and those whose ``e^{lambda x}`` it reproduces — exactly.
@@ -338,9 +349,8 @@ def exponential_frequencies(s: LevelDependentScheme, values: Mapping[str, Any] |
             unsolved.append(sp.sstr(f))
             continue
         for r, m in roots.items():
-            try:
-                lam = sp.simplify(sp.limit(-2 * sp.log(-r) / H, H, 0))
-            except (NotImplementedError, ValueError):
+            lam = _root_frequency(r)
+            if lam is None:
                 unsolved.append(sp.sstr(f))
                 continue
             if lam.has(sp.Limit) or H in lam.free_symbols:
