@@ -82,6 +82,9 @@ MAX_DEGREE = 6
 #: the largest restricted dimension for which the strip next to an exact end is tried with the parametric
 #: invariant polytope (:func:`analysis.jsr.parametric.close_family`)
 MAX_STRIP_DIMENSION = 24
+#: largest degree in t (word length x dimension x degree of the family) of a characteristic polynomial whose
+#: square-free part is taken when proving a stretch not C^l
+SQUAREFREE_DEGREE = 240
 #: work budget of the exact end-strip argument (:func:`analysis.bivariate.end_strip.close_end_strip`: the leading
 #: subspace split off, its JSR bounded by the moving eigenvalue through a convex hull in ``1/lambda``)
 END_BUDGET = 250_000
@@ -318,7 +321,9 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
     polynomials in ``t``, :meth:`ParametricFamily.crossing_polynomial`) and every piece must have one of them
     negative at a rational point inside. Candidates, one word at a time: ``words``, then the single digits. A
     special value of the family in ``[lo, hi]`` (where the generic support is too large) is decided by its own
-    certified point verdict."""
+    certified point verdict. Where the mask has more sum rules than generically (exceptional ``t``), the extra
+    eigenvalues of the restricted operators have modulus about ``rho(M)^{-(l+1)|w|}``, below ``theta^|w|`` (``M``
+    isotropic), so they never make a piece negative by themselves."""
     from ..regularity.crossings import sign_cover
 
     L, H = RealAlgebraic.from_expr(lo), RealAlgebraic.from_expr(hi)
@@ -358,6 +363,8 @@ def _prove_not_cl(F, general, p, l, theta, lo, hi, words, point_budget, work: Wo
         for word in cands if F.dim <= MAX_STRIP_DIMENSION else ():
             if work.exhausted:
                 return
+            if len(word) * F.dim * F.degree > SQUAREFREE_DEGREE:
+                continue        # the dense polynomial in (x, t) would be too large (its sympy time is not metered)
             out = _squarefree_signs(F, word, _q(theta) ** len(word), p, work)
             if out:
                 yield out
