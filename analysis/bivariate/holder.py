@@ -35,7 +35,6 @@ R.-Q. Jia, *Subdivision schemes in L_p spaces*, Adv. Comput. Math. 3 (1995) 309-
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import sympy as sp

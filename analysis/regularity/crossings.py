@@ -122,7 +122,6 @@ def _exact_boundaries(a: LaurentSymbol, p: sp.Symbol, j: int, word: Sequence[int
     return out
 
 
-
 def _complement_stretches(a, p, j, samples, boundaries, verdicts, point_verdict=None) -> list[dict]:
     """The stretches of consecutive non-C^j grid verdicts, each from the certified not-C^j point of the boundary
     on its left (or the grid's first point) to that on its right (or the last point), with ``proven``: whether
