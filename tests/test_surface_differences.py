@@ -158,9 +158,25 @@ def test_c_l_by_norms_shows_what_the_sources_state(name, l):
 def test_c_l_by_norms_is_inconclusive_where_it_must_be():
     r = smoothness_by_norms(get("box-111").mask(), 1, max_L=4)        # the Courant element is not C^1
     assert r.status == INCONCLUSIVE and r.value == 0 and r.witness["levels"][-1]["L"] is None
-    with pytest.raises(AnalysisError, match="2I only"):
-        smoothness_by_norms(BivariateMask.from_symbol("(1+z1+z1**2)**2*(1+z2+z2**2)**2/(9*z1**2*z2**2)",
-                                                      "triadic"), 1)
+    hat3 = BivariateMask.from_symbol("(1+z1+z1**2)**2*(1+z2+z2**2)**2/(9*z1**2*z2**2)", "triadic")
+    r = smoothness_by_norms(hat3, 1, max_L=2)                       # the triadic hat: C^0, not C^1
+    assert r.status == INCONCLUSIVE and r.value == 0 and [v["L"] for v in r.witness["levels"]] == [1, None]
+
+
+def test_c_l_by_norms_for_a_triadic_dilation():
+    """M = 3I: the divided differences are scaled by 3^j (the proof in the module docstring is for every m). The
+    triadic quadratic and cubic tensor B-splines (C^1, C^2) are shown at L = 1; each norm is recomputed from its
+    scheme with the factor 3^(jL), so a factor 2^j (the dyadic one) fails here."""
+    quad3 = BivariateMask.from_symbol("(1+z1+z1**2)**3*(1+z2+z2**2)**3/(81*z1**2*z2**2)", "triadic")
+    cubic3 = BivariateMask.from_symbol("(1+z1+z1**2)**4*(1+z2+z2**2)**4/(729*z1**2*z2**2)", "triadic")
+    for mask, l in ((quad3, 1), (cubic3, 2)):
+        r = smoothness_by_norms(mask, l)
+        assert r.status == CERTIFIED and r.value == l and r.provenance["m"] == 3
+        for v in r.witness["levels"]:
+            B = difference_scheme(mask, v["C"] + 1, v["shift"]).value
+            assert v["norms"][-1] == scheme_norm(B, v["L"]) * 3 ** (v["C"] * v["L"]) < 1
+    assert [v["norms"] for v in smoothness_by_norms(quad3, 1).witness["levels"]] == [[sp.Rational(1, 3)],
+                                                                                     [sp.Rational(1, 3)]]
 
 
 def test_without_the_sum_rules_it_is_a_one_line_error():

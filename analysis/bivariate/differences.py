@@ -1,5 +1,5 @@
 """Difference schemes of a bivariate mask with dilation ``M = m I`` (the quotient-ideal form), and their norm
-tests (``C^0``; ``C^l`` for ``M = 2I``).
+tests (``C^0`` and ``C^l``).
 
 Convention (:mod:`analysis.bivariate`): ``(S_a f)(alpha) = sum_beta a(alpha - M beta) f(beta)``, i.e.
 ``(S_a f)(z) = a(z) f(z^M)`` for the symbols, ``z^M = (z1^m, z2^m)``. The backward differences
@@ -29,10 +29,10 @@ restricted one): the test is then *inconclusive*, never "not convergent". Since 
 tries the schemes built from the shifted symbols ``z^gamma a``, ``gamma in {0..m-1}^2`` (each an exact
 difference scheme of ``a``), and takes the first ``(L, gamma)`` that works.
 
-**C^l by norms** (``M = 2I`` only): ``C^0`` as above, then for ``j = 1, ..., l`` in turn, ``C^j`` from ``C^{j-1}``
-and ``||(2^j S_{B_{j+1}})^L||_inf < 1`` (Warren–Weimer 2002, Theorem 3.11: ``2^j S_{B_{j+1}}`` refines the
-differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``; proved below); :func:`smoothness_by_norms`. For
-other ``m`` and whenever the norms do not show it, ``C^l`` is left to the Hölder exponent
+**C^l by norms** (any ``M = m I``): ``C^0`` as above, then for ``j = 1, ..., l`` in turn, ``C^j`` from ``C^{j-1}``
+and ``||(m^j S_{B_{j+1}})^L||_inf < 1`` (Warren–Weimer 2002, Theorem 3.11 for ``m = 2``: ``m^j S_{B_{j+1}}``
+refines the differences of the ``j``-th divided differences ``m^{nj} nabla^mu f^n``; proved below for every ``m``);
+:func:`smoothness_by_norms`. Whenever the norms do not show it, ``C^l`` is left to the Hölder exponent
 (:mod:`analysis.bivariate.holder`).
 
 Proof of the ``C^0`` test (so the statement does not rest on a citation alone): with ``f^n = S_a^n f^0`` and ``eta = ||S_B^L||``,
@@ -43,31 +43,33 @@ each bracket is a sum of boundedly many first differences of ``f^n`` (``beta`` r
 ``alpha/m``). ``g_{n+1} - g_n`` is piecewise linear on the finer grid, so ``||g_{n+1} - g_n||_inf <= K ||nabla
 f^n||_inf``, a geometric sequence: ``g_n`` converges uniformly to a continuous limit.
 
-Proof of the ``C^l`` step (``M = 2I``; likewise self-contained). Let ``j >= 1``, ``S_a`` be ``C^{j-1}`` (the divided
-differences ``2^{n(j-1)} nabla^nu f^n``, ``|nu| = j - 1``, converge uniformly to ``d^nu F``; for ``j = 1`` this is
-``f^n -> F``), ``B_j``, ``B_{j+1}`` difference schemes of orders ``j`` and ``j + 1``, and ``eta = ||(2^j
-S_{B_{j+1}})^L||_inf < 1``.
-(a) *``2^j S_{B_j}`` maps constant vectors to themselves.* ``B_{j+1}`` exists (built and checked exactly), so ``a``
-vanishes to order ``j + 1`` at ``(-1, 1)``, ``(1, -1)``, ``(-1, -1)`` (in the identity take ``mu = (j+1, 0)`` near
-``z1 = -1`` and ``mu = (0, j+1)`` near ``z2 = -1``: ``nabla^mu(z)`` is a unit there and every ``nabla^nu(z^2)``
-vanishes to order ``j + 1``); with the cosets summing to 1 these are the sum rules of order ``j + 1``: the moments
-``sum_{gamma = eps mod 2} a(gamma) gamma^r``, ``|r| <= j``, do not depend on the coset ``eps``. Every ``v in
+Proof of the ``C^l`` step (``M = m I``, any ``m >= 2``; likewise self-contained; for ``m = 2`` it is Warren–Weimer's
+Theorem 3.11). Let ``j >= 1``, ``S_a`` be ``C^{j-1}`` (the divided differences ``m^{n(j-1)} nabla^nu f^n``,
+``|nu| = j - 1``, converge uniformly to ``d^nu F``; for ``j = 1`` this is ``f^n -> F``), ``B_j``, ``B_{j+1}``
+difference schemes of orders ``j`` and ``j + 1``, and ``eta = ||(m^j S_{B_{j+1}})^L||_inf < 1``.
+(a) *``m^j S_{B_j}`` maps constant vectors to themselves.* ``B_{j+1}`` exists (built and checked exactly), so ``a``
+vanishes to order ``j + 1`` at every ``zeta = (zeta1, zeta2) != (1, 1)`` with ``zeta1^m = zeta2^m = 1`` (in the
+identity take ``mu = (j+1, 0)`` if ``zeta1 != 1``, else ``mu = (0, j+1)``: ``nabla^mu(z)`` is a unit near
+``zeta``, and every ``nabla^nu(z^m) = (1 - z1^m)^nu1 (1 - z2^m)^nu2``, ``|nu| = j + 1``, vanishes to order
+``j + 1`` there); with the cosets summing to 1 these are the sum rules of order ``j + 1``: the moments
+``sum_{gamma = eps mod m} a(gamma) gamma^r``, ``|r| <= j``, do not depend on the coset ``eps``. Every ``v in
 R^{j+1}`` is the vector ``(nabla^mu q)_{|mu| = j}`` of the ``j``-th differences of the homogeneous polynomial ``q(x)
 = sum_mu v_mu x^mu / mu!`` of degree ``j`` (``nabla^mu q = d^mu q = v_mu``, a constant). Expanding ``q((alpha -
-gamma)/2)`` in ``gamma``, ``(S_a q)(alpha) = sum_{gamma = alpha mod 2} a(gamma) q((alpha - gamma)/2) = sum_{|r| <= j}
-c_r (d^r q)(alpha/2)`` with ``c_0 = 1``: ``S_a q = q(./2) + (terms of degree < j)``, whose ``j``-th differences are
-``2^{-j} v``. The identity holds for every sequence, so ``S_{B_j} v = (nabla^mu S_a q)_mu = 2^{-j} v``.
-(b) ``D^n = 2^{nj} (nabla^mu f^n)_{|mu| = j}`` satisfies ``D^{n+1} = 2^j S_{B_j} D^n``. Its first differences
-``nabla_i D^n_mu = 2^{nj} nabla^{mu + e_i} f^n`` are entries of ``E^n = 2^{nj} (nabla^nu f^n)_{|nu| = j+1}``, and
-``E^{n+1} = 2^j S_{B_{j+1}} E^n``, so ``||nabla D^n||_inf <= ||E^n||_inf <= C eta^{n/L} ||E^0||_inf``.
+gamma)/m)`` in ``gamma``, ``(S_a q)(alpha) = sum_{gamma = alpha mod m} a(gamma) q((alpha - gamma)/m) = sum_{|r| <= j}
+c_r (d^r q)(alpha/m)`` with ``c_0 = 1`` and ``c_r`` the same on every coset: ``S_a q = q(./m) + (terms of degree
+< j)``, whose ``j``-th differences are ``m^{-j} v``. The identity holds for every sequence, so ``S_{B_j} v =
+(nabla^mu S_a q)_mu = m^{-j} v``.
+(b) ``D^n = m^{nj} (nabla^mu f^n)_{|mu| = j}`` satisfies ``D^{n+1} = m^j S_{B_j} D^n``. Its first differences
+``nabla_i D^n_mu = m^{nj} nabla^{mu + e_i} f^n`` are entries of ``E^n = m^{nj} (nabla^nu f^n)_{|nu| = j+1}``, and
+``E^{n+1} = m^j S_{B_{j+1}} E^n``, so ``||nabla D^n||_inf <= ||E^n||_inf <= C eta^{n/L} ||E^0||_inf``.
 (c) The ``C^0`` argument runs on ``D^n`` (with (a) in place of the cosets summing to 1): ``D^{n+1}(alpha) -
-g_n(alpha/2^{n+1}) = (2^j S_{B_j} (D^n - g_n(alpha/2^{n+1})))(alpha)`` is at most ``K ||E^n||_inf``, so the
+g_n(alpha/m^{n+1}) = (m^j S_{B_j} (D^n - g_n(alpha/m^{n+1})))(alpha)`` is at most ``K ||E^n||_inf``, so the
 piecewise linear interpolants of ``D^n`` converge uniformly to continuous limits ``G_mu``.
-(d) For ``mu_i >= 1``, ``D^n_mu = 2^n nabla_i (2^{n(j-1)} nabla^{mu - e_i} f^n)``; summing along ``e_i`` and passing
+(d) For ``mu_i >= 1``, ``D^n_mu = m^n nabla_i (m^{n(j-1)} nabla^{mu - e_i} f^n)``; summing along ``e_i`` and passing
 to the limit (level ``j - 1`` converges uniformly to ``H = d^{mu - e_i} F``, level ``j`` to the continuous
 ``G_mu``), ``H(x + s e_i) - H(x) = int_0^s G_mu(x + sigma e_i) d sigma``: ``d_i H = G_mu``. So the ``j``-th
 derivatives of ``F`` exist, are continuous and are the limits of the ``j``-th divided differences: ``C^j``.
-The norm bounds ``2^j S_{B_{j+1}}`` on all vector sequences, while ``E^n`` are ``(j+1)``-th differences, a
+The norm bounds ``m^j S_{B_{j+1}}`` on all vector sequences, while ``E^n`` are ``(j+1)``-th differences, a
 constrained subset (``nabla_2 E_{(j+1, 0)} = nabla_1 E_{(j, 1)}``): ``eta < 1`` is sufficient, not necessary, and a
 norm ``>= 1`` stays *inconclusive*.
 
@@ -517,22 +519,21 @@ def convergence_by_norms(a: BivariateMask, max_L: int = MAX_L, max_terms: int = 
 
 
 def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms: int = MAX_TERMS) -> Result:
-    """``C^l`` by norms, ``M = 2I``: ``C^0`` by :func:`convergence_by_norms`, then for ``j = 1, ..., l`` in turn
-    ``||(2^j S_{B_{j+1}})^L||_inf < 1`` for some ``L``, ``B_{j+1}`` the difference scheme of order ``j + 1``.
+    """``C^l`` by norms, ``M = m I``: ``C^0`` by :func:`convergence_by_norms`, then for ``j = 1, ..., l`` in turn
+    ``||(m^j S_{B_{j+1}})^L||_inf < 1`` for some ``L``, ``B_{j+1}`` the difference scheme of order ``j + 1``.
 
-    Theorem used (Warren–Weimer 2002, Theorem 3.11, dilation ``2I``; proved in the module docstring): if the mask
-    has the zeros of order ``j + 1`` (sum rules of order ``j + 1``), its limits are ``C^{j-1}``, and the scheme
-    ``2^j S_{B_{j+1}}`` of the differences of the ``j``-th divided differences ``2^{nj} nabla^mu f^n``
+    Theorem used (Warren–Weimer 2002, Theorem 3.11 for ``m = 2``; proved in the module docstring for every ``m``):
+    if the mask has the zeros of order ``j + 1`` (sum rules of order ``j + 1``), its limits are ``C^{j-1}``, and
+    the scheme ``m^j S_{B_{j+1}}`` of the differences of the ``j``-th divided differences ``m^{nj} nabla^mu f^n``
     (``|mu| = j``) has a norm ``< 1``, then the limits are ``C^j``. Each level rests on the one below, so the levels are certified in order and the
     search stops at the first one not shown.
 
     ``value`` is the largest ``j <= l`` certified (``-1``: not even ``C^0``); status *certified* when it is ``l``,
     else *inconclusive*; ``witness["levels"]`` lists each level tried with its ``L``, the exact scaled norms
-    ``||(2^j S_B)^L||_inf`` for ``L = 1, 2, ...`` and the scheme ``B`` they are the norms of (``scheme``, the
+    ``||(m^j S_B)^L||_inf`` for ``L = 1, 2, ...`` and the scheme ``B`` they are the norms of (``scheme``, the
     :class:`DifferenceScheme` of order ``j + 1``, and its ``shift``: ``B`` is built from ``z^shift a``; when no
     ``L`` works, the unshifted one), so that each norm can be recomputed from the level alone
     (``None`` for a level where no scheme exists).
-    For ``m >= 3`` only ``l = 0`` is available (the reference is for ``2I``): use the Hölder exponent.
 
     >>> from schemes.surfaces import get
     >>> r = smoothness_by_norms(get("loop").mask(), 2)
@@ -542,9 +543,6 @@ def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms:
     m = _check_norm_input(a, max_L)
     if isinstance(l, bool) or not isinstance(l, int) or not 0 <= l < MAX_ORDER:
         raise AnalysisError(f"the smoothness order of the norm test is an integer from 0 to {MAX_ORDER - 1}, not {l!r}")
-    if l >= 1 and m != 2:
-        raise AnalysisError(f"C^{l} by norms is available for M = 2I only (the theorem used is for 2I); "
-                            "the Hölder exponent of subdiv surface decides C^l for every dilation")
     levels: list[dict] = []
     top = -1
     for j in range(l + 1):
@@ -562,7 +560,8 @@ def smoothness_by_norms(a: BivariateMask, l: int, max_L: int = MAX_L, max_terms:
     return Result(value=top, status=status,
                   witness={"levels": levels,
                            "theorem": "C^0: ||S_{B_1}^L|| < 1 (Dyn 1992); C^j from C^{j-1} and "
-                                      "||(2^j S_{B_{j+1}})^L|| < 1 (Warren-Weimer 2002, Thm 3.11)"},
+                                      "||(m^j S_{B_{j+1}})^L|| < 1 (Warren-Weimer 2002, Thm 3.11 for m = 2; "
+                                      "the same proof for every m)"},
                   provenance={"method": "exact norms of the L-step difference schemes (FLINT integers)", "m": m,
                               "max_L": max_L, "max_terms": max_terms})
 

@@ -61,7 +61,7 @@ def _refine(args) -> None:
 
 def _differences(args) -> None:
     """``--differences K``: the difference scheme of order ``K`` (M = m I), its exact identity, and the norm
-    test of C^(K-1) (:mod:`analysis.bivariate.differences`; C^l with l >= 1 for M = 2I only)."""
+    test of C^(K-1) (:mod:`analysis.bivariate.differences`)."""
     import sympy as sp
 
     from ..bivariate.differences import difference_scheme
@@ -80,8 +80,6 @@ def _differences(args) -> None:
     if B.params:
         test = ("; the norm test needs values of " + ", ".join(p.name for p in B.params) +
                 " (--param " + B.params[0].name + "=VALUE)")
-    elif k >= 2 and m != 2:
-        test = f"; C^{k - 1} by norms: for M = 2I only (the Hölder exponent decides C^l)"
     else:
         text, tested = _norm_test_text(a, k - 1, data)
         test = "; " + text
@@ -114,17 +112,18 @@ def _norm_test_text(a, l: int, data: dict):
     from ..bivariate.differences import smoothness_by_norms
 
     r = smoothness_by_norms(a, l)
+    m = r.provenance["m"]
     levels = r.witness["levels"]
     data["norm_test"] = {"status": r.status, "C": l, "certified_up_to": r.value,
                          "levels": [{"C": v["C"], "L": v["L"], "order": v["C"] + 1,
                                      "shift": None if v["shift"] is None else list(v["shift"]),
-                                     "scaled_by": 2 ** v["C"],
+                                     "scaled_by": m ** v["C"],
                                      "norms": [sp.sstr(x) for x in v["norms"]], "stopped": v["stopped"],
                                      **({} if v["scheme"] is None else {"matrix": _scheme_json(v["scheme"])["matrix"]})}
                                     for v in levels]}
     last = levels[-1]
     tested = last["scheme"] if last["C"] == l else None
-    norm = (lambda L: f"||S_B^{L}||_inf") if l == 0 else (lambda L: f"||({2 ** l} S_B)^{L}||_inf")
+    norm = (lambda L: f"||S_B^{L}||_inf") if l == 0 else (lambda L: f"||({m ** l} S_B)^{L}||_inf")
     if r.value == l:
         Ls = ", ".join(str(v["L"]) for v in levels[:-1])
         lower = ("" if l == 0 else f", C^0 by order 1 (L = {Ls})" if l == 1 else
@@ -612,7 +611,7 @@ def register(subparsers) -> None:
     s.add_argument("--figure", help="with --refine: write a heat map (.png, .svg, .pdf)")
     s.add_argument("--differences", metavar="K",
                    help="the difference scheme of order K (M = m I): the matrix B with nabla^mu a = sum_nu b_mu,nu "
-                        "nabla^nu(z^m), checked exactly; and the norm test of C^(K-1) (C^0 for K = 1; C^l for M = 2I)")
+                        "nabla^nu(z^m), checked exactly; and the norm test of C^(K-1) (C^0 for K = 1, C^(K-1) for K >= 2)")
     s.add_argument("--list", action="store_true", help="list the surface catalogue (names, titles, sources)")
     s.add_argument("--json", action="store_true", help="print one JSON document")
     s.set_defaults(func=cmd_surface)
