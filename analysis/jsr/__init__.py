@@ -39,7 +39,9 @@ Algorithm (``method="auto"``)
    patterns, as in Mejstrik 2020) splits the family into diagonal blocks with
    ``JSR = max_b JSR(block_b)``; for rational families, exact common invariant subspaces that
    are not coordinate subspaces are found by Krylov spins (:mod:`analysis.jsr._subspace`) and
-   split off the same way; an exactly commuting family has ``JSR = max_i rho(A_i)``.
+   split off the same way; an exactly commuting family has ``JSR = max_i rho(A_i)``. An exact
+   cyclic conjugation symmetry ``G A_{c_j} G^{-1} = A_{c_{j+1}}``, ``G^k = I``, replaces the family
+   by ``B_d = A_{c_0} G^d`` (same JSR) when that splits it (:mod:`analysis.jsr._symmetry`).
 2. Lower bound: a Gripenberg-type branch and bound for spectrum-maximizing products
    (:func:`analysis.jsr._search.smp_search`); the best word ``w`` gives
    ``JSR >= rho(P_w)^(1/|w|)``, certified from isolated roots of the exact characteristic
@@ -52,6 +54,9 @@ Algorithm (``method="auto"``)
    (:mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
    spectrum, e.g. Daubechies D20+) is first replaced by the exactly similar family in which its
    sum-of-squares ellipsoid is a ball. Restarts when a vertex path reveals a better product.
+   A leading eigenvalue that rotates its plane by a rational angle (``rotation_order``) leaves
+   a finite orbit of ``Re u``: the real polytope then gets the share of a real one, with
+   smaller fillers (``theta = 1/8``).
    A polytope that is still *thin* (vertex matrix condition number above ``THIN_COND``) is
    decided on float rounding noise in its thin directions and never closes; it is then rebuilt
    for the exactly similar family ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex
@@ -265,6 +270,9 @@ def _solve_symmetric(F: Family, sym, BF: Family, **kw: Any) -> _Bounds:
         "cycle": list(cycle), "reduced_product": tuple(b.word),
         "G": [[_sympy_q(G[a, c]) for c in range(n)] for a in range(n)],
         "polytope_coordinates": "of the reduced family B_d = A_c0 G^d (d = 0..k-1)"}
+    if "vertices" in wit or "blocks" in wit:
+        wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the reduced "
+                                       "family B_d = A_c0 G^d")
     method = (f"cyclic conjugation symmetry G A_c(j) G^-1 = A_c(j+1) of order {len(cycle)} "
               "(JSR(A) = JSR(A_c0 G^d)); reduced family: " + b.method)
     return _Bounds(max(lower, b.lower), b.upper, word, rp, method, arithmetic_of(F), wit, b.notes)

@@ -29,7 +29,7 @@ Conjugation by the coordinate permutation ``(x, y) -> (y, x)`` swaps ``A_0`` and
 
 >>> from flint import fmpq_mat
 >>> A = [fmpq_mat([[2, 1], [0, 1]]), fmpq_mat([[1, 0], [1, 2]])]
->>> cycle, G = cyclic_symmetry(A)
+>>> cycle, G = cyclic_symmetry(A, min_n=2)      # (the engine searches from MIN_N = 8 on)
 >>> cycle, str(G)
 ([0, 1], '[0, 1]\\n[1, 0]')
 >>> B = reduced_family(A, cycle, G)
@@ -60,6 +60,9 @@ from ._subspace import _kernel
 MAX_K = 4
 #: nor matrices larger than this (the linear system for G has n^2 unknowns)
 MAX_N = 24
+#: nor smaller ones: their polytopes close at once, and the results established without the
+#: reduction are kept (the quincunx scheme's blocks of sizes 2 and 3 have such symmetries)
+MIN_N = 8
 
 
 def _float(M: fmpq_mat) -> np.ndarray:
@@ -109,17 +112,17 @@ def _rational_root(c: fmpq, k: int) -> fmpq | None:
     return None
 
 
-def cyclic_symmetry(mats: Sequence[fmpq_mat]) -> tuple[list[int], fmpq_mat] | None:
+def cyclic_symmetry(mats: Sequence[fmpq_mat], min_n: int = MIN_N) -> tuple[list[int], fmpq_mat] | None:
     """``(cycle, G)``: an ordering ``cycle = [0, c_1, ..., c_{k-1}]`` of the family and an exact rational
     ``G`` with ``G A_{c_j} = A_{c_{j+1}} G`` (indices mod ``k``) and ``G^k = I``, every identity checked
-    exactly; ``None`` when there is none (only the ``k``-cycles for ``2 <= k <= MAX_K`` and ``n <= MAX_N``
-    are tried; the solution space must be one-dimensional, and the scalar ``G^k`` must have a rational
-    ``k``-th root)."""
+    exactly; ``None`` when there is none (only the ``k``-cycles for ``2 <= k <= MAX_K`` and
+    ``min_n <= n <= MAX_N`` are tried; the solution space must be one-dimensional, and the scalar
+    ``G^k`` must have a rational ``k``-th root)."""
     k = len(mats)
     if not 2 <= k <= MAX_K:
         return None
     n = mats[0].nrows()
-    if not 1 <= n <= MAX_N:
+    if not min_n <= n <= MAX_N:
         return None
     cp = [A.charpoly() for A in mats]
     if any(c != cp[0] for c in cp):            # conjugate matrices have one characteristic polynomial
