@@ -268,8 +268,7 @@ def _solve_symmetric(F: Family, sym, BF: Family, **kw: Any) -> _Bounds:
     n = G.nrows()
     wit["cyclic_symmetry"] = {
         "cycle": list(cycle), "reduced_product": tuple(b.word),
-        "G": [[_sympy_q(G[a, c]) for c in range(n)] for a in range(n)],
-        "polytope_coordinates": "of the reduced family B_d = A_c0 G^d (d = 0..k-1)"}
+        "G": [[_sympy_q(G[a, c]) for c in range(n)] for a in range(n)]}
     if "vertices" in wit or "blocks" in wit:
         wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the reduced "
                                        "family B_d = A_c0 G^d")
@@ -364,9 +363,9 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
     balance: dict[str, Any] = {}
     while True:
         # a complex leading eigenvalue rotates the root: the real polytope closes exactly only
-        # for a rational rotation, so the exact attempt gets less time
+        # for a rational rotation (a finite orbit of Re u); for an irrational one the exact
+        # attempt gets less time
         real_lead = all(leading_is_real(mats, w) for _, w in cands)
-        # a rotation by a rational angle (a finite orbit of Re u) can close as well
         finite_orbit = real_lead or all(rotation_order(mats, w) is not None for _, w in cands)
         poly_work = work.share(0.5 if finite_orbit else 0.15)
         # values recomputed from the words alone, so that the scale (hence the certificate)

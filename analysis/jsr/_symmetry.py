@@ -99,17 +99,15 @@ def _solve_exact(mats: Sequence[fmpq_mat], cycle: Sequence[int]) -> fmpq_mat | N
 
 
 def _rational_root(c: fmpq, k: int) -> fmpq | None:
-    """The rational ``k``-th root of ``c`` (real; negative only for odd ``k``), or None."""
+    """The rational ``k``-th root of ``c`` (real; negative only for odd ``k``), or None (exact)."""
     if c == 0 or (c < 0 and k % 2 == 0):
         return None
     sgn = -1 if c < 0 else 1
-    p, q = abs(int(c.p)), int(c.q)
-    rp, rq = round(p ** (1.0 / k)), round(q ** (1.0 / k))
-    for x in (rp - 1, rp, rp + 1):
-        for y in (rq - 1, rq, rq + 1):
-            if x > 0 and y > 0 and x ** k == p and y ** k == q:
-                return fmpq(sgn * x, y)
-    return None
+    p, q = abs(c.p), c.q
+    x, y = p.root(k), q.root(k)                 # floor roots (FLINT fmpz)
+    if x ** k != p or y ** k != q:
+        return None
+    return fmpq(sgn * x, y)
 
 
 def cyclic_symmetry(mats: Sequence[fmpq_mat], min_n: int = MIN_N) -> tuple[list[int], fmpq_mat] | None:
