@@ -54,9 +54,8 @@ Algorithm (``method="auto"``)
    (:mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
    spectrum, e.g. Daubechies D20+) is first replaced by the exactly similar family in which its
    sum-of-squares ellipsoid is a ball. Restarts when a vertex path reveals a better product.
-   A leading eigenvalue that rotates its plane by a rational angle (``rotation_order``) leaves
-   a finite orbit of ``Re u``: the real polytope then gets the share of a real one, with
-   smaller fillers (``theta = 1/8``).
+   A leading plane rotated by a rational angle (``rotation_order``: a finite orbit of ``Re u``)
+   gets the share of a real leading eigenvalue, with smaller fillers (``theta = 1/8``).
    A polytope that is still *thin* (vertex matrix condition number above ``THIN_COND``) is
    decided on float rounding noise in its thin directions and never closes; it is then rebuilt
    for the exactly similar family ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex
@@ -110,7 +109,7 @@ from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family, strong_components
-from ._symmetry import a_word, cyclic_symmetry, reduced_family
+from ._symmetry import reduction_that_splits, solve_reduced
 from ._search import brute_force_bounds, canonical_word, smp_search
 from ._tree import tree_bounds
 from ._work import Work
@@ -178,14 +177,10 @@ def _solve(F: Family, *, method: str, max_length: int, work: Work, rel_gap: floa
                 return _solve_subspace(F, W, method=method, max_length=max_length,
                                        work=work, rel_gap=rel_gap,
                                        max_vertices=max_vertices)
-            sym = cyclic_symmetry(F.exact_q)
-            if sym is not None:
-                BF = _rational_family(reduced_family(F.exact_q, *sym))
-                # used when it splits (smaller diagonal blocks); otherwise the input is kept
-                if len(_blocks(BF)) > 1 or invariant_subspace(BF.exact_q) is not None:
-                    return _solve_symmetric(F, sym, BF, method=method, max_length=max_length,
-                                            work=work, rel_gap=rel_gap,
-                                            max_vertices=max_vertices)
+            red = reduction_that_splits(F, _blocks, _rational_family)
+            if red is not None:
+                return solve_reduced(F, *red, _solve, method=method, max_length=max_length,
+                                     work=work, rel_gap=rel_gap, max_vertices=max_vertices)
         if _commuting(F):
             parts = [_single(F, i) for i in range(k)]
             best = max(parts, key=lambda b: b.lower)
@@ -252,35 +247,6 @@ def _solve_subspace(F: Family, W: fmpq_mat, **kw: Any) -> _Bounds:
                                 "blocks": [{"block": b, "size": sz, "lower": bb.lower,
                                             "upper": bb.upper, "method": bb.method}
                                            for (b, bb), sz in zip(ps, sizes)]})
-
-
-def _solve_symmetric(F: Family, sym, BF: Family, **kw: Any) -> _Bounds:
-    """JSR(A) = JSR(B) for the family ``B_d = A_{c_0} G^d`` of an exact cyclic conjugation symmetry
-    ``G A_{c_j} G^{-1} = A_{c_{j+1}}``, ``G^k = I`` (:mod:`analysis.jsr._symmetry`); the witness word
-    is translated back (the ``A`` word of a power of the ``B`` word, with the same spectral radius)."""
-    cycle, G = sym
-    b = _solve(BF, **kw)
-    word = a_word(b.word, cycle)
-    lower, rp = _lower_from_word(F, word)
-    wit = dict(b.witness)
-    if "candidates" in wit:
-        wit["candidates"] = [a_word(w, cycle) for w in wit["candidates"]]
-    n = G.nrows()
-    wit["cyclic_symmetry"] = {
-        "cycle": list(cycle), "reduced_product": tuple(b.word),
-        "G": [[_sympy_q(G[a, c]) for c in range(n)] for a in range(n)]}
-    if "vertices" in wit or "blocks" in wit:
-        wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the reduced "
-                                       "family B_d = A_c0 G^d")
-    method = (f"cyclic conjugation symmetry G A_c(j) G^-1 = A_c(j+1) of order {len(cycle)} "
-              "(JSR(A) = JSR(A_c0 G^d)); reduced family: " + b.method)
-    return _Bounds(max(lower, b.lower), b.upper, word, rp, method, arithmetic_of(F), wit, b.notes)
-
-
-def _sympy_q(x):
-    import sympy as sp
-
-    return sp.Rational(int(x.p), int(x.q))
 
 
 def _certify_closed(F: Family, r: Fraction, st, cands, lower: Fraction, rel_gap: float):
@@ -373,8 +339,7 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
         cands = [(_rho_word(mats, w), w) for _, w in cands]
         rho_f = max(c[0] for c in cands)
         r = Fraction(rho_f)
-        # smaller fillers for a rotating leading plane (measured: the 13-dimensional block of the
-        # sqrt 3 scheme's reduced family closes with 178 vertices at theta = 1/8, 886 at 1/2)
+        # smaller fillers for a rotating leading plane (sqrt 3 scheme: 178 vertices, 886 at 1/2)
         theta = 0.5 if real_lead or not finite_orbit else 0.125
         roots, balance = _start_vertices(mats, rho_f, cands, theta=theta)
         # after the ellipsoid rounding an early polytope (few directions filled) is thin

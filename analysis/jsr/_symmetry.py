@@ -49,12 +49,15 @@ R. Jungers, *The joint spectral radius: theory and applications*, LNCIS 385, Spr
 from __future__ import annotations
 
 import itertools
-from typing import Sequence
+from typing import Any, Callable, Sequence
 
 import numpy as np
 from flint import fmpq, fmpq_mat
 
-from ._subspace import _kernel
+from ._bounds import _Bounds, _lower_from_word
+from ._exact import Family
+from ._norms import arithmetic_of
+from ._subspace import _kernel, invariant_subspace
 
 #: families of more matrices than this are not searched (the cycles tried grow as (k - 1)!)
 MAX_K = 4
@@ -172,3 +175,41 @@ def a_word(word: Sequence[int], cycle: Sequence[int]) -> tuple[int, ...]:
         out.append(cycle[s % k])
         s += d
     return tuple(out)
+
+
+def reduction_that_splits(F: Family, blocks: Callable, rational_family: Callable):
+    """``(cycle, G, B)`` for a rational family with a cyclic symmetry whose reduced family ``B`` splits
+    (``blocks(B)`` finds coordinate blocks, or an exact invariant subspace exists), else None: the
+    reduction is used only when it gives smaller diagonal blocks."""
+    sym = cyclic_symmetry(F.exact_q)
+    if sym is None:
+        return None
+    B = rational_family(reduced_family(F.exact_q, *sym))
+    if len(blocks(B)) > 1 or invariant_subspace(B.exact_q) is not None:
+        return (*sym, B)
+    return None
+
+
+def solve_reduced(F: Family, cycle: list[int], G: fmpq_mat, B: Family, solve: Callable,
+                  **kw: Any) -> _Bounds:
+    """``JSR(A) = JSR(B)`` (module docstring): the bounds ``solve(B, **kw)`` found for the reduced family,
+    with the witness word translated back (the ``A`` word of a power of the ``B`` word, the same spectral
+    radius) and ``witness["cyclic_symmetry"]`` (the ordering, ``G`` and the reduced product)."""
+    import sympy as sp
+
+    b = solve(B, **kw)
+    word = a_word(b.word, cycle)
+    lower, rp = _lower_from_word(F, word)
+    wit = dict(b.witness)
+    if "candidates" in wit:
+        wit["candidates"] = [a_word(w, cycle) for w in wit["candidates"]]
+    n = G.nrows()
+    wit["cyclic_symmetry"] = {"cycle": list(cycle), "reduced_product": tuple(b.word),
+                              "G": [[sp.Rational(int(G[a, c].p), int(G[a, c].q)) for c in range(n)]
+                                    for a in range(n)]}
+    if "vertices" in wit or "blocks" in wit:
+        wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the reduced "
+                                       "family B_d = A_c0 G^d")
+    method = (f"cyclic conjugation symmetry G A_c(j) G^-1 = A_c(j+1) of order {len(cycle)} "
+              "(JSR(A) = JSR(A_c0 G^d)); reduced family: " + b.method)
+    return _Bounds(max(lower, b.lower), b.upper, word, rp, method, arithmetic_of(F), wit, b.notes)
