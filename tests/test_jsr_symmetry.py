@@ -48,8 +48,9 @@ def test_the_symmetry_is_found_and_checked_exactly():
     # the A word of B_1 is that of B_1^3 = T_0 T_1 T_2; B_1 B_2 = T_0 T_1 G^3
     assert a_word((1,), cycle) == (0, 1, 2) and a_word((1, 2), cycle) == (0, 1)
     # the engine searches only from MIN_N dimensions on
-    small = [fmpq_mat([[2, 1], [0, 1]]), fmpq_mat([[1, 0], [1, 2]])]       # swapped by (x, y) -> (y, x)
-    assert MIN_N > 2 and cyclic_symmetry(small) is None and cyclic_symmetry(small, min_n=2) is not None
+    small = [fmpq_mat([[2, 1], [0, 1]]), fmpq_mat([[1, 0], [1, 2]])]   # swapped by (x, y) -> (y, x)
+    assert MIN_N > 2 and cyclic_symmetry(small) is None
+    assert cyclic_symmetry(small, min_n=2) is not None
 
 
 def test_the_reduced_family_gives_the_jsr():
@@ -58,7 +59,8 @@ def test_the_reduced_family_gives_the_jsr():
     assert r.provenance["method"].startswith("cyclic conjugation symmetry")
     sym = r.witness["cyclic_symmetry"]
     assert sym["cycle"] == [0, 1, 2] and sym["reduced_product"] == (1,)
-    assert r.witness["product"] == (0, 1, 2) and "reduced family" in r.witness["polytope_coordinates"]
+    assert r.witness["product"] == (0, 1, 2)
+    assert "reduced family" in r.witness["polytope_coordinates"]
     # the witness word is a product of the input matrices with the certified spectral radius
     P = np.eye(9)
     for i in r.witness["product"]:
@@ -71,7 +73,7 @@ def test_the_reduced_family_gives_the_jsr():
 
 def test_no_symmetry_when_the_spectra_differ_or_the_reduced_family_does_not_split():
     A = [fmpq_mat([[1, 1], [0, 1]]), fmpq_mat([[1, 0], [1, 2]])]
-    assert cyclic_symmetry(A, min_n=2) is None                  # different characteristic polynomials
+    assert cyclic_symmetry(A, min_n=2) is None              # different characteristic polynomials
     # T_1 = J T_0 J (a symmetric mask): a symmetry, but {T_0, T_0 J} does not split: not used
     n = 8
     T0, J = fmpq_mat(n, n), fmpq_mat(n, n)

@@ -113,7 +113,8 @@ def _rational_root(c: fmpq, k: int) -> fmpq | None:
     return fmpq(sgn * x, y)
 
 
-def cyclic_symmetry(mats: Sequence[fmpq_mat], min_n: int = MIN_N) -> tuple[list[int], fmpq_mat] | None:
+def cyclic_symmetry(mats: Sequence[fmpq_mat],
+                    min_n: int = MIN_N) -> tuple[list[int], fmpq_mat] | None:
     """``(cycle, G)``: an ordering ``cycle = [0, c_1, ..., c_{k-1}]`` of the family and an exact rational
     ``G`` with ``G A_{c_j} = A_{c_{j+1}} G`` (indices mod ``k``) and ``G^k = I``, every identity checked
     exactly; ``None`` when there is none (only the ``k``-cycles for ``2 <= k <= MAX_K`` and
@@ -126,7 +127,7 @@ def cyclic_symmetry(mats: Sequence[fmpq_mat], min_n: int = MIN_N) -> tuple[list[
     if not min_n <= n <= MAX_N:
         return None
     cp = [A.charpoly() for A in mats]
-    if any(c != cp[0] for c in cp):            # conjugate matrices have one characteristic polynomial
+    if any(c != cp[0] for c in cp):       # conjugate matrices have one characteristic polynomial
         return None
     if all(A == mats[0] for A in mats):
         return None
@@ -208,8 +209,8 @@ def solve_reduced(F: Family, cycle: list[int], G: fmpq_mat, B: Family, solve: Ca
                               "G": [[sp.Rational(int(G[a, c].p), int(G[a, c].q)) for c in range(n)]
                                     for a in range(n)]}
     if "vertices" in wit or "blocks" in wit:
-        wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the reduced "
-                                       "family B_d = A_c0 G^d")
+        wit["polytope_coordinates"] = ("the polytope, its vertices and blocks are those of the "
+                                       "reduced family B_d = A_c0 G^d")
     method = (f"cyclic conjugation symmetry G A_c(j) G^-1 = A_c(j+1) of order {len(cycle)} "
               "(JSR(A) = JSR(A_c0 G^d)); reduced family: " + b.method)
     return _Bounds(max(lower, b.lower), b.upper, word, rp, method, arithmetic_of(F), wit, b.notes)
