@@ -229,6 +229,20 @@ def test_quincunx_alpha_enclosed_with_exact_upper_end():
     assert ck[1] is True and ck[2] is False
 
 
+def test_sqrt3_alpha_is_two_plus_log3_of_2():
+    """T_012 has the leading eigenvalues +-i/sqrt(5832) (JSR >= 5832^(-1/6), alpha <= 2 + log_3 2); the upper
+    bound comes from the reduced family B_d = T_0 G^d of the exact cyclic symmetry G T_j G^-1 = T_(j+1)."""
+    h = holder_exponent(get("sqrt3").mask())
+    assert h.status == CERTIFIED and h.value is None
+    exact = 2 + sp.log(2) / sp.log(3)
+    assert h.lower <= exact <= h.upper and h.upper - h.lower < sp.Rational(1, 10 ** 12)
+    r = h.witness["jsr"]
+    assert r.witness["product"] == (0, 1, 2) and r.witness["cyclic_symmetry"]["reduced_product"] == (1,)
+    assert r.witness["rho_product"]["lower"] ** 2 <= sp.Rational(1, 5832) <= r.witness["rho_product"]["upper"] ** 2
+    ck = smoothness_verdicts(h)
+    assert ck[2] is True and ck[3] is False
+
+
 def test_box_spline_alpha_is_m_xi_minus_one_on_a_scaled_courant_family():
     # three-direction box spline B_211: m(Xi) = 2 -> alpha = 1 (C^0, not C^1)
     h = holder_exponent(box_spline_mask([(1, 0), (1, 0), (0, 1), (1, 1)]))

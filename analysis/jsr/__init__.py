@@ -39,7 +39,9 @@ Algorithm (``method="auto"``)
    patterns, as in Mejstrik 2020) splits the family into diagonal blocks with
    ``JSR = max_b JSR(block_b)``; for rational families, exact common invariant subspaces that
    are not coordinate subspaces are found by Krylov spins (:mod:`analysis.jsr._subspace`) and
-   split off the same way; an exactly commuting family has ``JSR = max_i rho(A_i)``.
+   split off the same way; an exactly commuting family has ``JSR = max_i rho(A_i)``. An exact
+   cyclic conjugation symmetry ``G A_{c_j} G^{-1} = A_{c_{j+1}}``, ``G^k = I``, replaces the family
+   by ``B_d = A_{c_0} G^d`` (same JSR) when that splits it (:mod:`analysis.jsr._symmetry`).
 2. Lower bound: a Gripenberg-type branch and bound for spectrum-maximizing products
    (:func:`analysis.jsr._search.smp_search`); the best word ``w`` gives
    ``JSR >= rho(P_w)^(1/|w|)``, certified from isolated roots of the exact characteristic
@@ -52,6 +54,8 @@ Algorithm (``method="auto"``)
    (:mod:`analysis.jsr._balance`). A badly scaled family (fast-decaying
    spectrum, e.g. Daubechies D20+) is first replaced by the exactly similar family in which its
    sum-of-squares ellipsoid is a ball. Restarts when a vertex path reveals a better product.
+   A leading plane rotated by a rational angle (``rotation_order``: a finite orbit of ``Re u``)
+   gets the share of a real leading eigenvalue, with smaller fillers (``theta = 1/8``).
    A polytope that is still *thin* (vertex matrix condition number above ``THIN_COND``) is
    decided on float rounding noise in its thin directions and never closes; it is then rebuilt
    for the exactly similar family ``S^{-1} A_i S`` (``S`` dyadic, from the SVD of the vertex
@@ -100,11 +104,12 @@ from ._bounds import _Bounds, _lower_from_word, _rho_word
 from ._norms import _solve_norms, arithmetic_of, rigorous_norm_upper
 from ._exact import Family, exact_rho_expression, parse_family, rho_enclosure, round_down, round_up
 from ._hp import certify_polytope_hp
-from ._polytope import build_polytope, certify_polytope, leading_is_real
+from ._polytope import build_polytope, certify_polytope, leading_is_real, rotation_order
 from ._balance import balanced_roots, interior_fillers
 from ._complex import build_complex_polytope, certify_complex_polytope
 from ._precondition import ellipsoid_transform, rounding_transform, transform_family
 from ._subspace import invariant_subspace, split_family, strong_components
+from ._symmetry import reduction_that_splits, solve_reduced
 from ._search import brute_force_bounds, canonical_word, smp_search
 from ._tree import tree_bounds
 from ._work import Work
@@ -172,6 +177,10 @@ def _solve(F: Family, *, method: str, max_length: int, work: Work, rel_gap: floa
                 return _solve_subspace(F, W, method=method, max_length=max_length,
                                        work=work, rel_gap=rel_gap,
                                        max_vertices=max_vertices)
+            red = reduction_that_splits(F, _blocks, _rational_family)
+            if red is not None:
+                return solve_reduced(F, *red, _solve, method=method, max_length=max_length,
+                                     work=work, rel_gap=rel_gap, max_vertices=max_vertices)
         if _commuting(F):
             parts = [_single(F, i) for i in range(k)]
             best = max(parts, key=lambda b: b.lower)
@@ -320,15 +329,19 @@ def _solve_polytope(F: Family, *, max_length: int, work: Work, rel_gap: float,
     balance: dict[str, Any] = {}
     while True:
         # a complex leading eigenvalue rotates the root: the real polytope closes exactly only
-        # for a rational rotation, so the exact attempt gets less time
+        # for a rational rotation (a finite orbit of Re u); for an irrational one the exact
+        # attempt gets less time
         real_lead = all(leading_is_real(mats, w) for _, w in cands)
-        poly_work = work.share(0.5 if real_lead else 0.15)
+        finite_orbit = real_lead or all(rotation_order(mats, w) is not None for _, w in cands)
+        poly_work = work.share(0.5 if finite_orbit else 0.15)
         # values recomputed from the words alone, so that the scale (hence the certificate)
         # does not depend on how a candidate was found
         cands = [(_rho_word(mats, w), w) for _, w in cands]
         rho_f = max(c[0] for c in cands)
         r = Fraction(rho_f)
-        roots, balance = _start_vertices(mats, rho_f, cands)
+        # smaller fillers for a rotating leading plane (sqrt 3 scheme: 178 vertices, 886 at 1/2)
+        theta = 0.5 if real_lead or not finite_orbit else 0.125
+        roots, balance = _start_vertices(mats, rho_f, cands, theta=theta)
         # after the ellipsoid rounding an early polytope (few directions filled) is thin
         # legitimately: no early stop then
         st = build_polytope(mats, rho_f, roots, work=poly_work,

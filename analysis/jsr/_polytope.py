@@ -286,6 +286,31 @@ def leading_is_real(mats: Sequence[np.ndarray], word: Sequence[int], rel: float 
     return bool(np.all(np.abs(w[np.abs(w) >= top * (1 - rel)].imag) <= 1e-9 * max(top, 1e-300)))
 
 
+def rotation_order(mats: Sequence[np.ndarray], word: Sequence[int], max_order: int = 12,
+                   rel: float = 1e-8) -> int | None:
+    """The least ``q <= max_order`` with ``(lambda / |lambda|)^q = 1`` for every eigenvalue of maximal
+    modulus of ``P_w`` (float test), or None. ``q = 1``: a positive leading eigenvalue; ``q > 2``: ``P_w``
+    rotates its leading plane by a rational angle, so the orbit of ``Re u`` is finite and the real
+    polytope can close exactly (an irrational angle needs the complex polytope).
+
+    >>> import numpy as np
+    >>> rotation_order([np.array([[0.0, -1.0], [1.0, 0.0]])], (0,))
+    4
+    """
+    P = np.eye(mats[0].shape[0])
+    for i in word:
+        P = P @ mats[i]
+    w = np.linalg.eigvals(P)
+    top = float(np.max(np.abs(w)))
+    if top <= 0:
+        return None
+    z = w[np.abs(w) >= top * (1 - rel)] / top
+    for q in range(1, max_order + 1):
+        if np.all(np.abs(z ** q - 1) <= 1e-7 * q):
+            return q
+    return None
+
+
 def _charge(work: Work, st) -> None:
     """Charge ``work`` the whole units of ``st.work_units`` not charged yet (the fractional rest
     is carried to the next test, so the total charged does not depend on how tests group)."""
