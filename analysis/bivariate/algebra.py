@@ -38,7 +38,7 @@ from typing import Any
 
 import sympy as sp
 
-from ..result import CERTIFIED, Result
+from ..result import CERTIFIED, AnalysisError, Result
 from .mask import Z1, Z2, BivariateMask
 
 __all__ = ["sum_rules", "coset_moments", "reproduction", "symmetry_group", "box_factors", "DIRECTIONS",
@@ -63,6 +63,12 @@ def _cosets(a: BivariateMask) -> dict[tuple, list]:
     return out
 
 
+def _zero(x: sp.Expr) -> bool:
+    """Exactly zero: ``cancel`` brings a rational function of the parameters to its normal form (``expand`` alone
+    does not see ``2w/(1+2w) + 1/(1+2w) - 1 = 0``)."""
+    return sp.cancel(x) == 0
+
+
 def coset_moments(a: BivariateMask, mu: tuple[int, int]) -> dict[tuple[int, int], sp.Expr]:
     """``{eps: sum_{alpha = eps mod M} a(alpha) alpha^mu}`` for every digit ``eps``."""
     return {e: sp.expand(sum((v * i ** mu[0] * j ** mu[1] for (i, j), v in lst), sp.Integer(0)))
@@ -73,7 +79,7 @@ def sum_rules(a: BivariateMask, max_order: int = MAX_ORDER) -> Result:
     """The order ``k`` of the sum rules (generic in the parameters), with the first failing moment as witness.
 
     ``witness["generation_degree"] = k - 1``; for a one-parameter mask, ``witness["exceptional"]`` lists the
-    parameter values (exact) where the order is higher, with that order.
+    rational parameter values where the order is higher, with that order (irrational ones are not searched).
 
     >>> from analysis.bivariate.mask import BivariateMask
     >>> sum_rules(BivariateMask.from_list("0,0:1; 1,0:1; 0,1:1; 1,1:1")).value        # Haar on 2I
@@ -86,7 +92,7 @@ def sum_rules(a: BivariateMask, max_order: int = MAX_ORDER) -> Result:
     wit: dict[str, Any] = {"generation_degree": k - 1, "failing": fail, "dual_points": a.dilation.dual_points}
     ps = a.params
     if len(ps) == 1 and fail is not None and k < max_order:
-        wit["exceptional"] = _exceptional(a, ps[0], fail, max_order)
+        wit["exceptional"] = _exceptional(a, ps[0], fail, max_order, k)
     return Result(value=k, status=CERTIFIED, witness=wit,
                   provenance={"method": "equal coset moments of order < k (exact)", "max_order": max_order})
 
@@ -98,27 +104,36 @@ def _order(a: BivariateMask, max_order: int) -> tuple[int, dict | None]:
             mom = coset_moments(a, mu)
             vals = list(mom.values())
             target = vals[0] if d > 0 else sp.Integer(1)
-            diffs = [sp.expand(v - target) for v in vals]
-            if any(x != 0 for x in diffs):
+            if not all(_zero(v - target) for v in vals):
                 return k, {"moment": mu, "coset_moments": mom}
         k = d + 1
     return k, None
 
 
-def _exceptional(a: BivariateMask, p: sp.Symbol, fail: dict, max_order: int) -> list[dict]:
+def _exceptional(a: BivariateMask, p: sp.Symbol, fail: dict, max_order: int, generic: int) -> list[dict]:
     vals = list(fail["coset_moments"].values())
     target = vals[0] if fail["moment"] != (0, 0) else sp.Integer(1)
-    eqs = [sp.expand(v - target) for v in vals if sp.expand(v - target) != 0]
+    # numerators: the coefficients may be rational functions of the parameter (w/(1+2w))
+    eqs = [sp.fraction(sp.cancel(v - target))[0] for v in vals]
+    eqs = [sp.expand(e) for e in eqs if sp.expand(e) != 0]
     g = eqs[0]
     for e in eqs[1:]:
         g = sp.gcd(g, e)
     out = []
     if g.free_symbols == {p}:
-        for r in sp.Poly(g, p).real_roots() if sp.Poly(g, p).degree() <= 6 else []:
-            if not r.is_Rational:
+        # a value where the order is higher equalises this moment: a rational root of g (its linear factors
+        # over Q, any degree); kept only where the order there is really higher (other moments of the same
+        # degree may still differ)
+        roots = sorted({-f.all_coeffs()[1] / f.all_coeffs()[0] for f, _ in sp.Poly(g, p).factor_list()[1]
+                        if f.degree() == 1})
+        for r in roots:
+            try:
+                at = a.at({p.name: r})
+            except (AnalysisError, ZeroDivisionError):          # a pole of a coefficient: no mask there
                 continue
-            k, _ = _order(a.at({p.name: r}), max_order)
-            out.append({"value": r, "order": k})
+            k, _ = _order(at, max_order)
+            if k > generic:
+                out.append({"value": r, "order": k})
     return out
 
 
@@ -149,7 +164,7 @@ def reproduction(a: BivariateMask, max_degree: int = MAX_ORDER - 1) -> Result:
             for e, lst in cos.items():
                 got = sp.expand(sum((v * (x1 - pts[ij][0]) ** mu[0] * (x2 - pts[ij][1]) ** mu[1]
                                      for ij, v in lst), sp.Integer(0)))
-                if sp.expand(got - want) != 0:
+                if not _zero(got - want):
                     ok = False
                     break
             if not ok:
@@ -161,57 +176,84 @@ def reproduction(a: BivariateMask, max_degree: int = MAX_ORDER - 1) -> Result:
                   provenance={"method": "S_a p versus p(M^-1 . + tau), exact"})
 
 
-def _lattice_symmetries():
-    """The integer matrices of determinant +-1 with entries in {-1, 0, 1} and finite order."""
-    out = []
-    import itertools
+def _hull(points: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """The vertices of the convex hull in counter-clockwise order (Andrew's monotone chain, exact integers)."""
+    pts = sorted(set(points))
+    if len(pts) <= 2:
+        return pts
 
-    for a, b, c, d in itertools.product((-1, 0, 1), repeat=4):
-        if abs(a * d - b * c) != 1:
-            continue
-        R = sp.Matrix([[a, b], [c, d]])
-        P, ok = R, False
-        for _ in range(12):
-            if P == sp.eye(2):
-                ok = True
-                break
-            P = P * R
-        if ok:
-            out.append(((a, b), (c, d)))
-    return out
+    def cross(o, p, q):
+        return (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0])
+
+    lower: list = []
+    upper: list = []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
 
 
 def symmetry_group(a: BivariateMask) -> Result:
-    """The lattice symmetries ``R`` (finite order, ``R M = M R``) with ``a(R alpha + t) = a(alpha)`` for an
-    integer shift ``t``: ``value`` is the order of the group, ``witness["matrices"]`` its elements.
+    """The lattice symmetries of the mask: the integer matrices ``R`` (``det R = +-1``, ``R M = M R``) with
+    ``a(R alpha + t) = a(alpha)`` for all ``alpha`` and an integer shift ``t``. ``value`` is the order of the
+    group, ``witness["matrices"]`` its elements; ``value`` is ``None`` when the support of the mask lies on a
+    line (or is one point): such a mask is fixed by infinitely many integer matrices (shears along the line).
 
     8 is the symmetry group of the square (quad grids), 12 that of the hexagonal lattice in the
     three-direction coordinates (:mod:`analysis.bivariate`).
 
+    Algorithm: each such map ``alpha -> R alpha + t`` permutes the support, hence the vertices of its convex hull,
+    keeping their cyclic order or reversing it; it is fixed by the images of three consecutive vertices. So the
+    ``2h`` maps sending ``(v_0, v_1, v_2)`` to ``(v_k, v_{k+-1}, v_{k+-2})`` (``h`` hull vertices) are the only
+    candidates, each checked exactly (an integer ``R`` with ``det R = +-1`` commuting with ``M``, and the mask
+    fixed coefficient by coefficient): the group found is complete, with no bound on the entries of ``R``.
+
     >>> from analysis.bivariate.mask import BivariateMask
     >>> symmetry_group(BivariateMask.from_symbol("(1+z1)**2*(1+z2)**2/(4*z1*z2)")).value
     8
+    >>> r = symmetry_group(BivariateMask.from_symbol("(1+z1)**2/2"))        # a univariate mask: a line
+    >>> r.value, r.witness["degenerate"]
+    (None, 'the support of the mask lies on a line: infinitely many integer matrices fix it')
     """
     M = a.dilation.matrix
-    supp = list(a.coeffs)
-    n = len(supp)
-    sx, sy = sum(i for i, _ in supp), sum(j for _, j in supp)
+    supp = [ij for ij, v in a]
+    hull = _hull(supp)
+    if len(hull) < 3:
+        return Result(value=None, status=CERTIFIED,
+                      witness={"matrices": (), "degenerate": "the support of the mask lies on a line: infinitely "
+                                                            "many integer matrices fix it"},
+                      provenance={"method": "convex hull of the support (exact integers)"})
+    h = len(hull)
+    v0, v1, v2 = hull[0], hull[1], hull[2]
+    V = ((v1[0] - v0[0], v2[0] - v0[0]), (v1[1] - v0[1], v2[1] - v0[1]))        # columns v1 - v0, v2 - v0
+    detV = V[0][0] * V[1][1] - V[0][1] * V[1][0]                                   # != 0: a strict hull
     group = []
-    for R in _lattice_symmetries():
-        (p, q), (r, s) = R
-        RM = ((p * M[0][0] + q * M[1][0], p * M[0][1] + q * M[1][1]),
-              (r * M[0][0] + s * M[1][0], r * M[0][1] + s * M[1][1]))
-        MR = ((M[0][0] * p + M[0][1] * r, M[0][0] * q + M[0][1] * s),
-              (M[1][0] * p + M[1][1] * r, M[1][0] * q + M[1][1] * s))
-        if RM != MR:
-            continue
-        tx = Fraction(sx - (p * sx + q * sy), n)
-        ty = Fraction(sy - (r * sx + s * sy), n)
-        if tx.denominator != 1 or ty.denominator != 1:
-            continue
-        t = (int(tx), int(ty))
-        if all(sp.expand(a[(p * i + q * j + t[0], r * i + s * j + t[1])] - v) == 0 for (i, j), v in a):
-            group.append(R)
+    for k in range(h):
+        for sgn in (1, -1):
+            w0, w1, w2 = hull[k], hull[(k + sgn) % h], hull[(k + 2 * sgn) % h]
+            W = ((w1[0] - w0[0], w2[0] - w0[0]), (w1[1] - w0[1], w2[1] - w0[1]))
+            # R = W V^-1, exact; integer entries needed
+            num = ((W[0][0] * V[1][1] - W[0][1] * V[1][0], -W[0][0] * V[0][1] + W[0][1] * V[0][0]),
+                   (W[1][0] * V[1][1] - W[1][1] * V[1][0], -W[1][0] * V[0][1] + W[1][1] * V[0][0]))
+            if any(x % detV for r in num for x in r):
+                continue
+            (p, q), (r, s_) = R = tuple(tuple(x // detV for x in row) for row in num)
+            if abs(p * s_ - q * r) != 1:
+                continue
+            RM = ((p * M[0][0] + q * M[1][0], p * M[0][1] + q * M[1][1]),
+                  (r * M[0][0] + s_ * M[1][0], r * M[0][1] + s_ * M[1][1]))
+            MR = ((M[0][0] * p + M[0][1] * r, M[0][0] * q + M[0][1] * s_),
+                  (M[1][0] * p + M[1][1] * r, M[1][0] * q + M[1][1] * s_))
+            if RM != MR:
+                continue
+            t = (w0[0] - (p * v0[0] + q * v0[1]), w0[1] - (r * v0[0] + s_ * v0[1]))
+            if all(_zero(a[(p * i + q * j + t[0], r * i + s_ * j + t[1])] - v) for (i, j), v in a):
+                group.append(R)
     return Result(value=len(group), status=CERTIFIED, witness={"matrices": tuple(group)},
                   provenance={"method": "exact comparison of a(R alpha + t) with a(alpha)"})
 
@@ -233,7 +275,7 @@ def box_factors(a: BivariateMask, directions=DIRECTIONS) -> Result:
         n = 0
         while n < 2 * 40:
             q, r = sp.div(quotient, f, *gens)
-            if sp.expand(r) != 0:
+            if not _zero(r):
                 break
             quotient = sp.expand(q)
             n += 1

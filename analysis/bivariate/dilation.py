@@ -34,6 +34,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from fractions import Fraction
+from numbers import Integral
 from typing import Sequence
 
 from ..result import AnalysisError
@@ -64,13 +65,17 @@ class Dilation:
     matrix: tuple[tuple[int, int], tuple[int, int]]
 
     def __init__(self, matrix: Sequence[Sequence[int]]):
+        # integers only: int(2.5) would silently be 2 (a float, a Fraction or a string is refused, never rounded)
         try:
-            rows = tuple(tuple(int(x) for x in r) for r in matrix)
-        except (TypeError, ValueError):
-            raise AnalysisError("a dilation matrix is 2 x 2 integers, e.g. [[1,1],[1,-1]]") from None
-        if len(rows) != 2 or any(len(r) != 2 for r in rows) or any(
-                isinstance(x, bool) for r in matrix for x in r):
-            raise AnalysisError("a dilation matrix is 2 x 2 integers, e.g. [[1,1],[1,-1]]")
+            ok = all(type(x) is int or (isinstance(x, Integral) and not isinstance(x, bool))
+                     for r in matrix for x in r)
+            rows = tuple(tuple(int(x) for x in r) for r in matrix) if ok else None
+        except TypeError:
+            rows = None
+        if rows is None or len(rows) != 2 or any(len(r) != 2 for r in rows):
+            given = repr(matrix)
+            raise AnalysisError("a dilation matrix is 2 x 2 integers, e.g. [[1,1],[1,-1]]"
+                                + (f", not {given}" if len(given) <= 60 else ""))
         if any(abs(x) > MAX_ENTRY for r in rows for x in r):
             raise AnalysisError(f"dilation entries are limited to |m_ij| <= {MAX_ENTRY}")
         object.__setattr__(self, "matrix", rows)

@@ -82,14 +82,25 @@ class BivariateMask:
             expr = text
         else:
             raise AnalysisError("a symbol is a formula in z1, z2, e.g. (1+z1)**2*(1+z2)**2/(4*z1*z2)")
+        not_laurent = ("the symbol must be a Laurent polynomial in z1, z2 (integer powers, a monomial denominator; "
+                       "the parameters may appear anywhere in the coefficients), e.g. (1+z1)**2*(1+z2)**2/(4*z1*z2)")
         num, den = sp.fraction(sp.together(expr))
-        dp = sp.Poly(den, Z1, Z2)
-        if len(dp.terms()) != 1:
-            raise AnalysisError("the symbol must be a Laurent polynomial in z1, z2 (its denominator a monomial)")
-        (p, q), c = dp.terms()[0]
+        c, mono = den.as_independent(Z1, Z2, as_Add=False)     # den = c(params) * z1^p z2^q, or not Laurent
+        powers = mono.as_powers_dict()
+        if set(powers) - {Z1, Z2, sp.Integer(1)} or not all(
+                getattr(e, "is_Integer", False) and e >= 0 for b, e in powers.items() if b != 1):
+            raise AnalysisError(not_laurent)
+        p, q = int(powers.get(Z1, 0)), int(powers.get(Z2, 0))
+        try:
+            terms = sp.Poly(sp.expand(num), Z1, Z2).terms()
+        except sp.PolynomialError:
+            raise AnalysisError(not_laurent) from None
         coeffs = {}
-        for (i, j), v in sp.Poly(sp.expand(num), Z1, Z2).terms():
-            coeffs[(i - p, j - q)] = v / c
+        for (i, j), v in terms:
+            v = sp.cancel(v / c)
+            if v.has(Z1, Z2):
+                raise AnalysisError(not_laurent)
+            coeffs[(i - p, j - q)] = v
         return cls(coeffs, _dilation(dilation), name)
 
     @classmethod
@@ -154,7 +165,15 @@ class BivariateMask:
                                     (f"; its parameters: {', '.join(names)}" if names else ""))
             subs[names[k]] = (read_expression(v, free=False, what=f"value of {k}") if isinstance(v, str)
                               else as_expr(v, what=f"value of {k}"))
-        return BivariateMask({ij: v.subs(subs) for ij, v in self.coeffs.items()}, self.dilation, self.name)
+        coeffs = {}
+        for ij, v in self.coeffs.items():
+            num, den = sp.fraction(sp.cancel(v))
+            if den.subs(subs) == 0:
+                raise AnalysisError("the coefficient " + f"{ij[0]},{ij[1]} has a pole at "
+                                    + ", ".join(f"{k} = {sp.sstr(x)}" for k, x in subs.items())
+                                    + ": the mask is not defined there; give another value")
+            coeffs[ij] = v.subs(subs)
+        return BivariateMask(coeffs, self.dilation, self.name)
 
     def grid(self) -> list[list[sp.Expr]]:
         """The coefficients as rows ``j = max .. min`` (top to bottom) of columns ``i = min .. max``."""

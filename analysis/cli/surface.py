@@ -199,9 +199,12 @@ def _alpha_text(h) -> str:
 
     if h.value is not None:
         return f"alpha = {sp.sstr(h.value)} exactly ({h.status})"
-    lo = "?" if h.lower is None else f"{float(h.lower):.15g}"
+    from ..jsonable import fmt_bound
+
+    # decimals rounded outward (15 significant digits), so the printed interval encloses alpha
+    lo = "?" if h.lower is None else fmt_bound(h.lower, "lower", 15, "g")
     hi = "?" if h.upper is None else (sp.sstr(h.upper) if h.witness.get("alpha_upper_exact")
-                                      else f"{float(h.upper):.15g}")
+                                      else fmt_bound(h.upper, "upper", 15, "g"))
     note = "; the upper end is exact" if h.witness.get("alpha_upper_exact") else ""
     jsr = h.witness.get("jsr")
     if h.status == "inconclusive" and jsr is not None and jsr.status == "inconclusive":
@@ -494,6 +497,7 @@ def cmd_surface(args) -> None:
 
     from ..bivariate.algebra import box_factors, reproduction, sum_rules, symmetry_group
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
+    from ..jsonable import fmt_bound
 
     budget = work_arg(args.budget, "--budget")
     general, a, label, vals = _mask_from_args(args)
@@ -511,7 +515,8 @@ def cmd_surface(args) -> None:
             "sum_rules": sr.value, "generation_degree": sr.value - 1,
             "reproduction_degree": rep.value,
             "reproduction_shift": None if rep.witness["tau"] is None else [sp.sstr(t) for t in rep.witness["tau"]],
-            "symmetry_order": sym.value, "box_factors": {f"{x},{y}": n for (x, y), n in box.value.items()}}
+            "symmetry_order": sym.value, **({"symmetry_infinite": sym.witness["degenerate"]} if sym.value is None else {}),
+            "box_factors": {f"{x},{y}": n for (x, y), n in box.value.items()}}
     if general.params:
         data["sum_rules_generic"] = sr_general.value
         data["sum_rules_exceptional"] = [{"value": sp.sstr(e["value"]), "order": e["order"]}
@@ -528,7 +533,8 @@ def cmd_surface(args) -> None:
         lines.append(f"reproduction: degree {rep.value}, shift tau = ({', '.join(data['reproduction_shift'])})")
     else:
         lines.append("reproduction: none")
-    lines.append(f"symmetry group: order {sym.value}")
+    lines.append(f"symmetry group: order {sym.value}" if sym.value is not None else
+                 f"symmetry group: infinite ({sym.witness['degenerate'].replace(': infinitely', ', and infinitely')})")
     lines.append("box-spline factors (1+z^xi): " +
                  (", ".join(f"xi=({x},{y})^{n}" for (x, y), n in box.value.items()) or "none"))
     if sr.value == 0:
@@ -556,8 +562,10 @@ def cmd_surface(args) -> None:
         jl = f"JSR(T|V_{kk}) = {sp.sstr(h.witness['jsr_value'])} ({j.status})"
     else:
         w = "".join(map(str, j.witness.get("product") or ()))
-        lo_j = sp.sstr(j.lower) if sp.Rational(j.lower).q < 10 ** 6 else f"{float(j.lower):.15g}"
-        jl = f"JSR(T|V_{kk}) >= {lo_j} (rho(T_{w})^(1/{len(w)}), exact)"
+        exact = sp.Rational(j.lower).q < 10 ** 6
+        lo_j = sp.sstr(j.lower) if exact else fmt_bound(j.lower, "lower", 15, "g")
+        jl = (f"JSR(T|V_{kk}) >= {lo_j} (rho(T_{w})^(1/{len(w)})"
+              + (", exact)" if exact else ", rounded down)"))
         if j.upper is not None:
             jl += f", <= lower + {float(sp.Rational(j.upper) - sp.Rational(j.lower)):.2g} ({j.status})"
     lines.append(jl)

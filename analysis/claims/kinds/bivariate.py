@@ -22,6 +22,9 @@ from .base import evidence, interval_text
 #: grid cells and work budget of a bivariate ``ck range`` claim
 CK_GRID = 2
 CK_BUDGET = 400_000
+#: the tensor-product route's grid and per-verdict budget (the defaults of subdiv surface --C --within)
+TENSOR_GRID = 8
+TENSOR_BUDGET = 20_000
 
 
 def _label(kind) -> str:
@@ -99,6 +102,11 @@ def smoothness_verdict(kind) -> Verdict:
     lo = "?" if h.lower is None else sp.sstr(h.lower) if h.value is not None else f"{float(h.lower):.10g}"
     hi = "?" if h.upper is None else sp.sstr(h.upper) if h.value is not None else f"{float(h.upper):.10g}"
     reason = f"alpha = {sp.sstr(h.value)}" if h.value is not None else f"alpha in [{lo}, {hi}] ({h.status})"
+    if not h.witness["isotropic"]:                 # no alpha: C^0 from the JSR on V_k, C^l (l >= k) from the sum rules
+        r = h.witness["jsr"]
+        reason = (f"{h.provenance['message']}; JSR(T|V_{h.witness['k']}) in [{float(r.lower):.10g}, "
+                  f"{'?' if r.upper is None else f'{float(r.upper):.10g}'}] ({r.status}); "
+                  f"sum rules of order {h.witness['k']}")
     nums = [Number(f"C^{k}", "undecided" if t is None else t),
             Number("C^j certified up to j", -1 if yes is None else yes),
             Number("not C^j from j", "none certified" if no is None else no)]
@@ -128,6 +136,11 @@ def ck_range_verdict(kind) -> Verdict:
     if not (getattr(lo, "is_Rational", False) and getattr(hi, "is_Rational", False)):
         raise AnalysisError(f"{kind.where}: a bivariate 'ck range' needs rational ends of the interval")
     claim = interval_text(lo, hi, lc, hc)
+    from ...bivariate.tensor import tensor_factors
+
+    tf = tensor_factors(a)
+    if tf.value is not None:                  # b(z1) c(z2), M = m I: the univariate route, as subdiv surface --C
+        return _tensor_ck_range_verdict(kind, a, tf.value, j, (lo, hi, lc, hc), claim)
     r = ck_set(a, j, within=(lo, hi), grid=CK_GRID, budget=CK_BUDGET)
     inside = [x for x in r.value["not_Cl"] if (lo < x < hi) or (lc and x == lo) or (hc and x == hi)]
     cert = r.value["certified"]
@@ -154,3 +167,39 @@ def ck_range_verdict(kind) -> Verdict:
     return kind.inconclusive(f"C^{j} on {claim} neither proven nor refuted: {text}",
                              settle="more grid cells or a larger budget (`subdiv surface --C --within`); next to an end "
                                     "of eigenvalue type the boxes never reach the end", evidence=ev)
+
+
+def _tensor_ck_range_verdict(kind, a, tf, j: int, interval, claim: str) -> Verdict:
+    """``ck range`` of a tensor-product family (:func:`analysis.bivariate.tensor.tensor_ck_set`: the intersection of
+    the factors' univariate ``C^j`` sets, the route of ``subdiv surface --C --within``)."""
+    from ...algebra.algebraic import RealAlgebraic, rational_between
+    from ...bivariate.tensor import tensor_ck_set
+
+    lo, hi, lc, hc = interval
+    p = a.params[0]
+    r = tensor_ck_set(a, j, p.name, within=(lo, hi), grid=TENSOR_GRID, budget=TENSOR_BUDGET, factors=tf)
+    v = r.value
+    want = sp.Interval(lo, hi, not lc, not hc)
+    text = (f"the mask is a tensor product b(z1) {'b' if tf.same else 'c'}(z2) with M = {tf.m}I (exact), so C^{j} "
+            f"exactly where the univariate factor{'' if tf.same else 's'} {'is' if tf.same else 'are'}: C^{j} on "
+            f"{v['Cl']}; not C^{j} on {v['not_Cl']}"
+            + (f"; undecided {v['undecided']}" if not v["undecided"].is_empty else "")
+            + (f"; between counterexamples (sampled) {v['sampled']}" if not v["sampled"].is_empty else ""))
+    prov = {"method": "tensor product: the intersection of the univariate C^l sets", "status": r.status}
+    ev = [evidence(f"C^{j} of {kind.scheme.name} on {claim}", r if r.status == CERTIFIED else None, text=text)]
+    bad = want.intersect(v["not_Cl"].to_sympy())
+    if bad.is_empty is False:
+        q = bad.inf if bad.inf in bad else rational_between(RealAlgebraic.from_expr(bad.inf),
+                                                               RealAlgebraic.from_expr(bad.sup))
+        at = sp.sstr(q) + ("" if q.is_Rational else f" ~ {float(q):.10g}")
+        ev.insert(0, evidence(f"not C^{j} at {p.name} = {at}", Result(
+            value=False, status=CERTIFIED, witness={"counterexample": q}, provenance=prov), text=text))
+        return kind.refuted(f"not C^{j} at {p.name} = {at} in {claim} (certified: {text})", corrected=text,
+                            evidence=ev, numbers=[Number("counterexample", q)])
+    if want.is_subset(v["Cl"].to_sympy()) is True:
+        ev.insert(0, evidence(f"C^{j} on {claim}", Result(value=True, status=CERTIFIED, witness={"route": "tensor"},
+                                                          provenance=prov), text=text))
+        return kind.certified(f"C^{j} for every {p.name} in {claim} (certified: {text})", evidence=ev,
+                              numbers=[Number("proven", True)])
+    return kind.inconclusive(f"C^{j} on {claim} neither proven nor refuted: {text}",
+                             settle="a larger budget (`subdiv surface --C --within`)", evidence=ev)

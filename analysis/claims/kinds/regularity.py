@@ -39,6 +39,7 @@ import sympy as sp
 from ...regularity.holder import holder_exponent
 from ...regularity.ranges import ck_range, verify_smoothness_interval
 from ...regularity.sobolev import sobolev_exponent
+from ...jsonable import fmt_bound
 from ...result import CERTIFIED, REFUTED, AnalysisError, Result
 from ...stationary.normset import norm_solution_set
 from ..model import Number, Verdict, contains_interval
@@ -54,8 +55,7 @@ def enclosure_text(r: Result) -> str:
         return f"{sp.sstr(r.value)} (exact, {r.status})"
     if r.lower is None or r.upper is None:
         return f"not enclosed ({r.status})"
-    lo, hi = sp.Rational(r.lower), sp.Rational(r.upper)
-    return f"[{float(lo):.10f}, {float(hi):.10f}] ({r.status})"
+    return f"[{fmt_bound(r.lower, 'lower')}, {fmt_bound(r.upper, 'upper')}] ({r.status})"
 
 
 def _sign(x, y) -> int | None:
@@ -220,8 +220,10 @@ class _ValueClaim(Kind):
         hi = r.value if r.value is not None else r.upper
         mid = r.value if r.value is not None else (None if lo is None or hi is None else (sp.Rational(lo) + sp.Rational(hi)) / 2)
         width = 0 if r.value is not None or mid is None else float(sp.Rational(hi) - sp.Rational(lo))
-        nums = [Number(self.quantity, mid if r.value is not None else (float(mid) if mid is not None else None),
+        nums = [Number(self.quantity, mid if r.value is not None else (float(mid) if mid is not None else "no enclosure"),
                        tol=0 if r.value is not None else max(1e-6, 2 * width), lower=lo, upper=hi)]
+        if lo is None and hi is None and r.provenance.get("message"):         # e.g. an anisotropic dilation
+            enc = f"{enc} ({r.provenance['message']})"
         text = f"{self.quantity} of {self.where_text()}: {enc}"
         if ok is True:
             return self.certified(f"{text}; claimed {claim}: {why}", evidence=[evidence(self.quantity, r, text=enc)], numbers=nums)
