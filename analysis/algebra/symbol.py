@@ -589,13 +589,26 @@ class LaurentSymbol:
                 known = ", ".join(by_name) or "none"
                 raise AnalysisError(f"unknown parameter {str(k)!r} (this symbol's parameters: {known})")
             vals[key] = parse_coefficient(v)
-        coeffs = [sp.expand(c.subs(vals)) for c in self.mask]
+        coeffs = self._at_rationals(vals)
+        if coeffs is None:
+            coeffs = [sp.expand(c.subs(vals)) for c in self.mask]
         params = tuple(p for p in self.params if p not in vals)
         params = tuple(sorted(set(params) | set(parameter_symbols(coeffs)), key=lambda s: s.name))
         for c in coeffs:
             if c.has(sp.zoo, sp.nan):
                 raise AnalysisError("the parameter values make a coefficient infinite")
         return LaurentSymbol.from_mask(coeffs, start=self.start, params=params)
+
+    def _at_rationals(self, vals: dict) -> list | None:
+        """The coefficients at rational values of every parameter of a polynomial family over QQ, each
+        coefficient evaluated in the polynomial ring (the same exact rationals as substituting and expanding,
+        without sympy's expression substitution); None when that does not apply."""
+        d = self.domain
+        if (self.is_zero or not d.is_PolynomialRing or not d.dom.is_QQ or set(vals) != set(d.symbols)
+                or not all(isinstance(v, sp.Rational) for v in vals.values())):
+            return None
+        point = [d.dom.from_sympy(vals[s]) for s in d.symbols]
+        return [d.dom.to_sympy(c(*point)) for c in reversed(self._poly.rep.to_list())]
 
     def require_numeric(self, what: str = "this computation") -> None:
         """Raise a clear error when parameters are still free."""
