@@ -222,7 +222,7 @@ class LaurentSymbol:
     True
     """
 
-    __slots__ = ("_poly", "_start", "_params", "_hash")
+    __slots__ = ("_poly", "_start", "_params", "_hash", "_mask")
 
     def __init__(self, poly: sp.Poly, start: int = 0, params: Sequence[sp.Symbol] = ()):
         if not isinstance(poly, sp.Poly) or poly.gens != (Z,):
@@ -240,6 +240,7 @@ class LaurentSymbol:
         self._start = int(start)
         self._params = tuple(params)
         self._hash = None
+        self._mask = None
 
     # ---------------------------------------------------------------- constructors
     @classmethod
@@ -405,10 +406,14 @@ class LaurentSymbol:
 
     @property
     def mask(self) -> tuple:
-        """The coefficients ``a_start, ..., a_end`` as sympy expressions."""
-        if self.is_zero:
-            return (sp.Integer(0),)
-        return tuple(self.domain.to_sympy(c) for c in reversed(self._poly.rep.to_list()))
+        """The coefficients ``a_start, ..., a_end`` as sympy expressions (formed once: a tuple of immutable
+        expressions)."""
+        m = getattr(self, "_mask", None)
+        if m is None:
+            m = (sp.Integer(0),) if self.is_zero else \
+                tuple(self.domain.to_sympy(c) for c in reversed(self._poly.rep.to_list()))
+            object.__setattr__(self, "_mask", m)
+        return m
 
     def __len__(self) -> int:
         return 0 if self.is_zero else self.end - self.start + 1
