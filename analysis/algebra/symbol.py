@@ -222,7 +222,7 @@ class LaurentSymbol:
     True
     """
 
-    __slots__ = ("_poly", "_start", "_params", "_hash")
+    __slots__ = ("_poly", "_start", "_params", "_hash", "_mask")
 
     def __init__(self, poly: sp.Poly, start: int = 0, params: Sequence[sp.Symbol] = ()):
         if not isinstance(poly, sp.Poly) or poly.gens != (Z,):
@@ -240,6 +240,7 @@ class LaurentSymbol:
         self._start = int(start)
         self._params = tuple(params)
         self._hash = None
+        self._mask = None
 
     # ---------------------------------------------------------------- constructors
     @classmethod
@@ -405,10 +406,14 @@ class LaurentSymbol:
 
     @property
     def mask(self) -> tuple:
-        """The coefficients ``a_start, ..., a_end`` as sympy expressions."""
-        if self.is_zero:
-            return (sp.Integer(0),)
-        return tuple(self.domain.to_sympy(c) for c in reversed(self._poly.rep.to_list()))
+        """The coefficients ``a_start, ..., a_end`` as sympy expressions (formed once: a tuple of immutable
+        expressions)."""
+        m = getattr(self, "_mask", None)
+        if m is None:
+            m = (sp.Integer(0),) if self.is_zero else \
+                tuple(self.domain.to_sympy(c) for c in reversed(self._poly.rep.to_list()))
+            object.__setattr__(self, "_mask", m)
+        return m
 
     def __len__(self) -> int:
         return 0 if self.is_zero else self.end - self.start + 1
@@ -589,13 +594,26 @@ class LaurentSymbol:
                 known = ", ".join(by_name) or "none"
                 raise AnalysisError(f"unknown parameter {str(k)!r} (this symbol's parameters: {known})")
             vals[key] = parse_coefficient(v)
-        coeffs = [sp.expand(c.subs(vals)) for c in self.mask]
+        coeffs = self._at_rationals(vals)
+        if coeffs is None:
+            coeffs = [sp.expand(c.subs(vals)) for c in self.mask]
         params = tuple(p for p in self.params if p not in vals)
         params = tuple(sorted(set(params) | set(parameter_symbols(coeffs)), key=lambda s: s.name))
         for c in coeffs:
             if c.has(sp.zoo, sp.nan):
                 raise AnalysisError("the parameter values make a coefficient infinite")
         return LaurentSymbol.from_mask(coeffs, start=self.start, params=params)
+
+    def _at_rationals(self, vals: dict) -> list | None:
+        """The coefficients at rational values of every parameter of a polynomial family over QQ, each
+        coefficient evaluated in the polynomial ring (the same exact rationals as substituting and expanding,
+        without sympy's expression substitution); None when that does not apply."""
+        d = self.domain
+        if (self.is_zero or not d.is_PolynomialRing or not d.dom.is_QQ or set(vals) != set(d.symbols)
+                or not all(isinstance(v, sp.Rational) for v in vals.values())):
+            return None
+        point = [d.dom.from_sympy(vals[s]) for s in d.symbols]
+        return [d.dom.to_sympy(c(*point)) for c in reversed(self._poly.rep.to_list())]
 
     def require_numeric(self, what: str = "this computation") -> None:
         """Raise a clear error when parameters are still free."""

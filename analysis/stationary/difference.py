@@ -172,8 +172,9 @@ def scheme_norm(a: LaurentSymbol, L: int = 1, *, scale=1, arity: int = 2) -> Res
         fsums, _ = _rational_residue_sums(a, L, M)
         arg = max(range(len(fsums)), key=fsums.__getitem__)
         f = sp.Rational(fsums[arg].numerator, fsums[arg].denominator)
-        value = scale ** L * f
-        shown = [scale ** L * sp.Rational(x.numerator, x.denominator) for x in fsums] if L <= shown_up_to else None
+        scale_L = scale ** L            # formed once: the same products as forming it per residue
+        value = scale_L * f
+        shown = [scale_L * sp.Rational(x.numerator, x.denominator) for x in fsums] if L <= shown_up_to else None
     else:
         sums = residue_sums(a, L, arity=M)
         best, arg = _max_exact(sums)

@@ -49,6 +49,8 @@ P. Henrici, *Applied and Computational Complex Analysis* I (1974), Sect. 6.8 (th
 
 from __future__ import annotations
 
+from functools import lru_cache
+
 import sympy as sp
 
 from ...algebra.algebraic import RealAlgebraic, sign
@@ -73,6 +75,18 @@ def stable_in_disk(coeffs, r, sign=lambda c: int(sp.sign(c)), reduce=lambda c: c
         n = len(c) - 1
         c = [reduce(c[-1] * c[k + 1] - c[0] * c[n - 1 - k]) for k in range(n)]
     return True
+
+
+@lru_cache(maxsize=1024)
+def _equal(e: sp.Expr, x: sp.Expr) -> bool:
+    """``simplify(e - x) == 0``, remembered (bounded): the inequalities of one paper compare the same printed
+    moduli with the same exact eigenvalues (``simplify`` is a function of the two expressions only).
+
+    >>> mu = sp.Symbol("mu")
+    >>> _equal(7 * mu / 32, sp.Rational(7, 32) * mu), _equal(mu, -mu)
+    (True, False)
+    """
+    return sp.simplify(e - x) == 0
 
 
 def set_numbers(prefix: str, iset) -> list[Number]:
@@ -224,7 +238,7 @@ class EigenvalueInequality(Kind):
                        text=f"window {res.witness['window']}: {spectrum}")]
         if self.moduli:
             what = "|" + "| > |".join(sp.sstr(e) for e in self.moduli) + "|"
-            missing = [e for e in self.moduli if not any(sp.simplify(e - x) == 0 for x in res.value)]
+            missing = [e for e in self.moduli if not any(_equal(e, x) for x in res.value)]
             if missing:
                 return self.inconclusive(f"not eigenvalues of the local matrix of {self.where_text()}: "
                                          f"{', '.join(map(sp.sstr, missing))}", evidence=ev,
