@@ -101,3 +101,19 @@ def test_a_ck_range_of_a_tensor_product_family_takes_the_univariate_route():
                'parameters = { w = "(0, 1/4)" }',
                '[[claims]]\nid = "c"\nstatement = "s"\nkind = "ck range"\nscheme = "kq"\nj = 1\ninterval = "(0, 1/4)"\n')
     assert v["c"].label == "REFUTED" and "32*w**3 + 4*w - 1" in v["c"].summary and "0.1927292493" in v["c"].summary
+
+
+def test_paper_file_mistakes_on_bivariate_schemes_are_caught_at_load_time():
+    head = ('[paper]\nid = "t"\ntitle = "t"\n[schemes.s]\nbivariate = { symbol = '
+            '"(1+z1)**2*(1+z2)**2/(4*z1*z2)+w*(1-z1**2)*(1-z2**2)/(z1*z2)" }\nparameters = { w = "(0, 1)" }\n')
+    with pytest.raises(AnalysisError, match="rational ends"):
+        parse_paper(head + '[[claims]]\nid = "c"\nstatement = "s"\nkind = "ck range"\nscheme = "s"\nj = 0\n'
+                           'interval = "(0, sqrt(2)/2)"\n', "t.toml")
+    with pytest.raises(AnalysisError, match="use kind 'ck range'$"):       # no 'smoothness profile' for surfaces
+        parse_paper(head + '[[claims]]\nid = "c"\nstatement = "s"\nkind = "smoothness"\nscheme = "s"\nC = 0\n',
+                    "t.toml")
+
+
+def test_an_exact_jsr_is_printed_as_a_value(capsys):
+    main(["surface", "--symbol", "(1+z1)**2*(1+z2+z2**2)**2/(6*z1*z2**2)", "--dilation", "2,0;0,3"])
+    assert "JSR(T|V_2) = 1/2 (rho(T_4)^(1/1), exact; certified)" in capsys.readouterr().out

@@ -566,7 +566,9 @@ def cmd_surface(args) -> None:
         lo_j = sp.sstr(j.lower) if exact else fmt_bound(j.lower, "lower", 15, "g")
         jl = (f"JSR(T|V_{kk}) >= {lo_j} (rho(T_{w})^(1/{len(w)})"
               + (", exact)" if exact else ", rounded down)"))
-        if j.upper is not None:
+        if j.upper is not None and exact and sp.Rational(j.upper) == sp.Rational(j.lower):
+            jl = f"JSR(T|V_{kk}) = {lo_j} (rho(T_{w})^(1/{len(w)}), exact; {j.status})"
+        elif j.upper is not None:
             jl += f", <= lower + {float(sp.Rational(j.upper) - sp.Rational(j.lower)):.2g} ({j.status})"
     lines.append(jl)
     if not D.isotropic:

@@ -326,8 +326,13 @@ class CkRange(Kind):
     bivariate = True
 
     def check(self) -> None:
-        self.integer("j"), self.interval("interval")
+        self.integer("j")
+        lo, hi, _, _ = self.interval("interval")
         self.values()
+        if self.scheme.bivariate is not None and not (getattr(lo, "is_Rational", False)
+                                                      and getattr(hi, "is_Rational", False)):
+            raise AnalysisError(f"{self.where}: a bivariate 'ck range' needs rational ends of the interval, e.g. "
+                                f"interval = \"(0, 1/8)\"")
 
     def evaluate(self) -> Verdict:
         if self.scheme.bivariate is not None:

@@ -90,7 +90,8 @@ class Smoothness(Kind):
         if free:
             raise AnalysisError(f"{self.where}: kind 'smoothness' speaks of one scheme: fix every parameter with "
                                 f"at = {{ {free[0]} = \"...\" }} (free: {', '.join(free)}); for a parameter interval use "
-                                "kind 'ck range' or 'smoothness profile'")
+                                + ("kind 'ck range'" if self.scheme.bivariate is not None
+                                   else "kind 'ck range' or 'smoothness profile'"))
         b = self.number("budget")
         if b is not None and not (b.is_Integer and 0 < b <= 10 ** 7):
             raise AnalysisError(f"{self.where}: field 'budget' must be an integer number of work units in [1, 10^7]")
