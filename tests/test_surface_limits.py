@@ -10,8 +10,9 @@ import pytest
 
 from analysis.bivariate.mask import BivariateMask
 from analysis.bivariate.refine import basic_limit_samples, support_boxes
+from analysis.bivariate.transition import fixed_points, invariant_support
 from analysis.cli.main import main
-from schemes.surfaces import get
+from schemes.surfaces import entries, get
 
 
 def _reference_samples(a: BivariateMask, steps: int) -> dict:
@@ -61,3 +62,16 @@ def test_too_many_refinement_steps_are_refused_before_the_work(capsys):
     big = "; ".join(f"{i},{j}:1/240" for i in range(31) for j in range(31))
     err = _error(capsys, "surface", "--mask2", big, "--refine", "5")
     assert "take --refine 4 or fewer" in err
+
+
+@pytest.mark.parametrize("name", [e.slug for e in entries()])
+def test_fixed_points_lie_in_the_invariant_support(name):
+    a = get(name).mask()
+    assert fixed_points(a) <= set(invariant_support(a))
+
+
+def test_a_too_large_invariant_support_is_refused_before_the_algebra(capsys):
+    # 21 x 21 coefficients, M = 2I: supp(a) - {0,1}^2 (22 x 22 points) are fixed points, all in Omega
+    big = "; ".join(f"{i},{j}:1/110" for i in range(21) for j in range(21))
+    err = _error(capsys, "surface", "--mask2", big)
+    assert "the invariant support has at least 484 points (limit 400" in err and "smaller support" in err
