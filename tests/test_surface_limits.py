@@ -75,3 +75,25 @@ def test_a_too_large_invariant_support_is_refused_before_the_algebra(capsys):
     big = "; ".join(f"{i},{j}:1/110" for i in range(21) for j in range(21))
     err = _error(capsys, "surface", "--mask2", big)
     assert "the invariant support has at least 484 points (limit 400" in err and "smaller support" in err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--grid-cells", "0"], "--grid-cells must be between 1 and 64, not 0"),
+    (["--scheme", "loop", "--grid-cells", "4"], "--grid-cells goes with a C^l set of a free parameter"),
+    (["--scheme", "butterfly", "--param-name", "w"], "drop --param-name or add --C L --within=LOW,HIGH"),
+    (["--scheme", "loop", "--C", "1", "--param-name", "w"], "--param-name goes with a C^l set"),
+    (["--scheme", "loop", "--range-budget", "5"], "--range-budget goes with a C^l set"),
+    (["--scheme", "bicubic", "--list"], "--list lists the whole catalogue: drop --scheme (or drop --list)"),
+    (["--scheme", "loop", "--differences", "1", "--param-name", "w"], "--differences is a mode of its own: drop --param-name"),
+    (["--file", "."], "is a folder: give the path of a mask file MASK.toml or MASK.json"),
+    (["--file", "mask"], "'mask' has no suffix: give the path of a mask file MASK.toml"),
+], ids=["grid-cells-0", "grid-cells-alone", "param-name", "param-name-fixed", "range-budget", "list", "differences",
+        "folder", "no-suffix"])
+def test_options_that_would_be_ignored_are_refused(capsys, argv, message):
+    assert message in _error(capsys, "surface", *argv)
+
+
+def test_a_mask_file_that_is_not_text_says_what_to_give(tmp_path, capsys):
+    f = tmp_path / "mask.toml"
+    f.write_bytes(b"\x93NUMPY\x01\x00")
+    assert "is not UTF-8 text: give the path of a mask file" in _error(capsys, "surface", "--file", str(f))
