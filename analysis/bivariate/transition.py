@@ -48,7 +48,8 @@ from flint import fmpq, fmpq_mat
 from ..result import AnalysisError
 from .mask import BivariateMask
 
-__all__ = ["invariant_support", "fixed_points", "check_invariant_support_size", "transition_matrices", "difference_subspace", "restricted_transition",
+__all__ = ["invariant_support", "fixed_points", "check_invariant_support_size", "transition_matrices",
+           "difference_subspace", "restricted_transition",
            "RestrictedFamily", "MAX_OMEGA"]
 
 #: the largest invariant support (the transition matrices are |Omega| x |Omega|)

@@ -156,7 +156,8 @@ def _suggest(parser: argparse.ArgumentParser, argv: Sequence[str], message: str)
     if m and subs:
         close = difflib.get_close_matches(m.group(2), list(subs), n=1)
         if close:
-            return f"unknown command {m.group(2)!r}: did you mean `subdiv {close[0]}`? (`subdiv --help` lists the commands)"
+            return (f"unknown command {m.group(2)!r}: did you mean `subdiv {close[0]}`? "
+                    "(`subdiv --help` lists the commands)")
         return f"unknown command {m.group(2)!r}: `subdiv --help` lists the commands"
     if message.startswith("unrecognized arguments"):
         command = next((a for a in argv if a in subs), None)
