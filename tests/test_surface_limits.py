@@ -75,6 +75,10 @@ def test_a_too_large_invariant_support_is_refused_before_the_algebra(capsys):
     big = "; ".join(f"{i},{j}:1/110" for i in range(21) for j in range(21))
     err = _error(capsys, "surface", "--mask2", big)
     assert "the invariant support has at least 484 points (limit 400" in err and "smaller support" in err
+    # quincunx: 110 fixed points, 670 points in Omega (computed before the sum rules and the box factors)
+    quincunx = "; ".join(f"{i},{j}:1/50" for i in range(10) for j in range(10))
+    err = _error(capsys, "surface", "--mask2", quincunx, "--dilation", "quincunx")
+    assert "the invariant support has 670 points (limit 400): give a mask with a smaller support" in err
 
 
 @pytest.mark.parametrize("argv, message", [

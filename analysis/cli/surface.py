@@ -527,11 +527,11 @@ def cmd_surface(args) -> None:
     from ..bivariate.algebra import box_factors, reproduction, sum_rules, symmetry_group
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
 
-    from ..bivariate.transition import check_invariant_support_size
+    from ..bivariate.transition import invariant_support
 
     budget = work_arg(args.budget, "--budget")
     general, a, label, vals = _mask_from_args(args)
-    check_invariant_support_size(a)                  # before the algebra: its size follows from supp(a) and M
+    invariant_support(a)                             # its limit before the algebra: it depends on supp(a) and M only
     D = a.dilation
     sr_general = sum_rules(general)
     sr = sum_rules(a)
