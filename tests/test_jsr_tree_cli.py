@@ -52,7 +52,10 @@ def test_hard_signed_pair_beats_brute_force_in_the_same_work():
 
 def _run(tmp_path, capsys, payload, *args) -> tuple[int, str, str]:
     path = tmp_path / "family.json"
-    path.write_text(payload if isinstance(payload, str) else json.dumps(payload))
+    if isinstance(payload, bytes):
+        path.write_bytes(payload)
+    else:
+        path.write_text(payload if isinstance(payload, str) else json.dumps(payload))
     code = main(["jsr", str(path), *args])
     out = capsys.readouterr()
     return code or 0, out.out, out.err
@@ -80,7 +83,10 @@ def test_cli_text_single_matrix_is_exact(tmp_path, capsys):
     ("[[[true]]]", "write a number"),
     ("[[1, 2]", "is not JSON"),
     (json.dumps([[[1]]] * 17), "at most 16"),
-], ids=["not-square", "sizes", "name", "bool", "syntax", "too-many"])
+    ("[[[1e308]]]", "limited to 1e-50 <= |x| <= 1e50"),
+    ('[[[1, "1/10**51"], [0, 1]]]', "limited to 1e-50 <= |x| <= 1e50"),
+    (b"\x93NUMPY\x01\x00v\x00", "not a text file (not UTF-8): write the file as a JSON list"),
+], ids=["not-square", "sizes", "name", "bool", "syntax", "too-many", "huge", "tiny", "binary"])
 def test_cli_errors_are_one_line(tmp_path, capsys, payload, message):
     code, out, err = _run(tmp_path, capsys, payload)
     assert code == 2 and out == ""
@@ -92,3 +98,13 @@ def test_cli_errors_are_one_line(tmp_path, capsys, payload, message):
 def test_cli_decimals_are_exact(tmp_path, capsys):
     code, out, _ = _run(tmp_path, capsys, "[[[0.1, 0], [0, 0.2]]]", "--json")
     assert code == 0 and json.loads(out)["exact_value"] == "1/5"
+
+
+def test_cli_prints_a_jsr_of_1e17_and_more_in_exponent_notation(tmp_path, capsys):
+    code, out, err = _run(tmp_path, capsys, [[[10 ** 17 + 1]], [[1]]])
+    assert code == 0 and err == ""
+    assert "JSR in [1.0000000000000000e+17, 1.0000000000000001e+17]   certified" in out
+    code, out, err = _run(tmp_path, capsys, [[[1, 2], [3, "10**50"]], [["10**49", 0], [1, 1]]], "--json")
+    doc = json.loads(out)
+    assert code == 0 and err == "" and doc["status"] == "certified"
+    assert sp.Rational(doc["lower"]) <= 10 ** 50 + 1 <= sp.Rational(doc["upper"])   # rho(A0) = 10^50 + 6/10^50 + ...

@@ -152,7 +152,7 @@ class BivariateMask:
 
     @property
     def symbol(self) -> sp.Expr:
-        return sp.expand(sum(v * Z1 ** i * Z2 ** j for (i, j), v in self.coeffs.items()))
+        return sp.expand(sp.Add(*(v * Z1 ** i * Z2 ** j for (i, j), v in self.coeffs.items())))
 
     def at(self, values: Mapping[str, Any] | None = None, **kw: Any) -> "BivariateMask":
         """The mask with parameters replaced by exact values (text through the reader)."""

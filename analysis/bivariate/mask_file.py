@@ -40,18 +40,24 @@ KEYS = ("name", "dilation", "symbol", "mask")
 def read_mask_file(path: str) -> BivariateMask:
     """The mask of a ``.toml`` or ``.json`` file (module docstring)."""
     p = Path(path)
+    give = "give the path of a mask file MASK.toml or MASK.json (docs/surfaces.md)"
+    if p.is_dir():
+        raise AnalysisError(f"{path!r} is a folder: {give}")
     if p.suffix.lower() not in (".toml", ".json"):
-        raise AnalysisError(f"a mask file is .toml or .json, not {p.suffix or 'without a suffix'!r}")
+        what = f"ends in {p.suffix!r}" if p.suffix else "has no suffix"
+        raise AnalysisError(f"{path!r} {what}: {give}")
     try:
         size = p.stat().st_size
     except OSError as exc:
-        raise AnalysisError(f"cannot read the mask file {path!r}: {exc.strerror or exc}") from None
+        raise AnalysisError(f"cannot read the mask file {path!r}: {exc.strerror or exc}; {give}") from None
     if size > MAX_BYTES:
         raise AnalysisError(f"the mask file has {size} bytes (limit {MAX_BYTES})")
     try:
         text = p.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AnalysisError(f"cannot read the mask file {path!r}: {exc}") from None
+    except UnicodeDecodeError:
+        raise AnalysisError(f"the mask file {path!r} is not UTF-8 text: {give}") from None
+    except OSError as exc:
+        raise AnalysisError(f"cannot read the mask file {path!r}: {exc.strerror or exc}") from None
     if p.suffix.lower() == ".json":
         try:
             data = json.loads(text)

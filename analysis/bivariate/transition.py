@@ -48,7 +48,8 @@ from flint import fmpq, fmpq_mat
 from ..result import AnalysisError
 from .mask import BivariateMask
 
-__all__ = ["invariant_support", "transition_matrices", "difference_subspace", "restricted_transition",
+__all__ = ["invariant_support", "fixed_points", "check_invariant_support_size", "transition_matrices",
+           "difference_subspace", "restricted_transition",
            "RestrictedFamily", "MAX_OMEGA"]
 
 #: the largest invariant support (the transition matrices are |Omega| x |Omega|)
@@ -67,11 +68,53 @@ def _inverse_power_bound(D, p: int) -> tuple[Fraction, list]:
     return norms[-1], norms
 
 
+def _predecessor_offsets(a: BivariateMask) -> list[tuple[int, int]]:
+    """``supp(a) - digits``: ``j`` in ``Omega`` has a predecessor ``M j - d`` in ``Omega`` for one of these ``d``."""
+    digits = a.dilation.digits                                  # computed on each access
+    return sorted({(i - e[0], j - e[1]) for (i, j) in a.coeffs for e in digits})
+
+
+def fixed_points(a: BivariateMask) -> set[tuple[int, int]]:
+    """The integer fixed points ``j = (M - I)^-1 d`` of the maps ``x -> M^-1 (x + d)``, ``d in supp(a) - digits``:
+    points of ``H`` and of ``Omega`` (``M j - d = j`` is its own predecessor), known from the support of the mask
+    and ``M`` alone, so ``|Omega|`` is at least their number (all of ``supp(a) - digits`` when ``M = 2I``).
+
+    >>> from analysis.bivariate.mask import BivariateMask
+    >>> len(fixed_points(BivariateMask.from_symbol("(1+z1)**2*(1+z2)**2/(4*z1*z2)")))
+    16
+    """
+    (m00, m01), (m10, m11) = a.dilation.matrix
+    p, q, r, t = m00 - 1, m01, m10, m11 - 1                  # M - I (invertible: M has no eigenvalue 1)
+    det = p * t - q * r
+    out = set()
+    for dx, dy in _predecessor_offsets(a):
+        x, y = t * dx - q * dy, -r * dx + p * dy             # adj(M - I) d
+        if x % det == 0 and y % det == 0:
+            out.add((x // det, y // det))
+    return out
+
+
+def check_invariant_support_size(a: BivariateMask) -> None:
+    """Refuse, before any computation, a mask whose invariant support is sure to exceed :data:`MAX_OMEGA` points
+    (:func:`fixed_points` are in it)."""
+    n = len(fixed_points(a))
+    if n > MAX_OMEGA:
+        raise AnalysisError(f"the invariant support has at least {n} points (limit {MAX_OMEGA}; the transition "
+                            f"matrices would be {n} x {n} or larger): give a mask with a smaller support")
+
+
 def invariant_support(a: BivariateMask) -> tuple[tuple[int, int], ...]:
-    """``Omega = H cap Z^2`` (module docstring), sorted lexicographically."""
+    """``Omega = H cap Z^2`` (module docstring), sorted lexicographically.
+
+    Algorithm: :func:`check_invariant_support_size` first; then the decreasing iteration on a boolean array over
+    a box containing ``H`` (numpy, integers only: exact), each step keeping the points ``j`` with ``M j - d`` in
+    the set for some ``d``.
+    """
+    import numpy as np
+
+    check_invariant_support_size(a)
     D = a.dilation
-    digits = D.digits
-    ds = {(i - e[0], j - e[1]) for (i, j) in a.coeffs for e in digits}
+    ds = _predecessor_offsets(a)
     dmax = max(max(abs(x), abs(y)) for x, y in ds)
     for p in range(1, 40):
         q, norms = _inverse_power_bound(D, p)
@@ -82,18 +125,29 @@ def invariant_support(a: BivariateMask) -> tuple[tuple[int, int], ...]:
     # h = M^-p h' + sum_{i=1..p} M^-i d_i  =>  |h| <= q |h| + sum |M^-i| dmax
     R = (sum(norms) * dmax) / (1 - q)
     r = int(R) + 1
-    if (2 * r + 1) ** 2 > 200_000:
-        raise AnalysisError("the invariant support is too large for this mask and dilation")
-    omega = {(x, y) for x in range(-r, r + 1) for y in range(-r, r + 1)}
+    side = 2 * r + 1
+    if side ** 2 > 200_000:
+        raise AnalysisError("the invariant support is too large for this mask and dilation: give a mask with a "
+                            "smaller support")
+    inside = np.ones((side, side), dtype=bool)              # inside[x + r, y + r]: (x, y) still in the set
+    M = np.array(D.matrix, dtype=np.int64)
     while True:
-        new = {j for j in omega if any((D.apply(j)[0] - d[0], D.apply(j)[1] - d[1]) in omega for d in ds)}
-        if new == omega:
+        pts = np.argwhere(inside) - r
+        Mj = pts @ M.T
+        keep = np.zeros(len(pts), dtype=bool)
+        for dx, dy in ds:
+            x, y = Mj[:, 0] - dx + r, Mj[:, 1] - dy + r
+            ok = (~keep) & (x >= 0) & (x < side) & (y >= 0) & (y < side)
+            keep[ok] = inside[x[ok], y[ok]]
+        if keep.all():
             break
-        omega = new
+        inside[tuple((pts[~keep] + r).T)] = False
+    omega = [(int(x), int(y)) for x, y in np.argwhere(inside) - r]
     if not omega:                                          # pragma: no cover - H always has integer points?
         raise AnalysisError("the invariant support has no integer points")
     if len(omega) > MAX_OMEGA:
-        raise AnalysisError(f"the invariant support has {len(omega)} points (limit {MAX_OMEGA})")
+        raise AnalysisError(f"the invariant support has {len(omega)} points (limit {MAX_OMEGA}): give a mask with "
+                            "a smaller support")
     return tuple(sorted(omega))
 
 

@@ -3,7 +3,8 @@
 The file is JSON: a list of square matrices of one size, each a list of rows; an entry is an
 integer, a JSON number (a decimal, read exactly: ``0.1`` is ``1/10``) or a string read by the
 input reader (``"1/3"``, ``"-0.25"``, ``"sqrt(3)/4"``). Sizes are limited (:data:`MAX_MATRICES`,
-:data:`MAX_DIMENSION`, :data:`MAX_ENTRY_CHARS`, :data:`MAX_FILE_BYTES`).
+:data:`MAX_DIMENSION`, :data:`MAX_ENTRY_CHARS`, :data:`MAX_FILE_BYTES`, and an entry other than 0 lies
+between ``1e-50`` and ``1e50`` in absolute value: :data:`MAX_MAGNITUDE_DIGITS`).
 
 Examples
 --------
@@ -30,6 +31,8 @@ MAX_DIMENSION = 64
 MAX_ENTRY_CHARS = 200
 #: size of the file
 MAX_FILE_BYTES = 4_000_000
+#: largest |entry|, and smallest |entry| other than 0 (the float search squares products of the matrices)
+MAX_MAGNITUDE_DIGITS = 50
 
 _SHAPE_HINT = ('write the file as a JSON list of square matrices of one size, e.g. '
                '[[[1, 1], [0, 1]], [[1, 0], [1, 1]]]')
@@ -52,6 +55,8 @@ def read_family(path: str) -> list:
     """
     import json
 
+    import sympy as sp
+
     from ..algebra.reader import InputError, exact_number
 
     try:
@@ -65,8 +70,11 @@ def read_family(path: str) -> list:
         with open(path, encoding="utf-8") as f:
             # JSON numbers with a fraction or exponent arrive as their text: read exactly below
             data = json.load(f, parse_float=str, parse_constant=lambda c: c)
-    except (OSError, UnicodeDecodeError) as exc:
-        raise AnalysisError(f"cannot read {path!r}: {exc}") from None
+    except UnicodeDecodeError:
+        raise AnalysisError(f"{path!r} is not a text file (not UTF-8): {_SHAPE_HINT}") from None
+    except OSError as exc:
+        raise AnalysisError(f"cannot read {path!r}: {exc.strerror or exc}; give the path of a JSON "
+                            "file of matrices") from None
     except json.JSONDecodeError as exc:
         raise AnalysisError(f"{path!r} is not JSON ({exc.msg} at line {exc.lineno} column "
                             f"{exc.colno}): {_SHAPE_HINT}") from None
@@ -109,18 +117,42 @@ def read_family(path: str) -> list:
                 if not v.is_real:
                     raise AnalysisError(f"{where} = {v} is not a real number: the JSR is for real "
                                         "matrices")
+                if v != 0 and not _within_magnitude(v):
+                    raise AnalysisError(f"{where} is {sp.Float(v, 3)}: entries other than 0 are limited to "
+                                        f"1e-{MAX_MAGNITUDE_DIGITS} <= |x| <= 1e{MAX_MAGNITUDE_DIGITS}; "
+                                        "scale the family (JSR(cA) = |c| JSR(A))")
                 vals.append(v)
             rows.append(vals)
         out.append(rows)
     return out
 
 
+def _within_magnitude(v) -> bool:
+    """``1e-50 <= |v| <= 1e50`` (:data:`MAX_MAGNITUDE_DIGITS`), decided exactly for a real sympy number.
+
+    >>> import sympy as sp
+    >>> _within_magnitude(sp.Integer(10) ** 50), _within_magnitude(sp.Integer(10) ** 50 + 1)
+    (True, False)
+    >>> _within_magnitude(sp.sqrt(2) / 10 ** 50), _within_magnitude(sp.Rational(1, 10 ** 51))
+    (True, False)
+    """
+    import sympy as sp
+
+    big = sp.Integer(10) ** MAX_MAGNITUDE_DIGITS
+    return bool(1 / big <= abs(v) <= big)
+
+
 def _decimal(q, up: bool, digits: int = 17) -> str:
     """The rational ``q`` as a decimal of ``digits`` significant digits, rounded outward
-    (down for a lower end, up for an upper end), so that the printed interval still encloses.
+    (down for a lower end, up for an upper end), so that the printed interval still encloses;
+    in exponent notation from ``10^digits`` up and below ``10^-6``.
 
     >>> _decimal(1, False), _decimal(__import__("fractions").Fraction(2, 3), True, 5)
     ('1.0000000000000000', '0.66667')
+    >>> _decimal(10 ** 17 + 1, False), _decimal(10 ** 17 + 1, True)
+    ('1.0000000000000000e+17', '1.0000000000000001e+17')
+    >>> _decimal(__import__("fractions").Fraction(-1, 3 * 10 ** 7), False, 5)
+    '-3.3334e-8'
     """
     import decimal
     from fractions import Fraction
@@ -128,7 +160,12 @@ def _decimal(q, up: bool, digits: int = 17) -> str:
     q = Fraction(int(q.p), int(q.q)) if hasattr(q, "p") else Fraction(q)
     ctx = decimal.Context(prec=digits, rounding=decimal.ROUND_CEILING if up else decimal.ROUND_FLOOR)
     d = ctx.divide(decimal.Decimal(q.numerator), decimal.Decimal(q.denominator))
-    return f"{d:.{digits - 1 - d.adjusted()}f}" if d else "0"
+    if not d:
+        return "0"
+    places = digits - 1 - d.adjusted()
+    if 0 <= places and d.adjusted() >= -6:
+        return f"{d:.{places}f}"
+    return f"{d:.{digits - 1}e}"                  # d has ``digits`` significant digits: printed exactly
 
 
 def _word(word) -> str:

@@ -138,12 +138,27 @@ def _suggest(parser: argparse.ArgumentParser, argv: Sequence[str], message: str)
     from .common import _option_table
 
     _, _, subs = _option_table(parser)
-    m = re.search(r"invalid choice: '([^']*)'", message)
+    m = re.match(r"argument (\S+): invalid choice: '([^']*)'(?: \(choose from (.*)\))?", message)
+    if m and m.group(1).startswith("-"):            # an option with choices (--grid quad|triangular)
+        option, value = m.group(1).split("/")[-1], m.group(2)
+        choices = [c.strip().strip("'") for c in (m.group(3) or "").split(",") if c.strip()]
+        close = difflib.get_close_matches(value, choices, n=1)
+        hint = f"; did you mean {option} {close[0]}?" if close else ""
+        which = " or ".join(choices) if len(choices) <= 2 else "one of " + ", ".join(choices)
+        return f"{option} takes {which}, not {value!r}{hint}"
+    if m and m.group(1) != "command":               # a command's own sub-commands (subdiv nonuniform ...)
+        command = next((a for a in argv if a in subs), "")
+        choices = [c.strip().strip("'") for c in (m.group(3) or "").split(",") if c.strip()]
+        close = difflib.get_close_matches(m.group(2), choices, n=1)
+        hint = f"did you mean `subdiv {command} {close[0]}`? " if close else ""
+        return (f"unknown {command} command {m.group(2)!r}: {hint}its commands are {', '.join(choices)} "
+                f"(`subdiv {command} --help`)")
     if m and subs:
-        close = difflib.get_close_matches(m.group(1), list(subs), n=1)
+        close = difflib.get_close_matches(m.group(2), list(subs), n=1)
         if close:
-            return f"unknown command {m.group(1)!r}: did you mean `subdiv {close[0]}`? (`subdiv --help` lists the commands)"
-        return f"unknown command {m.group(1)!r}: `subdiv --help` lists the commands"
+            return (f"unknown command {m.group(2)!r}: did you mean `subdiv {close[0]}`? "
+                    "(`subdiv --help` lists the commands)")
+        return f"unknown command {m.group(2)!r}: `subdiv --help` lists the commands"
     if message.startswith("unrecognized arguments"):
         command = next((a for a in argv if a in subs), None)
         known = _option_table(subs[command])[1] if command else _option_table(parser)[1]

@@ -67,10 +67,8 @@ def _differences(args) -> None:
     from ..bivariate.differences import difference_scheme
 
     k = _int_arg(args.differences, "--differences")
-    for option, given in (("--C", args.C), ("--within", args.within), ("--sweep", args.sweep),
-                          ("--refine", args.refine), ("--figure", args.figure), ("--grid", args.grid)):
-        if given is not None and given is not False:
-            raise AnalysisError(f"--differences is a mode of its own: drop {option} (or drop --differences)")
+    for option in _given(args, ("C", "within", "sweep", "refine", "figure", "grid", *RANGE_OPTIONS)):
+        raise AnalysisError(f"--differences is a mode of its own: drop {option} (or drop --differences)")
     _, a, label, vals = _mask_from_args(args, keep="")
     B = difference_scheme(a, k).value
     m = B.m
@@ -259,12 +257,41 @@ def _sweep(args) -> None:
     _emit(args, {"sweep": name, "points": rows}, "\n".join(lines))
 
 
+#: the defaults of the C^l-set options (``None`` in the parser, so that a given option is seen)
+GRID_CELLS, RANGE_BUDGET = "8", "2000000"
+#: the options of ``subdiv surface`` by their argparse names, with their defaults
+OPTIONS = {"scheme": "--scheme", "symbol": "--symbol", "mask2": "--mask2", "file": "--file", "dilation": "--dilation",
+           "param": "--param", "budget": "--budget", "sweep": "--sweep", "C": "--C", "within": "--within",
+           "param_name": "--param-name", "grid_cells": "--grid-cells", "range_budget": "--range-budget",
+           "refine": "--refine", "grid": "--grid", "figure": "--figure", "differences": "--differences"}
+DEFAULTS = {"budget": "20000"}
+#: the options used only by a C^l set (``--C L --within=LOW,HIGH``)
+RANGE_OPTIONS = ("param_name", "grid_cells", "range_budget")
+
+
+def _given(args, names) -> list[str]:
+    """The options among ``names`` (argparse names) given on the command line, spelt as typed."""
+    return [OPTIONS[n] for n in names if getattr(args, n, None) not in (None, False, DEFAULTS.get(n))]
+
+
+def _grid_cells(args) -> int:
+    """``--grid-cells N`` (default 8), checked against its range."""
+    from ..bivariate.ranges import MAX_GRID
+    from .common import _int_arg
+
+    text = GRID_CELLS if args.grid_cells is None else args.grid_cells
+    grid = _int_arg(text, "--grid-cells")
+    if not 1 <= grid <= MAX_GRID:
+        raise AnalysisError(f"--grid-cells must be between 1 and {MAX_GRID}, not {text}")
+    return grid
+
+
 def _range(args) -> None:
     """``--C L --within=LOW,HIGH``: the certified C^l set of a one-parameter family
     (:func:`analysis.bivariate.ranges.ck_set`)."""
     import sympy as sp
 
-    from ..bivariate.ranges import MAX_GRID, ck_set
+    from ..bivariate.ranges import ck_set
     from .common import _int_arg, _parse_within
 
     if args.within is None or args.C is None:
@@ -276,11 +303,9 @@ def _range(args) -> None:
     within = _parse_within(args.within)
     if not all(w.is_finite for w in within):
         raise AnalysisError("--within needs finite bounds, e.g. --within=0,1/8")
-    grid = _int_arg(args.grid_cells, "--grid-cells")
-    if not 1 <= grid <= MAX_GRID:
-        raise AnalysisError(f"--grid-cells must be between 1 and {MAX_GRID}")
+    grid = _grid_cells(args)
     budget = work_arg(args.budget, "--budget")
-    total = work_arg(args.range_budget, "--range-budget")
+    total = work_arg(RANGE_BUDGET if args.range_budget is None else args.range_budget, "--range-budget")
     general, _, label, vals = _mask_from_args(args, keep=args.param_name)
     if not general.params:
         raise AnalysisError(f"{label} has no free parameter: drop --within (--C {l} alone gives its C^{l} verdict)")
@@ -481,13 +506,20 @@ def cmd_surface(args) -> None:
     import sympy as sp
 
     if args.list:
+        for option in _given(args, OPTIONS):
+            raise AnalysisError(f"--list lists the whole catalogue: drop {option} (or drop --list)")
         return _list(args)
+    if args.grid_cells is not None:                  # options before any computation
+        _grid_cells(args)
     if args.differences is not None:
         return _differences(args)
-    if args.C is not None and not 0 <= _int_arg(args.C, "--C") <= 30:     # options before any computation
+    if args.C is not None and not 0 <= _int_arg(args.C, "--C") <= 30:
         raise AnalysisError(f"--C must be between 0 and 30, not {args.C}")
     if args.within is not None or (args.C is not None and _has_free_parameter(args)):
         return _range(args)
+    for option in _given(args, RANGE_OPTIONS):
+        raise AnalysisError(f"{option} goes with a C^l set of a free parameter (--C L --within=LOW,HIGH): "
+                            f"drop {option}" + ("" if args.C is not None else " or add --C L --within=LOW,HIGH"))
     if args.sweep:
         return _sweep(args)
     if args.refine is not None:
@@ -499,8 +531,11 @@ def cmd_surface(args) -> None:
     from ..bivariate.holder import holder_exponent, smoothness_verdicts
     from ..jsonable import fmt_bound
 
+    from ..bivariate.transition import invariant_support
+
     budget = work_arg(args.budget, "--budget")
     general, a, label, vals = _mask_from_args(args)
+    invariant_support(a)                             # its limit before the algebra: it depends on supp(a) and M only
     D = a.dilation
     sr_general = sum_rules(general)
     sr = sum_rules(a)
@@ -610,9 +645,9 @@ def register(subparsers) -> None:
     s.add_argument("--within", metavar="LOW,HIGH", help="with --C: the parameter interval (use --within=0,1/8)")
     s.add_argument("--param-name", metavar="NAME", help="with --C: the free parameter (default: the only one; a "
                                                        "catalogue default of it is dropped)")
-    s.add_argument("--grid-cells", default="8", metavar="N", help="with --C: grid cells of certified point verdicts "
-                                                                 "(default 8)")
-    s.add_argument("--range-budget", default="2000000", metavar="UNITS",
+    s.add_argument("--grid-cells", metavar="N", help="with --C: grid cells of certified point verdicts "
+                                                     "(default 8)")
+    s.add_argument("--range-budget", metavar="UNITS",
                    help="with --C: total work budget of the C^L set (units counted, not timed; default 2000000)")
     s.add_argument("--refine", type=int, metavar="N",
                    help="apply N steps to the delta sequence (samples of the basic limit function, floating point)")

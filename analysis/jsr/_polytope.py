@@ -429,6 +429,20 @@ def complete_reps(mats: Sequence[np.ndarray], r: float, st: PolytopeState, *,
     return True
 
 
+def _scaled_integer(x: float, S: int) -> int:
+    """The integer ``x 2^S`` exactly (integer arithmetic: no overflow when the vertices' scales differ by more
+    than the float range); an ``ArithmeticError`` if ``x`` is not a multiple of ``2^-S``.
+
+    >>> _scaled_integer(0.75, 2), _scaled_integer(1e300, 600) == int(1e300) << 600
+    (3, True)
+    """
+    num, den = x.as_integer_ratio()                 # den is a power of 2
+    q, r = divmod(num << S if S >= 0 else num, den if S >= 0 else den << -S)
+    if r:
+        raise ArithmeticError("vertex is not the dyadic it claims to be")
+    return q
+
+
 @dataclass
 class Certificate:
     bound: Fraction            # c with ||A_i / r||_P <= c for all i (rigorous)
@@ -446,11 +460,7 @@ def certify_polytope(F: Family, r: Fraction, st: PolytopeState) -> Certificate |
         return None
     S = max(st.shifts)
     # V = Vint / 2^S exactly
-    Vint = [[int(np.ldexp(st.V[j][a], S)) for j in range(m)] for a in range(n)]
-    for j in range(m):   # sanity: exactness of the dyadic representation
-        for a in range(n):
-            if np.ldexp(float(Vint[a][j]), -S) != st.V[j][a]:
-                raise ArithmeticError("vertex is not the dyadic it claims to be")
+    Vint = [[_scaled_integer(float(st.V[j][a]), S) for j in range(m)] for a in range(n)]
     Vz = fmpz_mat(Vint)
     # basis and ||B^{-1}||_1, exactly
     Vm = st.matrix()
