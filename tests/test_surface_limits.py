@@ -92,8 +92,10 @@ def test_a_too_large_invariant_support_is_refused_before_the_algebra(capsys):
      "--differences is a mode of its own: drop --param-name"),
     (["--file", "."], "is a folder: give the path of a mask file MASK.toml or MASK.json"),
     (["--file", "mask"], "'mask' has no suffix: give the path of a mask file MASK.toml"),
+    (["--scheme", "kobbelt-quad", "--C", "1", "--within=0,1/4", "--range-budget", "1000"],
+     "this family is a tensor product, whose C^l set is computed by the univariate route: drop --range-budget"),
 ], ids=["grid-cells-0", "grid-cells-alone", "param-name", "param-name-fixed", "range-budget", "list", "differences",
-        "folder", "no-suffix"])
+        "folder", "no-suffix", "range-budget-tensor"])
 def test_options_that_would_be_ignored_are_refused(capsys, argv, message):
     assert message in _error(capsys, "surface", *argv)
 

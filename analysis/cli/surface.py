@@ -315,6 +315,10 @@ def _range(args) -> None:
 
     t = tensor_factors(general)
     if t.value is not None:                       # b(z1) c(z2), M = m I: the univariate route, exactly
+        if args.range_budget is not None:
+            raise AnalysisError("--range-budget bounds the bivariate boxes; this family is a tensor product, whose "
+                                "C^l set is computed by the univariate route: drop --range-budget (--budget sets the "
+                                "work of each verdict)")
         return _tensor_range(args, general, t.value, label, l, within, grid, budget)
     r = ck_set(general, l, args.param_name, within=within, grid=grid, budget=total, point_budget=budget,
                box_budget=budget)
