@@ -33,7 +33,6 @@ Theory 163 (2011) (the shift tau; here the bivariate analogue).
 
 from __future__ import annotations
 
-from fractions import Fraction
 from typing import Any
 
 import sympy as sp

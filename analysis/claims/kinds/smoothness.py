@@ -46,8 +46,6 @@ S. Dubuc, J. Math. Anal. Appl. 114 (1986) (the four-point scheme at w = 1/16: al
 
 from __future__ import annotations
 
-import sympy as sp
-
 from ...result import CERTIFIED, AnalysisError, Result
 from ..model import Number, Verdict
 from .base import Kind, evidence
