@@ -572,6 +572,26 @@ def free_weight(name: str) -> sp.Symbol:
     return sp.Symbol(f"free_{name}", real=True)
 
 
+def regular_next_to_centre(rules: LocalRules) -> bool:
+    """Whether every new point except the centre is made by the regular stencils (the rules are those of
+    :func:`~analysis.vertex.rules.triangle_rules` / :func:`~analysis.vertex.rules.quad_rules` with the same centre
+    rule). The characteristic map's segment is read as box-spline (bicubic) patches of the level-1 net, which is
+    its limit only when every later refinement there is regular; a special rule for the edge points next to the
+    centre (``--edge``) also makes the points on the centre's edges at every finer level, inside those patches.
+
+    >>> from analysis.vertex.rules import scheme_rules, user_rules
+    >>> regular_next_to_centre(scheme_rules("loop", ring=2))
+    True
+    >>> regular_next_to_centre(user_rules("triangle", "3/(8*n)", "3/8; (5/8 + cos(2*pi*j/n))/n"))
+    False
+    """
+    if rules.lattice not in ("quad", "triangle"):
+        return True
+    build = triangle_rules if rules.lattice == "triangle" else quad_rules
+    reference = build(rules.name, rules.ring, rules.rules[0], rules.source)
+    return reference.points == rules.points and reference.rules[1:] == rules.rules[1:]
+
+
 def user_rules(lattice: str, centre: str, edge: str | None = None, *, ring: int = 2,
                free: str | None = None) -> LocalRules:
     """Rules typed by a user: the regular stencils of ``lattice`` ('triangle': Loop's; 'quad':

@@ -50,7 +50,7 @@ from functools import lru_cache
 import sympy as sp
 
 from .blocks import block_charpoly, c, cos_minimal_polynomial, fourier_block, lam, special_frequencies
-from .rules import C1, LocalRules, n_sym
+from .rules import C1, LocalRules, n_sym, regular_next_to_centre
 
 PRECISIONS = (64, 128, 256, 512)
 
@@ -509,12 +509,16 @@ def _ring_not_evaluated(rules: LocalRules) -> str:
     """Why eigenfunctions on the ring are not evaluated for these rules."""
     if rules.lattice == "sqrt3":
         return "eigenfunctions on the ring are not evaluated for sqrt(3) (no patch form)"
+    if rules.ring == 2 and rules.lattice in ("quad", "triangle"):
+        return ("eigenfunctions on the ring are not evaluated: the new points next to the centre are not made by "
+                "the regular stencils (e.g. a given --edge rule), so the segment is not a box-spline patch")
     return RING_NOT_EVALUATED
 
 
 def _ring_evaluated(rules: LocalRules) -> bool:
-    """Whether eigenfunctions on the ring are evaluated for these rules (segment patches as in :mod:`.charmap`)."""
-    return rules.ring == 2 and rules.lattice in ("quad", "triangle")
+    """Whether eigenfunctions on the ring are evaluated for these rules (segment patches as in :mod:`.charmap`:
+    the 2-ring, regular stencils everywhere but at the centre)."""
+    return rules.ring == 2 and rules.lattice in ("quad", "triangle") and regular_next_to_centre(rules)
 
 
 def _inconclusive(a: VertexAnalysis, reason: str, final: bool = False) -> None:

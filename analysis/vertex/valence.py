@@ -41,7 +41,7 @@ import sympy as sp
 
 from ..result import CERTIFIED, INCONCLUSIVE, NUMERICAL, REFUTED, AnalysisError, Result
 from .blocks import block_charpoly, c, fourier_block, lam, special_frequencies
-from .rules import C1, LocalRules, n_sym
+from .rules import C1, LocalRules, n_sym, regular_next_to_centre
 from .spectrum import VertexAnalysis, analyse, arb_value, exact_rational
 
 #: the largest valence range the command accepts
@@ -62,7 +62,12 @@ NO_CHARACTERISTIC_MAP = {
     "triangle, interpolating": "characteristic map not certified (the butterfly's regular basis functions are not "
                                "piecewise polynomial: no Bernstein-form Jacobian certificate)",
     "sqrt3": "characteristic map not checked (no patch form of the regular sqrt(3) limit functions here)",
+    "irregular": "characteristic map not checked (the new points next to the centre are not made by the regular "
+                 "stencils, e.g. a given --edge rule: the segment's limit is not a box-spline patch of the level-1 "
+                 "net, the only form certified here)",
 }
+#: the key of :data:`NO_CHARACTERISTIC_MAP` for rules that are not regular next to the centre
+IRREGULAR = "irregular"
 
 
 def closed_form_lambda(rules: LocalRules) -> dict[str, Any]:
@@ -172,7 +177,8 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
             wit["reason"] = a.curvature_reason
         out["curvature"] = Result(value=a.curvature, status=a.curvature_status, witness=wit, provenance=prov)
     cm = None
-    if a.reif_ok and has_characteristic_map(rules):
+    irregular = a.reif_ok and has_characteristic_map(rules) and not regular_next_to_centre(rules)
+    if a.reif_ok and has_characteristic_map(rules) and not irregular:
         from .charmap import characteristic_map
 
         for prec in (128, 256):
@@ -188,7 +194,7 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
 
         nc = not_c1(rules, n)
         out["not_c1"] = nc
-    status, verdict = c1_verdict(a, cm, rules.lattice, nc)
+    status, verdict = c1_verdict(a, cm, IRREGULAR if irregular else rules.lattice, nc)
     c1_witness = {"verdict": verdict}
     if status == REFUTED:
         c1_witness.update({k: nc.witness[k] for k in ("theorem", "hypotheses")})
