@@ -478,7 +478,7 @@ def _common_root(e: Eigenvalue, top: Eigenvalue, n: int, sign: int, eigenvalues:
     try:
         coeffs = []
         for q in reversed(G.all_coeffs()):
-            v = arb_value(dom.to_sympy(q) if not rational else sp.Rational(q), n, ctx.prec)
+            v = arb_value(q, n, ctx.prec)            # all_coeffs: sympy numbers in cos(2 pi/n)
             if v is None:
                 return False
             coeffs.append(acb(v))
