@@ -44,7 +44,11 @@ certified characteristic map where the module has one). The verdicts:
 * subdominant eigenvalue: at each valence ``E = EXPR(n)`` is compared with lambda, a root of the exact
   factor ``F(lam, cos(2 pi/n))`` of block 1 isolated in an Arb ball: if E's Arb enclosure misses that
   ball, E != lambda; otherwise ``F(E)`` is decided exactly (its minimal polynomial over Q, sympy): zero
-  and E's enclosure meeting no other root's ball gives E = lambda, nonzero gives E != lambda.
+  and E's enclosure meeting no other root's ball gives E = lambda, nonzero gives E != lambda. When another
+  block's eigenvalue is certified larger in modulus than block 1's leading one, lambda is that block's
+  eigenvalue (:func:`analysis.vertex.spectrum.subdominant`: the largest modulus below 1, certified above
+  every other but 1) and E is compared with it the same way (its factor at cos(2 pi k/n)); if it is not
+  certified, the claim is inconclusive.
 
 References
 ----------
