@@ -71,6 +71,9 @@ def _rules(args, n: int | None):
         if args.scheme not in SCHEME_NAMES:
             raise AnalysisError(f"unknown scheme {args.scheme!r}: use one of {', '.join(SCHEME_NAMES)}, "
                                 "or user rules with --lattice and --centre")
+        if args.scheme == "doo-sabin" and args.ring:
+            raise AnalysisError("--ring does not apply to doo-sabin: its local matrix is fixed (the n-gon with its n "
+                                "edge quads and n vertex quads, 4n points); omit --ring")
         return scheme_rules(args.scheme, ring, n, _tension(args.tension))
     if args.tension:
         raise AnalysisError("--tension applies to --scheme butterfly or modified-butterfly only")
@@ -97,14 +100,27 @@ def _line(e: dict) -> str:
         return f"n={n:<3d} {e['reif']['witness'].get('reason') or 'not decided'}  [inconclusive]"
     lam = e["lambda"]
     exact = lam["value"] if lam["value"] is not None else f"root of {lam['witness']['polynomial']}"
-    parts = [f"n={n:<3d} lambda = {exact} ~ {lam['witness']['float']:.10f}"]
+    im = lam["witness"].get("float_imag")
+    approx = (f"{lam['witness']['float']:.10f}" if im is None
+              else f"{lam['witness']['float']:.10f}{im:+.10f}i (complex)")
+    parts = [f"n={n:<3d} lambda = {exact} ~ {approx}"]
+    if "subdominant" in e:
+        sub = e["subdominant"]
+        parts.append("(block 1's leading eigenvalue; not subdominant: "
+                     + (f"the subdominant eigenvalue is block {sub['witness']['block']}'s, ~ "
+                        f"{_approx(sub['witness'])} [certified])" if sub["status"] == "certified"
+                        else f"{sub['witness']['reason']} [inconclusive])"))
     cv = e["curvature"]
     if "mu" in e:
         cmp = cv["witness"]["mu_vs_lambda2"]
         rel = {"<": "< lambda^2", "=": "= lambda^2", ">": "> lambda^2"}.get(cmp, "vs lambda^2 undecided")
         parts.append(f"mu ~ {e['mu']['witness']['float']:.10f} ({rel}, block {e['mu']['witness']['block']})")
     if "separation" in e:
-        parts.append(f"gap >= {e['separation']['witness']['float']:.3g}")
+        sep = e["separation"]
+        if -1e-12 < sep["witness"]["float"] < 0:     # a ball about 0 (a tie): no denormal bound printed
+            parts.append("gap: not certified positive")
+        else:
+            parts.append(f"gap >= {sep['witness']['float']:.3g}")
     r = e["reif"]
     parts.append("Reif: " + ("holds" if r["value"] else ("fails: " + r["witness"]["reason"]) if r["status"] == "certified"
                              else "undecided") + f" [{r['status']}]")
@@ -112,6 +128,13 @@ def _line(e: dict) -> str:
     parts.append(f"curvature: {cv['value']}" + (f" ({why})" if why else "") + f" [{cv['status']}]")
     parts.append(f"C^1: {e['c1']['witness']['verdict']} [{e['c1']['status']}]")
     return "  ".join(parts)
+
+
+def _approx(w: dict) -> str:
+    """An eigenvalue's float from its witness (real, or the ball's midpoint when complex)."""
+    if w.get("float") is not None:
+        return f"{w['float']:.6g}"
+    return str(w["ball"])
 
 
 def _summary(name: str, closed: dict, entries: list[dict], lattice: str = "") -> str:

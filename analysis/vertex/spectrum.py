@@ -91,6 +91,9 @@ class VertexAnalysis:
     curvature_final: bool = False      # inconclusive for a reason that more precision does not remove
     prec: int = 0
     notes: list = field(default_factory=list)
+    #: eigenvalues of other blocks certified larger in modulus than block 1's leading one (then that one is
+    #: not the subdominant eigenvalue), largest first
+    above_lambda: list = field(default_factory=list)
 
 
 # --------------------------------------------------------------------------------------------------
@@ -302,7 +305,8 @@ def analyse(rules: LocalRules, n: int, *, max_prec: int = 512, curvature: bool =
     except TypeError:                            # rules holding a mutable part: computed, not remembered
         return _analyse.__wrapped__(rules, n, max_prec, curvature, ctx.prec)
     a = _analyse(rules, n, max_prec, curvature, ctx.prec)
-    return replace(a, eigenvalues=list(a.eigenvalues), checks=dict(a.checks), notes=list(a.notes))
+    return replace(a, eigenvalues=list(a.eigenvalues), checks=dict(a.checks), notes=list(a.notes),
+                   above_lambda=list(a.above_lambda))
 
 
 @lru_cache(maxsize=128, typed=True)
@@ -354,6 +358,7 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int, curvatur
     simple = top.mult == 1
     dominated = all(e.modulus < top.modulus for e in others)
     below_one = top.modulus < 1
+    a.above_lambda = sorted((e for e in others if e.modulus > top.modulus), key=lambda e: -float(e.modulus.lower()))
     a.checks.update({"lambda real": bool(real), "lambda > 0": bool(positive), "lambda < 1": bool(below_one),
                      "lambda simple in block 1 (double: blocks 1, n-1; semisimple)": bool(simple),
                      "others < lambda in modulus": bool(dominated)})
@@ -362,7 +367,7 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int, curvatur
     else:
         failed = [k for k, v in a.checks.items() if not v]
         # a failure is certified when the ball comparison that failed is decided the other way
-        bigger = [e for e in others if e.modulus > top.modulus]
+        bigger, tie = [e for e in others if e.modulus > top.modulus], None
         if bigger:
             e = bigger[0]
             a.reif_ok, a.reif_status = False, "certified"
@@ -383,10 +388,40 @@ def _check(rules: LocalRules, n: int, eig: list[Eigenvalue], prec: int, curvatur
             a.reif_reason = "the subdominant eigenvalue is not real"
         else:
             a.reif_reason = "not decided at " + str(prec) + " bits: " + ", ".join(failed)
+        if not dominated and not bigger and tie is None:    # not proven either way: no false that was not proven
+            a.checks["others < lambda in modulus"] = None
     a.lam_exact = _exact_root(top.factor, top.ball, n, 1, _siblings(eig, top))
     if curvature:
         _curvature(rules, a, others, n)
     return a
+
+
+def subdominant(a: VertexAnalysis) -> tuple[Eigenvalue | None, str]:
+    """The subdominant eigenvalue over *all* blocks when another block's eigenvalue is certified larger in
+    modulus than block 1's leading one (``a.above_lambda``): the one of largest modulus, returned when its
+    modulus is certified below 1 and above every other eigenvalue's (but block 0's eigenvalue 1);
+    otherwise None and why. (When no block dominates block 1, ``a.lam`` is the subdominant eigenvalue.)
+
+    Examples
+    --------
+    >>> from analysis.vertex.rules import user_rules
+    >>> a = analyse(user_rules("triangle", "0", None, ring=2), 3, curvature=False)
+    >>> e, _ = subdominant(a)
+    >>> e.k, float(e.ball.real.mid())
+    (0, 0.625)
+    """
+    if not a.above_lambda:
+        return None, "no block's eigenvalue exceeds block 1's leading eigenvalue"
+    top = max(a.above_lambda, key=lambda e: float(e.modulus.lower()))
+    one = [e for e in a.eigenvalues if e.k == 0 and e.real and e.ball.real.contains(1)]
+    rest = [e for e in a.eigenvalues if e is not top and not (one and e is one[0])]
+    if not top.modulus < 1:
+        return None, (f"block {top.k}'s eigenvalue {_fmt(top.ball)} exceeds block 1's leading eigenvalue and is "
+                      "not certified below 1 in modulus")
+    if not all(e.modulus < top.modulus for e in rest):
+        return None, (f"block {top.k}'s eigenvalue {_fmt(top.ball)} exceeds block 1's leading eigenvalue, but "
+                      "another eigenvalue is not certified below it in modulus")
+    return top, f"block {top.k}'s eigenvalue {_fmt(top.ball)} (certified: every other eigenvalue but 1 is smaller)"
 
 
 def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue], n: int) -> str | None:
@@ -399,10 +434,66 @@ def _tie_with_lambda(a: VertexAnalysis, top: Eigenvalue, others: list[Eigenvalue
         if e.modulus < top.modulus or not e.real:
             continue
         sign = 1 if e.ball.real > 0 else (-1 if e.ball.real < 0 else 0)
-        if sign and _equal_exact(e, top, lam_exact, n, sign, a.eigenvalues, power=1):
+        if sign and (_equal_exact(e, top, lam_exact, n, sign, a.eigenvalues, power=1)
+                     or _common_root(e, top, n, sign, a.eigenvalues, a.prec)):
             return (f"an eigenvalue of block {e.k} equals {'-' if sign < 0 else ''}lambda exactly "
                     f"({'lambda is not double' if sign > 0 else 'not strictly below lambda in modulus'})")
     return None
+
+
+def _common_root(e: Eigenvalue, top: Eigenvalue, n: int, sign: int, eigenvalues: list[Eigenvalue],
+                 prec: int) -> bool:
+    """Is ``e = sign * top``, proven through a common factor? (Any algebraic lambda, e.g. sqrt(2)/8 + 1/4,
+    shared by three blocks of the butterfly with tension 1/32 at n = 3.)
+
+    Algorithm: G = gcd(F_top(lam), F_e(sign lam)) over Q(cos(2 pi/n)) (sympy; each factor at its block's
+    cosine); G's roots isolated and refined in Arb (G divides a squarefree factor). Each root r of F_top
+    lies in one of the isolating balls of F_top's roots, so a root ball of G meeting top's ball and no
+    other of them holds top; if it also meets ``sign * e``'s ball and no other ``sign *`` ball of F_e's
+    roots, that root is also sign * e. False when not proven.
+
+    >>> from analysis.vertex.rules import scheme_rules
+    >>> a = analyse(scheme_rules("butterfly", 3, 3, sp.Rational(1, 32)), 3, curvature=False)
+    >>> a.reif_ok, a.reif_status, a.reif_reason
+    (False, 'certified', 'an eigenvalue of block 0 equals lambda exactly (lambda is not double)')
+    """
+    from flint import acb, acb_poly, arb, ctx
+
+    cos1 = sp.cos(2 * sp.pi / n)
+
+    def at_valence(f: Eigenvalue, s: int) -> sp.Expr:
+        return sp.expand(f.factor.as_expr().subs(c, sp.chebyshevt(f.k, C1)).subs(C1, cos1).subs(lam, s * lam))
+
+    ft, fe = at_valence(top, 1), at_valence(e, sign)
+    rational = _cos_value(1, n) is not None
+    try:
+        dom = sp.QQ if rational else sp.QQ.algebraic_field(cos1)
+        G = sp.Poly(ft, lam, domain=dom).gcd(sp.Poly(fe, lam, domain=dom))
+    except (sp.PolificationFailed, sp.CoercionFailed, sp.GeneratorsNeeded, NotImplementedError):
+        return False
+    if G.degree() < 1:
+        return False
+    old = ctx.prec
+    ctx.prec = max(prec, 128)
+    try:
+        coeffs = []
+        for q in reversed(G.all_coeffs()):
+            v = arb_value(q, n, ctx.prec)            # all_coeffs: sympy numbers in cos(2 pi/n)
+            if v is None:
+                return False
+            coeffs.append(acb(v))
+        try:
+            roots = acb_poly(coeffs).roots(tol=arb(2) ** (-ctx.prec // 2), maxprec=4 * ctx.prec)
+        except ValueError:
+            return False
+        tops, es = _siblings(eigenvalues, top), [b * sign for b in _siblings(eigenvalues, e)]
+
+        def only(r, ball, balls) -> bool:
+            return r.overlaps(ball) and sum(1 for b in balls if r.overlaps(b)) == 1
+
+        return any(only(r, top.ball, tops) and only(r, e.ball * sign, es) for r in roots)
+    finally:
+        ctx.prec = old
 
 
 def _siblings(eig: list[Eigenvalue], e: Eigenvalue) -> list:
@@ -435,7 +526,11 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
     a.mu = mu
     lam2 = top.ball.real * top.ball.real
     if all(e.modulus < lam2 for e in rest):
-        a.mu_vs_lam2, a.curvature, a.curvature_status = "<", "zero", "certified"
+        a.mu_vs_lam2 = "<"
+        if rules.ring < 2 and rules.lattice in ("quad", "triangle"):
+            _inconclusive(a, ONE_RING_ZERO, final=True)
+            return
+        a.curvature, a.curvature_status = "zero", "certified"
         return
     big = [e for e in rest if e.modulus > lam2]
     if big:
@@ -499,6 +594,11 @@ def _curvature(rules: LocalRules, a: VertexAnalysis, others: list[Eigenvalue], n
         return
     a.notes.append(nonzero)
     a.curvature, a.curvature_status = "bounded", "certified"
+
+
+#: why "zero" curvature is not certified from the 1-ring's matrix
+ONE_RING_ZERO = ("mu < lambda^2 on the 1-ring, but the 1-ring's matrix lacks eigenvalues of the 2-ring that can "
+                 "exceed lambda^2: run with the default 2-ring (omit --ring 1)")
 
 
 RING_NOT_EVALUATED = ("eigenfunctions on the ring are evaluated only for Loop- and Catmull-Clark-type rules "

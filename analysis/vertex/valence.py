@@ -113,6 +113,10 @@ def c1_verdict(a: VertexAnalysis, charmap: dict | None = None, lattice: str = ""
         if charmap["status"] == REFUTED:
             return INCONCLUSIVE, (f"inconclusive: the characteristic map is regular but not injective (its boundary "
                                   f"winds {charmap['winding_number']} times), so Reif's sufficient condition fails")
+        if charmap.get("jacobian_sign_change"):
+            return INCONCLUSIVE, ("inconclusive: eigen-conditions hold; the Jacobian of the characteristic map's "
+                                  "segment patches changes sign (corner values of opposite sign, Arb: proven), so "
+                                  "the map is not regular and Reif's sufficient condition fails")
         return INCONCLUSIVE, "inconclusive: eigen-conditions hold, characteristic map not certified at " \
                              f"{charmap['precision_bits']} bits"
     if a.reif_ok:
@@ -147,12 +151,29 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
     wit = {"block": 1, "polynomial": str(lam_e.factor.as_expr().subs(C1, sp.Symbol("c1"))),
            "ball": str(ball) if lam_e.real else str(lam_e.ball), "float": float(ball.mid()),
            "c": f"cos(2*pi/{n})"}
+    if not lam_e.real:                         # a complex pair: "float" is the real part
+        wit["float_imag"] = float(lam_e.ball.imag.mid())
     if closed and closed.get("expr") is not None and n >= closed["valid_from"]:
         v = arb_value(closed["expr"], n, max(a.prec, 128))
         wit["closed_form"] = closed["lambda"]
         wit["closed_form_checked"] = bool(v is not None and ball.overlaps(v) and ball.rad() < 1e-6)
+    if a.above_lambda:           # block 1's leading eigenvalue is then not the subdominant one
+        from .spectrum import _fmt, subdominant
+
+        big = a.above_lambda[0]
+        wit["subdominant"] = False
+        wit["role"] = (f"block 1's leading eigenvalue, not the subdominant eigenvalue: block {big.k}'s eigenvalue "
+                       f"{_fmt(big.ball)} is larger in modulus (certified)")
+        sub, why = subdominant(a)
+        out["subdominant"] = Result(
+            value=None, lower=_q(sub.modulus.lower()) if sub else None, upper=_q(sub.modulus.upper()) if sub else None,
+            status=CERTIFIED if sub else INCONCLUSIVE,
+            witness={"block": sub.k if sub else None, "ball": str(sub.ball) if sub else None,
+                     "float": float(sub.ball.real.mid()) if sub and sub.real else None, "reason": why,
+                     "bound": "modulus"}, provenance=prov)
     out["lambda"] = Result(value=a.lam_exact, lower=_q(ball.lower()), upper=_q(ball.upper()),
-                           status=CERTIFIED if lam_e.real else INCONCLUSIVE, witness=wit, provenance=prov)
+                           status=CERTIFIED if lam_e.real and not a.above_lambda else INCONCLUSIVE, witness=wit,
+                           provenance=prov)
     if a.separation is not None:
         out["separation"] = Result(lower=_q(a.separation.lower()),
                                    status=CERTIFIED if a.separation > 0 else INCONCLUSIVE,
@@ -185,6 +206,12 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
             cm = characteristic_map(rules, n, ball, prec)
             if cm["status"] != INCONCLUSIVE:
                 break
+        if cm["status"] == INCONCLUSIVE:        # injectivity not decided: no false that was not proven
+            from .charsign import jacobian_sign_change
+
+            cm = dict(cm, injective=None)
+            if not cm["regular"]:
+                cm["jacobian_sign_change"] = jacobian_sign_change(rules, n, ball, cm["precision_bits"])
         out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
                                            witness={k: v for k, v in cm.items() if k not in ("status", "method")},
                                            provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})

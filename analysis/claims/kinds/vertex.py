@@ -44,7 +44,11 @@ certified characteristic map where the module has one). The verdicts:
 * subdominant eigenvalue: at each valence ``E = EXPR(n)`` is compared with lambda, a root of the exact
   factor ``F(lam, cos(2 pi/n))`` of block 1 isolated in an Arb ball: if E's Arb enclosure misses that
   ball, E != lambda; otherwise ``F(E)`` is decided exactly (its minimal polynomial over Q, sympy): zero
-  and E's enclosure meeting no other root's ball gives E = lambda, nonzero gives E != lambda.
+  and E's enclosure meeting no other root's ball gives E = lambda, nonzero gives E != lambda. When another
+  block's eigenvalue is certified larger in modulus than block 1's leading one, lambda is that block's
+  eigenvalue (:func:`analysis.vertex.spectrum.subdominant`: the largest modulus below 1, certified above
+  every other but 1) and E is compared with it the same way (its factor at cos(2 pi k/n)); if it is not
+  certified, the claim is inconclusive.
 
 References
 ----------
@@ -271,7 +275,7 @@ class Vertex(Kind):
 
     def _eigenvalue(self) -> Verdict:
         from ...vertex.rules import n_sym
-        from ...vertex.spectrum import analyse
+        from ...vertex.spectrum import _exact_root, _siblings, analyse, subdominant
 
         rows, results = [], []
         shown = self.get("value")
@@ -283,11 +287,21 @@ class Vertex(Kind):
                 return self.inconclusive(f"lambda(n) = {shown}: the eigenvalues are not isolated at n = {n}",
                                          settle="higher precision in the eigenvalue isolation",
                                          evidence=[_table(rows)])
-            equal, how = compare_lambda(self.expr, a, n)
             prov = {"method": "Fourier blocks of the local subdivision matrix; Arb isolation; exact comparison",
                     "valence": n, "rules": rules.source}
-            lam_text = sp.sstr(a.lam_exact) if a.lam_exact is not None else \
-                f"root of {sp.sstr(a.lam.factor.as_expr())} near {float(a.lam.ball.real.mid()):.10f}"
+            sub, why = (a.lam, "") if not a.above_lambda else subdominant(a)
+            if sub is None:      # another block dominates block 1 but its eigenvalue is not certified subdominant
+                rows.append((str(n), "not decided", "undecided"))
+                return self.inconclusive(f"lambda(n) = {shown} not decided at n = {n}: {why}",
+                                         settle="higher precision in the eigenvalue isolation",
+                                         evidence=[_table(rows)])
+            equal, how = compare_lambda(self.expr, a, n, sub)
+            exact = a.lam_exact if sub is a.lam else _exact_root(sub.factor, sub.ball, n, sub.k,
+                                                                  _siblings(a.eigenvalues, sub))
+            lam_text = sp.sstr(exact) if exact is not None else \
+                f"root of {sp.sstr(sub.factor.as_expr())} near {float(sub.ball.real.mid()):.10f}"
+            if sub is not a.lam:
+                lam_text += f" (block {sub.k}: it exceeds block 1's leading eigenvalue)"
             if equal is False:
                 rows.append((str(n), lam_text, "differs"))
                 r = Result(value=False, status=REFUTED, witness={"lambda": lam_text, "claimed": sp.sstr(
@@ -318,9 +332,9 @@ def _reif_only(rules, n: int) -> dict:
                                        "valence": n, "rules": rules.source})}
 
 
-def compare_lambda(expr: sp.Expr, a, n: int) -> tuple[bool | None, str]:
-    """Is ``expr`` at valence n the subdominant eigenvalue ``a.lam``? (True / False / None: not decided,
-    with how it was decided; see the module docstring).
+def compare_lambda(expr: sp.Expr, a, n: int, e=None) -> tuple[bool | None, str]:
+    """Is ``expr`` at valence n the subdominant eigenvalue ``a.lam`` (or ``e``, an eigenvalue of block
+    ``e.k``)? (True / False / None: not decided, with how it was decided; see the module docstring).
 
     >>> from analysis.vertex.rules import scheme_rules, n_sym
     >>> from analysis.vertex.spectrum import analyse
@@ -334,6 +348,7 @@ def compare_lambda(expr: sp.Expr, a, n: int) -> tuple[bool | None, str]:
     from ...vertex.rules import C1, n_sym
     from ...vertex.spectrum import _siblings, arb_value
 
+    e = a.lam if e is None else e
     E = expr.subs(n_sym, n)
     if E.has(sp.zoo, sp.nan, sp.oo, -sp.oo):
         return False, f"the formula is undefined at n = {n}"
@@ -342,19 +357,19 @@ def compare_lambda(expr: sp.Expr, a, n: int) -> tuple[bool | None, str]:
         enc = arb_value(E, n, bits)
         if enc is None:
             return None, "the formula is outside what the Arb evaluator encloses"
-        if not a.lam.ball.overlaps(acb(enc)):
+        if not e.ball.overlaps(acb(enc)):
             return False, f"its Arb enclosure {enc.str(10, radius=False)} misses lambda's isolating ball"
-    meets = [s for s in _siblings(a.eigenvalues, a.lam) if s.overlaps(acb(enc))]
-    cos1 = sp.cos(2 * sp.pi / n)
-    R = a.lam.factor.as_expr().subs({lam: E, c: cos1, C1: cos1})
+    meets = [s for s in _siblings(a.eigenvalues, e) if s.overlaps(acb(enc))]
+    cos1, cosk = sp.cos(2 * sp.pi / n), sp.cos(2 * sp.pi * e.k / n)
+    R = e.factor.as_expr().subs({lam: E, c: cosk, C1: cos1})
     R = sp.expand(R)
     x = sp.Dummy("x")
     zero = R == 0 or sp.minimal_polynomial(R, x) == x
     if not zero:
-        return False, "it is not a root of block 1's factor of lambda (exact minimal polynomial)"
+        return False, f"it is not a root of block {e.k}'s factor of lambda (exact minimal polynomial)"
     if len(meets) != 1:
         return None, "its enclosure meets more than one root's ball"
-    return True, "a root of block 1's factor (exact) in lambda's isolating ball and no other"
+    return True, f"a root of block {e.k}'s factor (exact) in lambda's isolating ball and no other"
 
 
 def _table(rows: list) -> object:
