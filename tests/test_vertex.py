@@ -364,7 +364,10 @@ def test_a_jordan_block_at_lambda_squared_is_not_bounded_curvature(monkeypatch, 
             C[i, m - 1] = -co[i]
         return C
 
+    import analysis.vertex.exact_blocks as exact_blocks
+
     monkeypatch.setattr(spec, "fourier_block", companion)
+    monkeypatch.setattr(exact_blocks, "fourier_block", companion)          # the exact eigenspaces use it too
     spec._analyse.cache_clear()
     b = analyse(rules, 4)
     assert b.mu_vs_lam2 == "=" and (b.curvature, b.curvature_status) == ("inconclusive", "inconclusive")

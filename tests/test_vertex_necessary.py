@@ -11,7 +11,7 @@ import sympy as sp
 
 from analysis.vertex.necessary import HI, HOLDER_BUDGET, R_BOUND, RING, interpolating, not_c1
 from analysis.vertex.rules import butterfly_rules, modified_butterfly_rules, scheme_rules
-from analysis.vertex.spectrum import jordan_ranks
+from analysis.vertex.exact_blocks import jordan_ranks
 
 
 def test_interpolating_is_read_from_the_rules():

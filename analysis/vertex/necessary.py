@@ -55,7 +55,7 @@ the checks below.]
 
 What is checked, on the 3-ring (spectrum, Jordan structure) and the ``RING``-ring (eigenfunction):
 :func:`interpolating` (on both, exact), :func:`analysis.vertex.spectrum.analyse` (1 simple; every eigenvalue proven equal to lambda exactly — sign and
-value — or certified smaller in modulus), :func:`analysis.vertex.spectrum.jordan_ranks` (ranks of the powers of
+value — or certified smaller in modulus), :func:`analysis.vertex.exact_blocks.jordan_ranks` (ranks of the powers of
 ``B_k - lambda I``, exact over ``Q(exp(2 pi i/n))``, where lambda is exact), :func:`.zorin.outer_rings_nilpotent`
 (rings 4..``RING`` add only the eigenvalue 0, so lambda's Jordan structure is the 3-ring's), the block-k
 eigenvector in Arb (:func:`analysis.vertex.charmap.eigenvector`: geometrically simple), the regular butterfly's
@@ -162,7 +162,8 @@ def _leading_block(rules: LocalRules, n: int) -> dict | str:
     """Hypotheses 2 and 3 on the 3-ring: ``{"top", "k", "chain", "ties"}`` or why not."""
     import sympy as sp
 
-    from .spectrum import _equal_exact, _exact_root, _lambda_in_c1, _siblings, analyse, jordan_ranks
+    from .exact_blocks import jordan_ranks
+    from .spectrum import _equal_exact, _exact_root, _lambda_in_c1, _siblings, analyse
 
     a = analyse(rules, n, curvature=False)
     if not a.checks.get("1 simple"):
