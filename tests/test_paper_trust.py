@@ -291,6 +291,8 @@ def test_data_outputs_in_unwritable_places_are_checked_first(capsys, monkeypatch
 # --------------------------------------------------------------------------------------------
 
 def test_formula_images_are_rewritten_and_orphans_removed(tmp_path, capsys, evaluator_module):
+    from analysis.report.files import record_written
+
     name, _, ran = evaluator_module
     f = _paper(tmp_path, evaluator=f"{name}:check", args=[str(ran)])
     out = tmp_path / "out"
@@ -302,10 +304,13 @@ def test_formula_images_are_rewritten_and_orphans_removed(tmp_path, capsys, eval
     orphans = [out / "figures" / "formulas" / "f-000000000000.svg", out / "figures" / "old-figure.png"]
     kept = [out / "figures" / "notes.txt", out / "figures" / "formulas" / "f-111111111111.svg", out / "other.json",
             out / "stale.md"]
-    for p in orphans + kept:
+    mine = [out / "figures" / "holiday.png", out / "figures" / "formulas" / "f-222222222222.svg"]
+    for p in orphans + kept + mine:
         p.write_text("x")
+    record_written(out, orphans + kept[1:2] + mine[1:])                       # as if an earlier run wrote them
+    mine[1].write_text("changed since")                                      # no longer the tool's bytes
     (out / "other.md").write_text("![formula](figures/formulas/f-111111111111.svg)")   # another report's image
-    for p in orphans + kept + svgs:
+    for p in orphans + kept + svgs + mine:
         os.utime(p, (1e9, 1e9))                                              # written before this run
     code, _, err = _run(capsys, "report", f, "--output", out, "--quiet", "--allow-python")
     assert code == 0, err
@@ -313,6 +318,22 @@ def test_formula_images_are_rewritten_and_orphans_removed(tmp_path, capsys, eval
     assert not any(p.exists() for p in orphans)
     assert all(p.exists() for p in kept)                                     # not generated / still referenced
     assert all(f"removed {p}" in err for p in orphans)
+    assert all(p.exists() for p in mine), "a file the tool cannot prove it wrote was removed"
+
+
+def test_the_users_own_images_in_the_figures_folder_are_kept(tmp_path, capsys):
+    """A picture of the user's in ``OUTPUT/figures/`` (older than the run, referenced by no report, named
+    like a generated figure or not) is not the tool's to remove."""
+    f = _paper(tmp_path)
+    out = tmp_path / "out"
+    own = [out / "figures" / "holiday.png", out / "figures" / "formulas" / "f-0123456789ab.svg"]
+    for p in own:
+        p.parent.mkdir(parents=True, exist_ok=True)
+        p.write_bytes(b"my picture")
+        os.utime(p, (1e9, 1e9))
+    code, _, err = _run(capsys, "report", f, "--output", out, "--quiet")
+    assert code == 0, err
+    assert all(p.read_bytes() == b"my picture" for p in own) and "removed" not in err
 
 
 def test_a_bundled_papers_own_file_is_the_bundled_paper(tmp_path):

@@ -11,6 +11,12 @@ Examples
 'four-point'
 >>> is_slug("../evil"), is_slug("/tmp/evil"), is_slug("a..b"), is_slug("004"), is_slug("blf-l-mu")
 (False, False, False, True, True)
+>>> check_claim_id("Theorem5.2(m=1)", "claim #1"), check_claim_id("(3.9)-(3.10)/P2n+1", "claim #2")
+('Theorem5.2(m=1)', '(3.9)-(3.10)/P2n+1')
+>>> check_claim_id("<b>y</b>", "claim #3")  # doctest: +ELLIPSIS
+Traceback (most recent call last):
+...
+analysis.result.AnalysisError: claim #3: id '<b>y</b>' ... letters, digits, spaces and . , : ; _ - + = ^ / ( ) > ' *, ...
 >>> check_slug("/tmp/evil", "[paper] id", '"900"')
 Traceback (most recent call last):
 ...
@@ -23,7 +29,7 @@ import re
 
 from ..result import AnalysisError
 
-__all__ = ["SLUG", "MAX_LENGTH", "MAX_GENERATED", "is_slug", "check_slug"]
+__all__ = ["SLUG", "MAX_LENGTH", "MAX_GENERATED", "is_slug", "check_slug", "CLAIM_ID", "check_claim_id"]
 
 #: the characters of a name that becomes (part of) a file name
 SLUG = re.compile(r"[A-Za-z0-9][A-Za-z0-9._-]*")
@@ -47,3 +53,23 @@ def check_slug(name, what: str, example: str, max_length: int = MAX_LENGTH) -> s
         raise AnalysisError(f"{what} {shown} cannot be a file name: write 1 to {max_length} letters, digits, '.', "
                             f"'_' or '-', starting with a letter or digit, without '..' (e.g. {example})")
     return name
+
+
+#: the characters of a claim id (the paper's numbering: ``Theorem5.2(m=1)``, ``(3.9)-(3.10)/P2n+1``,
+#: ``Sect2.2(u>0)``): letters, digits, spaces and this punctuation — no ``<``, ``&``, ``|``, ``[``,
+#: backtick or quote that could become markup in a report, no control characters
+CLAIM_ID = re.compile(r"[\w(][\w .,:;+=^/()>'*-]*")
+#: the longest claim id
+MAX_CLAIM_ID = 120
+
+
+def check_claim_id(cid, where: str) -> str:
+    """``cid`` when it is a valid claim id (see :data:`CLAIM_ID`; no ``..``, no space at either end), else a
+    one-line :class:`AnalysisError` saying which characters are allowed."""
+    if (not isinstance(cid, str) or not 0 < len(cid) <= MAX_CLAIM_ID or CLAIM_ID.fullmatch(cid) is None
+            or cid != cid.strip() or ".." in cid):
+        shown = repr(cid) if not isinstance(cid, str) or len(cid) <= 80 else repr(cid[:77] + "...")
+        raise AnalysisError(f"{where}: id {shown} is not a claim id: write 1 to {MAX_CLAIM_ID} letters, digits, "
+                            "spaces and . , : ; _ - + = ^ / ( ) > ' *, starting with a letter, digit or '(', without "
+                            "'..' (e.g. \"Theorem3.1\" or \"Lemma2(m=1)\")")
+    return cid

@@ -114,7 +114,7 @@ from .kinds.base import rules_symbol
 from .kinds.other import PYTHON_MODES, Python
 from .model import Claim, Paper
 from ..algebra.reader import as_expr
-from .names import check_slug
+from .names import check_claim_id, check_slug
 
 __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META", "MAX_BYTES", "MAX_DEPTH"]
 
@@ -394,6 +394,7 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
         cid = t.get("id")
         if not isinstance(cid, str) or not cid:
             raise AnalysisError(f"{where}: claim #{k} needs an id (the paper's numbering, e.g. \"Theorem3.1\")")
+        check_claim_id(cid, f"{where}: claim #{k}")
         cid = cid if ":" in cid else f"{pid}:{cid}"
         w = f"{where}: claim {cid}"
         kind = t.get("kind")

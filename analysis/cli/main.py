@@ -28,6 +28,7 @@ Examples
 from __future__ import annotations
 
 import argparse
+import errno
 import functools
 import importlib
 import os
@@ -224,16 +225,28 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
         except OSError:  # pragma: no cover
             pass
         return 0
+    except OSError as exc:
+        if exc.errno != errno.ENAMETOOLONG:
+            return _internal(fail, exc)
+        name = exc.filename if isinstance(exc.filename, str) else ""
+        shown = name if len(name) <= 60 else name[:40] + "..." + name[-15:]
+        return fail(f"the file name {shown!r} is too long for the file system (a name at most 255 bytes, a path "
+                    "at most 4096): give a shorter path", "input", 2)
     except (RecursionError, MemoryError) as exc:
         return fail(f"the input is too large or nested too deeply ({type(exc).__name__}): give a smaller input",
                     "limit", 2)
     except Exception as exc:  # never a traceback for users; SUBDIV_DEBUG=1 shows it
-        if os.environ.get("SUBDIV_DEBUG"):
-            raise
-        first = str(exc).splitlines()[0] if str(exc) else ""
-        return fail(f"{type(exc).__name__}: {first} (please report; SUBDIV_DEBUG=1 shows the traceback)",
-                    "internal", 1)
+        return _internal(fail, exc)
     return 0
+
+
+def _internal(fail, exc: BaseException) -> int:
+    """A bug: one line ``subdiv: internal error:`` (exit 1); ``SUBDIV_DEBUG=1`` shows the traceback."""
+    if os.environ.get("SUBDIV_DEBUG"):
+        raise exc
+    first = str(exc).splitlines()[0] if str(exc) else ""
+    return fail(f"{type(exc).__name__}: {first} (please report; SUBDIV_DEBUG=1 shows the traceback)",
+                "internal", 1)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -25,8 +25,9 @@ HTML reports and the JSON verdicts say so.
 
 ``--output DIR`` is created when missing (parents too). Every file is written inside it (names are
 slugs; symbolic links leading out of it are refused), atomically (temporary file, then rename), and
-rewritten on every run; afterwards the figures of ``DIR/figures`` that no report in ``DIR`` refers to
-are removed (:func:`analysis.report.files.remove_orphans`). The golden files are what the code
+rewritten on every run; afterwards the figures of ``DIR/figures`` that an earlier run wrote (listed,
+with a hash of their bytes, in ``DIR/figures/.subdiv-written.json``) and that no report in ``DIR`` refers
+to any more are removed (:func:`analysis.report.files.remove_orphans`); no other file is ever removed. The golden files are what the code
 computed, reviewed in the diff of a commit — never typed by hand.
 
 Examples
@@ -322,6 +323,9 @@ def cmd_report(args) -> None:
     from ..claims.model import get_paper, golden_path, verdicts_json
     from ..report.files import atomic_write_text, output_folder
 
+    if args.output is not None and not args.output.strip():
+        raise AnalysisError("--output needs a folder name, e.g. --output reports (leave --output out to write to "
+                            f"{REPORTS}/ of the current folder)")
     outdir = Path(args.output) if args.output else REPORTS
     if args.claim and args.write and not args.output:
         raise AnalysisError("--write with --claim would replace the paper's report and golden verdicts in "

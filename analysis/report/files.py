@@ -8,9 +8,11 @@
   that it accepts files; :func:`inside` turns a name relative to it into a path, refusing any path that
   leaves the folder once symbolic links are resolved (``../x``, an absolute name, ``figures`` linked to
   ``/etc``). Every file a report writes goes through :func:`inside`.
-* **Orphans**: :func:`remove_orphans` deletes, after a run, the figures (``.png``, ``.svg``) in the
-  folder's ``figures/`` and ``figures/formulas/`` that no report (``*.md``, ``*.html`` at the top of the
-  folder) refers to — see its docstring for exactly what it removes and what it never touches.
+* **Orphans**: :func:`record_written` lists every figure a run writes, with the SHA-256 of its bytes, in
+  the manifest ``figures/.subdiv-written.json``; :func:`remove_orphans` deletes, after a run, only the
+  figures of that manifest that no report (``*.md``, ``*.html`` at the top of the folder) refers to and
+  whose bytes are still the ones the tool wrote — a file the tool cannot prove it wrote (a user's own
+  picture in ``figures/``, whatever its name) is never removed. See its docstring for the details.
 
 >>> import tempfile, pathlib
 >>> d = pathlib.Path(tempfile.mkdtemp())
@@ -26,20 +28,27 @@ analysis.result.AnalysisError: refusing to write .../x.png: it is outside the ou
 
 from __future__ import annotations
 
+import hashlib
+import json
 import os
 import re
 import tempfile
 from pathlib import Path
+from typing import Mapping
 
 from ..result import AnalysisError
 
 __all__ = ["atomic_write_text", "atomic_write_bytes", "output_folder", "inside", "remove_orphans",
-           "GENERATED_FIGURES"]
+           "record_written", "GENERATED_FIGURES", "MANIFEST"]
 
 #: the figure files a report run generates (and may remove when no report refers to them)
 GENERATED_FIGURES = (".png", ".svg")
 #: the sub-folders of the output folder that hold generated figures
 FIGURE_FOLDERS = ("figures", "figures/formulas")
+#: the manifest of the figures the tool wrote (relative name -> SHA-256 of the bytes written)
+MANIFEST = ("figures", ".subdiv-written.json")
+#: the largest manifest read (a larger one is ignored: nothing is removed)
+MAX_MANIFEST = 4_000_000
 
 
 def atomic_write_text(path: str | os.PathLike, text: str, encoding: str = "utf-8") -> None:
@@ -121,37 +130,100 @@ def referenced_figures(root: str | os.PathLike) -> set[str]:
     return found
 
 
-def remove_orphans(root: str | os.PathLike, *, older_than: float | None = None) -> list[Path]:
-    """Remove the generated figures of the output folder ``root`` that no report refers to; the
-    removed paths.
+def _sha256(path: Path) -> str | None:
+    try:
+        return hashlib.sha256(path.read_bytes()).hexdigest()
+    except OSError:
+        return None
 
-    What is removed: regular files (never symbolic links or folders) ending in ``.png`` or ``.svg``
-    directly in ``root/figures/`` or ``root/figures/formulas/`` that no ``*.md`` or ``*.html`` report at
-    the top of ``root`` refers to (``figures/NAME`` in its text) and that were last modified before
-    ``older_than`` (a time stamp: the start of this run, so that the figures a concurrent run has just
-    written, before its report, are kept). What is never removed: reports (``*.md``, ``*.html``),
-    ``verdicts.json`` and any other file, anything outside those two folders, and anything at all when
-    ``root/figures`` leads outside ``root``.
+
+def _read_manifest(base: Path) -> dict[str, str]:
+    """The manifest of ``base`` (an empty one when missing, unreadable, too large or malformed); only
+    entries naming a figure directly in a figure folder (:data:`FIGURE_FOLDERS`) are kept."""
+    try:
+        path = inside(base, *MANIFEST)
+        if path.is_symlink() or not path.is_file() or path.stat().st_size > MAX_MANIFEST:
+            return {}
+        data = json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, ValueError, RecursionError, AnalysisError):
+        return {}
+    written = data.get("written") if isinstance(data, dict) else None
+    if not isinstance(written, dict):
+        return {}
+    return {k: v for k, v in written.items() if isinstance(k, str) and isinstance(v, str)
+            and _REFERENCE.fullmatch(k)}
+
+
+def _write_manifest(base: Path, written: Mapping[str, str]) -> None:
+    text = json.dumps({"about": "figures written by subdiv report (name: SHA-256); only these may be removed",
+                       "written": dict(sorted(written.items()))}, indent=1) + "\n"
+    atomic_write_text(inside(base, *MANIFEST), text)
+
+
+def record_written(root: str | os.PathLike, paths) -> None:
+    """Add the figure files ``paths`` (inside ``root``'s figure folders, just written by this run) to the
+    manifest of ``root``, each with the SHA-256 of its bytes; the manifest is rewritten atomically."""
+    paths = list(paths)
+    if not paths:
+        return
+    base = Path(root).resolve()
+    written = _read_manifest(base)
+    for p in paths:
+        rel = Path(p).resolve().relative_to(base).as_posix()
+        digest = _sha256(Path(p))
+        if digest is not None:
+            written[rel] = digest
+    _write_manifest(base, written)
+
+
+def remove_orphans(root: str | os.PathLike, *, older_than: float | None = None) -> list[Path]:
+    """Remove the figures the tool wrote in the output folder ``root`` that no report refers to any
+    more; the removed paths.
+
+    What is removed: a regular file (never a symbolic link or a folder) ending in ``.png`` or ``.svg``
+    directly in ``root/figures/`` or ``root/figures/formulas/`` that the manifest
+    (:func:`record_written`) lists, whose bytes still have the SHA-256 the manifest records (so the tool
+    wrote exactly this file), that no ``*.md`` or ``*.html`` report at the top of ``root`` refers to
+    (``figures/NAME`` in its text), and that was last modified before ``older_than`` (a time stamp: the
+    start of this run, so that the figures a concurrent run has just written, before its report, are
+    kept). What is never removed: a file the manifest does not list or whose bytes changed (a user's
+    own file, whatever its name), reports, ``verdicts.json`` and any other file, anything outside those
+    two folders, and anything at all when ``root/figures`` leads outside ``root``. The manifest then
+    forgets the removed files and the files that are gone or were changed.
+
+    >>> import tempfile, os
+    >>> d = Path(tempfile.mkdtemp()); (d / "figures").mkdir()
+    >>> ours, mine = d / "figures" / "x.png", d / "figures" / "holiday.png"
+    >>> atomic_write_bytes(ours, b"png"); atomic_write_bytes(mine, b"mine"); record_written(d, [ours])
+    >>> [p.name for p in remove_orphans(d)], mine.exists()
+    (['x.png'], True)
     """
     base = Path(root).resolve()
     figs = base / "figures"
     if not figs.is_dir() or figs.is_symlink() or figs.resolve().parent != base:
         return []
+    written = _read_manifest(base)
+    if not written:
+        return []
     keep = referenced_figures(base)
     removed = []
-    for sub in FIGURE_FOLDERS:
-        folder = base / sub
-        if not folder.is_dir() or folder.is_symlink():
+    for rel, digest in sorted(written.items()):
+        f = base / rel
+        if f.parent.is_symlink() or f.is_symlink() or not f.is_file() or _sha256(f) != digest:
+            del written[rel]                                    # gone, or not (any more) the tool's file
             continue
-        for f in sorted(folder.iterdir()):
-            rel = f.relative_to(base).as_posix()
-            if f.suffix not in GENERATED_FIGURES or rel in keep or f.is_symlink() or not f.is_file():
-                continue
-            if older_than is not None and f.stat().st_mtime >= older_than:
-                continue
-            try:
-                f.unlink()
-            except OSError:
-                continue
-            removed.append(f)
+        if f.suffix not in GENERATED_FIGURES or rel in keep:
+            continue
+        if older_than is not None and f.stat().st_mtime >= older_than:
+            continue
+        try:
+            f.unlink()
+        except OSError:
+            continue
+        del written[rel]
+        removed.append(f)
+    try:
+        _write_manifest(base, written)
+    except (OSError, AnalysisError):
+        pass
     return removed
