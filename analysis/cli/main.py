@@ -230,8 +230,9 @@ def main(argv: Sequence[str] | None = None, *, extra_modules: Sequence[str] = ()
             return _internal(fail, exc)
         name = exc.filename if isinstance(exc.filename, str) else ""
         shown = name if len(name) <= 60 else name[:40] + "..." + name[-15:]
-        return fail(f"the file name {shown!r} is too long for the file system (a name at most 255 bytes, a path "
-                    "at most 4096): give a shorter path", "input", 2)
+        what = f"the file name {shown!r}" if shown else "a file name"
+        return fail(f"{what} is too long for the file system (a name at most 255 bytes, a path at most 4096): "
+                    "give a shorter path", "input", 2)
     except (RecursionError, MemoryError) as exc:
         return fail(f"the input is too large or nested too deeply ({type(exc).__name__}): give a smaller input",
                     "limit", 2)
