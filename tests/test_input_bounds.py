@@ -63,3 +63,47 @@ def test_a_chain_of_where_definitions_is_bounded(capsys):
     assert "degree up to" in line and "limit 'degree'" in line
     line = _error(capsys, "symbol", "--mask", "b0**3", "--where", "b0=z**1000")
     assert "degree up to 3000" in line
+
+
+def test_a_matrix_file_is_read_within_its_byte_limit(capsys, tmp_path, monkeypatch):
+    import analysis.cli.jsr as jsr_cli
+
+    monkeypatch.setattr(jsr_cli, "MAX_FILE_BYTES", 100)
+    line = _error(capsys, "jsr", "/dev/zero")                   # size 0 by stat, endless when read
+    assert "larger than the limit of 100 bytes" in line
+    big = tmp_path / "big.json"
+    big.write_text("[[[" + "9" * 5000 + "]]]", encoding="utf-8")
+    monkeypatch.setattr(jsr_cli, "MAX_FILE_BYTES", 10_000)
+    err = _json_error(capsys, "jsr", "--json", str(big))
+    assert err["kind"] == "limit" and "5000 digits" in err["message"]
+
+
+def test_a_golden_file_over_its_limit_is_refused(tmp_path, monkeypatch):
+    import analysis.cli.report as report_cli
+    import analysis.json_input as json_input
+
+    g = tmp_path / "golden.json"
+    g.write_text('{"papers": {}, "pad": "' + "x" * 200 + '"}', encoding="utf-8")
+    monkeypatch.setattr(json_input, "MAX_VERDICTS_BYTES", 100)
+    with pytest.raises(Exception, match="larger than the limit of 100 bytes"):
+        report_cli._read_golden(g)
+
+
+_PAPER = '[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n'
+
+
+@pytest.mark.parametrize("body,message", [
+    ('[[claims]]\nid = "c1"\nstatement = "s"\nkind = "vertex"\nlattice = "triangle"\ncentre = ' + "9" * 5000
+     + '\nedge = "3/8; 1/n"\nvalence = "4"\nproperty = "eigen-conditions"\n', "5000 digits"),
+    ('[schemes.s]\nmask = ["1/2", "1", "1/2"]\nstart = -1\n[[claims]]\nid = "c1"\nstatement = "s"\n'
+     'kind = "sum rules"\nscheme = ["s"]\nfactors = 1\n', "in quotes"),
+    ('[schemes.s]\nmask = ["z", "1-z"]\nstart = 0\nparameters = { z = "(-1/4, 1/4)" }\n[[claims]]\nid = "c1"\n'
+     'statement = "s"\nkind = "sum rules"\nfactors = 1\n', "'z' is the variable of the symbol: rename it"),
+    ('[schemes.s]\nmask = ["pi", "1-pi"]\nstart = 0\nparameters = { pi = "(-1/4, 1/4)" }\n[[claims]]\nid = "c1"\n'
+     'statement = "s"\nkind = "sum rules"\nfactors = 1\n', "'pi' is a constant"),
+], ids=["long-integer", "scheme-list", "parameter-z", "parameter-pi"])
+def test_paper_fields_of_the_wrong_size_or_type_say_what_to_write(capsys, tmp_path, body, message):
+    f = tmp_path / "p.toml"
+    f.write_text(_PAPER + body, encoding="utf-8")
+    line = _error(capsys, "report", str(f), "--output", str(tmp_path / "out"))
+    assert message in line and "internal error" not in line

@@ -656,10 +656,12 @@ def as_expr(x: Any, *, what: str = "", names: Mapping[str, sp.Expr] | None = Non
         return read_expression(x, what=what, names=names, free=free, allow_infinity=allow_infinity)
     if isinstance(x, bool):
         raise InputError(f"{x!r} is not a number", "value")
-    if isinstance(x, int):
-        return sp.Integer(x)
-    if isinstance(x, Fraction):
-        return sp.Rational(x.numerator, x.denominator)
+    if isinstance(x, (int, Fraction)):
+        r = sp.Rational(x.numerator, x.denominator)
+        if _bits(r) > LIMITS.bits:
+            raise InputError(f"{what or 'a number'} of {_bits(r)} bits exceeds the limit {LIMITS.bits} bits "
+                             "(limit 'bits'): give a number of fewer digits", "limit")
+        return r
     if isinstance(x, (list, tuple, dict, set, frozenset, bytes)):
         raise InputError(f"expected one number or formula, not a {type(x).__name__}", "value")
     try:
