@@ -107,3 +107,21 @@ def test_paper_fields_of_the_wrong_size_or_type_say_what_to_write(capsys, tmp_pa
     f.write_text(_PAPER + body, encoding="utf-8")
     line = _error(capsys, "report", str(f), "--output", str(tmp_path / "out"))
     assert message in line and "internal error" not in line
+
+
+@pytest.mark.parametrize("x,y,extra,message", [
+    ("w=0:1/8:100000", "v=0:1/8:3", [], "100000 points for w exceed the limit 257 per axis"),
+    ("w=0:1/8:200", "v=0:1/8:200", [], "200 x 200 = 40000 points exceeds the limit 10000"),
+    ("w=0:1/8:3", "v=0:1/8:3", ["--workers", "1000"], "--workers must be between 1 and 64"),
+], ids=["axis", "grid", "workers"])
+def test_atlas_sizes_are_refused_before_the_work(capsys, x, y, extra, message):
+    line = _error(capsys, "atlas", "--mask", "-w,0,1/2+v,1,1/2+v,0,-w", "--start", "-3", "--x", x, "--y", y,
+                  "--no-progress", *extra)
+    assert message in line
+
+
+def test_the_atlas_library_refuses_too_many_workers():
+    from analysis.regularity.atlas import _check_executor
+
+    with pytest.raises(Exception, match="1000 workers exceed the limit 64"):
+        _check_executor("local", 1000)
