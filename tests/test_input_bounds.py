@@ -101,7 +101,9 @@ _PAPER = '[paper]\nid = "991"\ntitle = "t"\ncitation = "c"\n'
      'statement = "s"\nkind = "sum rules"\nfactors = 1\n', "'z' is the variable of the symbol: rename it"),
     ('[schemes.s]\nmask = ["pi", "1-pi"]\nstart = 0\nparameters = { pi = "(-1/4, 1/4)" }\n[[claims]]\nid = "c1"\n'
      'statement = "s"\nkind = "sum rules"\nfactors = 1\n', "'pi' is a constant"),
-], ids=["long-integer", "scheme-list", "parameter-z", "parameter-pi"])
+    ('[schemes.s]\nmask = ["subs(w**2000, w, w**2000)", "1"]\nstart = 0\n[[claims]]\nid = "c1"\n'
+     'statement = "s"\nkind = "sum rules"\nfactors = 1\n', "limit 'degree'"),
+], ids=["long-integer", "scheme-list", "parameter-z", "parameter-pi", "subs-coefficient"])
 def test_paper_fields_of_the_wrong_size_or_type_say_what_to_write(capsys, tmp_path, body, message):
     f = tmp_path / "p.toml"
     f.write_text(_PAPER + body, encoding="utf-8")
