@@ -196,7 +196,7 @@ def test_cli_json(capsys):
     (["--x", "s=0:1:2", "--y", "t=0:1:2", "--refine", "-1"], "--refine must be between 0 and 8"),
     (["--x", "s=0:1:2", "--y", "t=0:1:2", "--budget", "x"], "--budget must be a number"),
     (["--x", "s=0:1:2", "--y", "t=0:1:2", "--executor", "mpi"], "unknown executor"),
-    (["--x", "s=0:1:2", "--y", "t=0:1:2", "--workers", "0"], "--workers must be >= 1"),
+    (["--x", "s=0:1:2", "--y", "t=0:1:2", "--workers", "0"], "--workers must be between 1 and 64"),
     (["--x", "s=0:1:2", "--y", "s=0:1:2"], "must be different"),
 ])
 def test_cli_bad_input(capsys, argv, message):

@@ -39,6 +39,10 @@ class Limits:
     bits: int = 13_000
     #: polynomial degree of the formula in its names (``(1+z)**40`` has degree 40)
     degree: int = 2_000
+    #: degree of the polynomial of ``CRootOf(POLY, k)`` (isolating roots of degree 40 takes seconds)
+    crootof: int = 24
+    #: calls of ``diff`` in one formula (each nested derivative multiplies the size of the result)
+    diffs: int = 6
     #: characters of a name
     name: int = 64
     #: coefficients of a mask, entries of a stencil, values of a list typed in one option

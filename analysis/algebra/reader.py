@@ -71,6 +71,7 @@ Python Language Reference, "Full grammar specification" (the ``eval`` input mode
 from __future__ import annotations
 
 import ast
+import math
 import re
 from fractions import Fraction
 from typing import Any, Callable, Mapping
@@ -176,17 +177,48 @@ def _bits(x: sp.Rational) -> int:
     return max(int(x.p).bit_length(), int(x.q).bit_length())
 
 
-def _degree(e: sp.Expr) -> int:
-    """A cheap bound of the polynomial degree of ``e`` in its free symbols (0 for numbers)."""
+def _degree(e: sp.Expr, weights: Mapping[sp.Symbol, int] | None = None) -> int:
+    """A cheap bound of the polynomial degree of ``e`` in its free symbols (0 for numbers); a
+    symbol in ``weights`` counts with its weight (the degree of what will be substituted for it)."""
     if e.is_Number or not e.free_symbols:
         return 0
     if e.is_Symbol:
-        return 1
+        return weights.get(e, 1) if weights else 1
     if e.is_Pow and e.exp.is_Rational:
-        return abs(int(e.exp.p)) * _degree(e.base)
+        return abs(int(e.exp.p)) * _degree(e.base, weights)
     if e.is_Mul:
-        return sum(_degree(a) for a in e.args)
-    return max((_degree(a) for a in e.args), default=0)
+        return sum(_degree(a, weights) for a in e.args)
+    return max((_degree(a, weights) for a in e.args), default=0)
+
+
+def substitute(e: sp.Expr, defs: Mapping[sp.Symbol, sp.Expr], *, what: str = "the formula",
+               limits: Limits = LIMITS) -> sp.Expr:
+    """``e.subs(defs)``, refused before the substitution when the degree of the result, bounded by
+    the degrees of ``e`` and of the definitions, exceeds ``limits.degree`` (chains of definitions
+    ``b0 = b1**2, b1 = b2**2, ...`` multiply degrees).
+
+    >>> b, z = sp.symbols("b z")
+    >>> substitute(b**2 + 1, {b: 1 + z})
+    (z + 1)**2 + 1
+    >>> substitute(b**2, {b: z**1500}, what="the mask")
+    Traceback (most recent call last):
+    ...
+    analysis.algebra.limits.InputError: the mask after substituting the definitions has degree up to 3000: the limit is 2000 (limit 'degree'); use definitions of lower degree
+    """
+    used = check_substitution(e, defs, what=what, limits=limits)
+    return e.subs(used) if used else e
+
+
+def check_substitution(e: sp.Expr, defs: Mapping[sp.Symbol, sp.Expr], *, what: str = "the formula",
+                       limits: Limits = LIMITS) -> dict:
+    """The definitions ``e`` uses, after checking the degree bound of :func:`substitute`."""
+    used = {d: v for d, v in defs.items() if d in e.free_symbols}
+    if used:
+        d = _degree(e, {k: _degree(v) for k, v in used.items()})
+        if d > limits.degree:
+            raise InputError(f"{what} after substituting the definitions has degree up to {d}: the limit is "
+                             f"{limits.degree} (limit 'degree'); use definitions of lower degree", "limit")
+    return used
 
 
 class _Reader:
@@ -225,8 +257,12 @@ class _Reader:
         m = re.search(r"[eE]([+-]?\d+)\Z", src)
         if m and abs(int(m.group(1))) > self.limits.exponent:
             self.limit("exponent", "the exponent", abs(int(m.group(1))), self.limits.exponent)
+        # bits of the exact value, bounded before it is built: digits + |exponent| decimal digits
+        bits = math.ceil((digits + (abs(int(m.group(1))) if m else 0)) * math.log2(10))
+        if bits > self.limits.bits + 4:
+            self.limit("bits", "a number of about", f"{bits} bits", f"{self.limits.bits} bits")
         f = Fraction(src.replace("_", ""))
-        return sp.Rational(f.numerator, f.denominator)
+        return self.check(sp.Rational(f.numerator, f.denominator))
 
     def name(self, node: ast.Name) -> sp.Expr:
         nm = node.id
@@ -326,12 +362,19 @@ class _Reader:
             P = sp.Poly(poly_expr, *syms, domain=sp.QQ)
         except (sp.PolynomialError, sp.CoercionFailed, sp.GeneratorsError):
             self.fail("CRootOf needs a polynomial with rational coefficients", "value")
-        if not 1 <= P.degree() <= 256:
-            self.limit("degree", "the degree of the CRootOf polynomial", P.degree(), 256)
+        if not 1 <= P.degree() <= self.limits.crootof:
+            self.limit("crootof", "the degree of the CRootOf polynomial", P.degree(), self.limits.crootof)
         k = int(index)
         if not -P.degree() <= k < P.degree():
             self.fail(f"CRootOf index {k}: a polynomial of degree {P.degree()} has roots 0..{P.degree() - 1}", "value")
         return sp.CRootOf(P.as_expr(), k)
+
+    def subs_degree(self, args) -> None:
+        """The degree of ``subs(EXPR, NAME, VALUE, ...)`` is at most deg(EXPR) * max deg(VALUE):
+        bounded before sympy substitutes (and later code expands) the result."""
+        d = _degree(args[0]) * max([1] + [_degree(v) for v in args[2::2]])
+        if d > self.limits.degree:
+            self.limit("degree", "the degree of the subs(...) result, up to", d, self.limits.degree)
 
     # ------------------------------------------------------------------ the walk
     def run(self) -> sp.Expr:
@@ -357,6 +400,10 @@ class _Reader:
             self.limit("depth", "the nesting depth", "of the formula", self.limits.depth)
         except ValueError as exc:      # e.g. an integer literal over Python's digit limit
             self.fail(str(exc).split("\n")[0], "limit")
+        diffs = sum(isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and n.func.id == "diff"
+                    and "diff" not in self.names for n in ast.walk(tree))
+        if diffs > self.limits.diffs:
+            self.limit("diffs", "the number of diff(...) calls", diffs, self.limits.diffs)
         return self.check_finite(self.build(tree.body))
 
     def syntax_hint(self, src: str, exc: SyntaxError) -> str:
@@ -469,6 +516,8 @@ class _Reader:
             def apply_call(o, fn=fn, n=n, name=f.id):
                 args = o[-n:]
                 del o[-n:]
+                if name == "subs" and fn is _subs:
+                    self.subs_degree(args)
                 try:
                     r = fn(*args)
                 except InputError:
@@ -607,10 +656,12 @@ def as_expr(x: Any, *, what: str = "", names: Mapping[str, sp.Expr] | None = Non
         return read_expression(x, what=what, names=names, free=free, allow_infinity=allow_infinity)
     if isinstance(x, bool):
         raise InputError(f"{x!r} is not a number", "value")
-    if isinstance(x, int):
-        return sp.Integer(x)
-    if isinstance(x, Fraction):
-        return sp.Rational(x.numerator, x.denominator)
+    if isinstance(x, (int, Fraction)):
+        r = sp.Rational(x.numerator, x.denominator)
+        if _bits(r) > LIMITS.bits:
+            raise InputError(f"{what or 'a number'} of {_bits(r)} bits exceeds the limit {LIMITS.bits} bits "
+                             "(limit 'bits'): give a number of fewer digits", "limit")
+        return r
     if isinstance(x, (list, tuple, dict, set, frozenset, bytes)):
         raise InputError(f"expected one number or formula, not a {type(x).__name__}", "value")
     try:

@@ -113,7 +113,7 @@ from .kinds import Domain, SchemeSpec, kind_class
 from .kinds.base import rules_symbol
 from .kinds.other import PYTHON_MODES, Python
 from .model import Claim, Paper
-from ..algebra.reader import as_expr
+from ..algebra.reader import LIMITS, as_expr
 from .names import check_claim_id, check_slug
 
 __all__ = ["load_paper", "parse_paper", "golden_file", "CLAIM_META", "MAX_BYTES", "MAX_DEPTH"]
@@ -160,6 +160,21 @@ def load_paper(path: str | Path, *, catalogue: Catalogue | None = None, python: 
     return parse_paper(text, str(p), catalogue=catalogue, python=python)
 
 
+#: Names that are constants in every formula (or reserved), never parameters.
+_CONSTANT_NAMES = {"pi": "3.14159...", "E": "2.71828...", "I": "the imaginary unit", "oo": "infinity",
+                   "inf": "infinity", "nan": "not a number", "zoo": "complex infinity"}
+
+
+def _check_digit_runs(text: str, where: str) -> None:
+    """A number of more than ``LIMITS.digits`` digits is refused before TOML converts it (Python
+    stops at 4 300 digits with an internal error; the reader allows ``LIMITS.digits``)."""
+    m = re.search(r"\d{%d,}" % (LIMITS.digits + 1), text)
+    if m:
+        line = text.count("\n", 0, m.start()) + 1
+        raise AnalysisError(f"{where}, line {line}: a number of {len(m.group())} digits exceeds the limit "
+                            f"{LIMITS.digits} digits (limit 'digits'): write it with fewer digits")
+
+
 def _syntax_error(exc: Exception, text: str, where: str) -> AnalysisError:
     msg = str(exc)
     m = re.search(r"\(at line (\d+), column \d+\)", msg)
@@ -197,6 +212,11 @@ def _scheme(name: str, t: Mapping, where: str, catalogue: Catalogue | None) -> S
     params = t.get("parameters", {})
     if not isinstance(params, Mapping):
         raise AnalysisError(f"{w}: parameters = {{ name = \"domain\" }}")
+    for k in params:
+        if k == "z" or k in _CONSTANT_NAMES:
+            raise AnalysisError(f"{w}: the parameter {k!r} is "
+                                + ("a constant (" + _CONSTANT_NAMES[k] + ")" if k in _CONSTANT_NAMES
+                                   else "the variable of the symbol") + f": rename it, e.g. {k}1 or w")
     try:
         domains = {k: Domain.parse(v) for k, v in params.items()}
     except AnalysisError as exc:
@@ -356,10 +376,14 @@ def parse_paper(text: str, where: str = "<paper file>", *, catalogue: Catalogue 
     """
     if python not in PYTHON_MODES:
         raise ValueError(f"python must be one of {PYTHON_MODES}, not {python!r}")
+    _check_digit_runs(text, where)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         raise _syntax_error(exc, text, where) from None
+    except ValueError:      # an integer over Python's conversion limit (digits joined by '_')
+        raise AnalysisError(f"{where}: a number has more than {LIMITS.digits} digits: write it with fewer "
+                            "digits (or as a formula in quotes, e.g. \"10**40\")") from None
     except RecursionError:
         raise AnalysisError(f"{where}: arrays or tables nested too deeply (at most {MAX_DEPTH} levels): "
                             "write the values as flat lists and tables") from None

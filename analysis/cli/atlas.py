@@ -60,7 +60,7 @@ def _ascii_map(result, js) -> list[str]:
 def cmd_atlas(args) -> None:
     import sympy as sp
 
-    from ..regularity.atlas import holder_atlas, parse_axis, plot_atlas
+    from ..regularity.atlas import MAX_WORKERS, holder_atlas, parse_axis, plot_atlas
     from .common import _emit, check_figure, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 
@@ -80,7 +80,7 @@ def cmd_atlas(args) -> None:
     xn, xlo, xhi, xN = parse_axis(args.x)
     yn, ylo, yhi, yN = parse_axis(args.y)
     refine = _int(args.refine, "--refine", 0, 8)
-    workers = None if args.workers is None else _int(args.workers, "--workers", 1)
+    workers = None if args.workers is None else _int(args.workers, "--workers", 1, MAX_WORKERS)
     budget = work_arg(args.budget, "--budget")
     js = [_int(t.strip(), "--j", 0, 64) for t in args.j.split(",") if t.strip()]
     if not js:
@@ -173,7 +173,7 @@ def register(subparsers) -> None:
                    help="refinement levels near C^j boundaries (default 1; 0 = plain grid)")
     s.add_argument("--executor", default="local", metavar="KIND",
                    help="local (process pool, default), serial, or dask://HOST:PORT (a running scheduler)")
-    s.add_argument("--workers", metavar="N", help="local processes (default: all cores)")
+    s.add_argument("--workers", metavar="N", help="local processes, 1 to 64 (default: all cores)")
     s.add_argument("--budget", default="2000", metavar="UNITS",
                    help=f"work budget of the joint spectral radius per point, in work units (default 2000; {WORK_HELP})")
     s.add_argument("--figure", metavar="PATH", help="write a heat map (PNG/PDF/SVG)")

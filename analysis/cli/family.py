@@ -26,6 +26,8 @@ import json
 from ..result import AnalysisError
 
 FORMAT = "subdiv-family"
+#: A family file holds one mask and its free coefficients: more is not a family file.
+MAX_FAMILY_BYTES = 1 << 20
 
 
 def _split_mask(mask) -> list[str]:
@@ -62,8 +64,9 @@ def write_family(path: str, data: dict) -> None:
 def read_family(path: str) -> dict:
     """The family stored in ``path`` (checked: format, arity, start, mask); one-line errors."""
     try:
-        with open(path, encoding="utf-8") as fh:
-            doc = json.load(fh)
+        from ..json_input import load_json
+
+        doc = load_json(path, limit=MAX_FAMILY_BYTES, what="the family file")
     except OSError as exc:
         raise AnalysisError(f"cannot read the family file {path}: {exc.strerror or exc}") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:

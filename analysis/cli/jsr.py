@@ -58,6 +58,7 @@ def read_family(path: str) -> list:
     import sympy as sp
 
     from ..algebra.reader import InputError, exact_number
+    from ..json_input import load_json
 
     try:
         size = os.path.getsize(path)
@@ -67,9 +68,9 @@ def read_family(path: str) -> list:
     if size > MAX_FILE_BYTES:
         raise AnalysisError(f"{path!r} has {size} bytes, more than the limit {MAX_FILE_BYTES}")
     try:
-        with open(path, encoding="utf-8") as f:
-            # JSON numbers with a fraction or exponent arrive as their text: read exactly below
-            data = json.load(f, parse_float=str, parse_constant=lambda c: c)
+        # JSON numbers with a fraction or exponent arrive as their text: read exactly below
+        data = load_json(path, limit=MAX_FILE_BYTES, what="the matrix file", parse_float=str,
+                         parse_constant=lambda c: c)
     except UnicodeDecodeError:
         raise AnalysisError(f"{path!r} is not a text file (not UTF-8): {_SHAPE_HINT}") from None
     except OSError as exc:

@@ -92,11 +92,12 @@ def level_scheme_from_args(args, params=None, *, keep_params: bool = False):
             raise AnalysisError("--even needs --odd as well")
         if args.even_first is not None or args.odd_first is not None:
             raise AnalysisError("--even-first/--odd-first are not available for level-dependent rules: use --first")
+        from ..algebra.reader import substitute
         from ..levels.level_dependent import _read, resolve_where
 
         defs = resolve_where(where)
-        ev = [_read(c, defs, "even stencil coefficient").subs(defs) for c in _items(args.even, "even stencil")]
-        od = [_read(c, defs, "odd stencil coefficient").subs(defs) for c in _items(args.odd, "odd stencil")]
+        ev = [substitute(_read(c, defs, "even stencil coefficient"), defs, what="an even stencil coefficient") for c in _items(args.even, "even stencil")]
+        od = [substitute(_read(c, defs, "odd stencil coefficient"), defs, what="an odd stencil coefficient") for c in _items(args.odd, "odd stencil")]
         free = sorted(set().union(*(c.free_symbols for c in ev + od)), key=lambda x: x.name)
         s = L.from_rules(ev, od, first=_int(args.first, "--first"),
                          params=[p for p in free if p.name not in ("n", "h")], slug="rules")

@@ -74,7 +74,7 @@ from ..result import CERTIFIED, NUMERICAL, AnalysisError, Result
 from ..algebra.symbol import LaurentSymbol, parse_coefficient
 from .balls import (_FUNCS, _ball, _fraction, _to_ball, arb_abs, ball, ball_to_interval,  # noqa: F401
                     workprec)
-from ..algebra.reader import as_expr, read_expression
+from ..algebra.reader import as_expr, check_substitution, read_expression, substitute
 
 #: ``h = 2^-n``, the variable of all expansions.
 H = sp.Symbol("h", positive=True)
@@ -211,7 +211,8 @@ def resolve_where(where) -> dict:
             cyc = path[path.index(s):] + [s]
             raise AnalysisError("cycle in the --where definitions: " + " -> ".join(x.name for x in cyc))
         e = raw[s]
-        e = e.subs({d: visit(d, path + [s]) for d in e.free_symbols if d in raw})
+        e = substitute(e, {d: visit(d, path + [s]) for d in e.free_symbols if d in raw},
+                       what=f"--where {s.name}")
         done[s] = e
         return e
 
@@ -301,6 +302,7 @@ class LevelDependentScheme:
         """
         defs = resolve_where(where)
         e = _read(expr, defs, "symbol")
+        check_substitution(e, defs, what="the symbol")
         num, den = sp.fraction(sp.together(e))
         try:
             dp, np_ = sp.Poly(den, _Z), sp.Poly(num, _Z)
@@ -326,7 +328,7 @@ class LevelDependentScheme:
 
     @classmethod
     def _build(cls, coeffs, start, defs, params, kw) -> "LevelDependentScheme":
-        coeffs = [to_h(as_expr(c).subs(defs), kw.get("arity", 2)) for c in coeffs]
+        coeffs = [to_h(substitute(as_expr(c), defs, what="a coefficient"), kw.get("arity", 2)) for c in coeffs]
         # h (2 + 1/h) -> 2h + 1; (cos(h) + 4/h^3)/(16/h^3) -> (h^3 cos(h) + 4)/16: no negative power of h is left
         coeffs = [sp.cancel(c) if c.is_rational_function(H) or _negative_h_power(c) else c for c in coeffs]
         while len(coeffs) > 1 and coeffs[-1] == 0:

@@ -53,6 +53,7 @@ import sympy as sp
 
 from .balls import _ball, ball_to_interval, workprec
 from .level_dependent import H, N, _Z, _grows, _read, resolve_where
+from ..algebra.reader import substitute
 from ..algebra.symbol import LaurentSymbol
 from ..jsonable import fmt_upper
 from ..result import CERTIFIED, INCONCLUSIVE, AnalysisError, Result
@@ -155,7 +156,7 @@ class RationalLevelScheme:
     def from_symbol(cls, expr, *, where=None, params=None, slug: str = "symbol") -> "RationalLevelScheme":
         """From a symbol in ``z`` and ``n`` (``--where`` helpers and ``--param`` values substituted)."""
         defs = resolve_where(where)
-        e = _read(expr, defs, "symbol").subs(defs)
+        e = substitute(_read(expr, defs, "symbol"), defs, what="the symbol")
         if params:
             e = e.subs({sp.Symbol(k): v for k, v in params.items()})
         num, den = sp.fraction(sp.together(e))
@@ -173,7 +174,7 @@ class RationalLevelScheme:
     @classmethod
     def from_mask(cls, coeffs, start: int = 0, *, where=None, params=None, slug: str = "mask") -> "RationalLevelScheme":
         defs = resolve_where(where)
-        cs = [_read(c, defs, "coefficient").subs(defs) if isinstance(c, str) else as_expr(c) for c in coeffs]
+        cs = [substitute(_read(c, defs, "coefficient"), defs, what="a coefficient") if isinstance(c, str) else as_expr(c) for c in coeffs]
         if params:
             cs = [c.subs({sp.Symbol(k): v for k, v in params.items()}) for c in cs]
         cs = [sp.cancel(sp.together(_in_n_and_h(c))) for c in cs]

@@ -87,6 +87,13 @@ DEFAULT_J_LEVELS = (1, 2, 3)
 #: Refuse atlases with more refinement levels than this (each level can quadruple the points).
 MAX_REFINE_LEVELS = 8
 
+#: Grid points of one axis, and of the whole grid (before refinement): each point is a Hölder analysis.
+MAX_AXIS_POINTS = 257
+MAX_GRID_POINTS = 10_000
+
+#: Local worker processes at most (``--workers``).
+MAX_WORKERS = 64
+
 
 # --------------------------------------------------------------------------------------------
 # input
@@ -134,10 +141,24 @@ def parse_axis(text: str) -> tuple[str, sp.Rational, sp.Rational, int]:
         raise bad
     lo, hi = _parse_range(parts[:2], name)
     try:
-        n = int(parts[2])
+        n = int(parts[2]) if len(parts[2]) <= 12 else MAX_AXIS_POINTS + 1
     except ValueError:
         raise AnalysisError(f"the number of points of {name} must be an integer, not {parts[2]!r}") from None
+    _check_points(name, n)
     return name, lo, hi, n
+
+
+def _check_points(name: str, n) -> None:
+    """At most :data:`MAX_AXIS_POINTS` points on one axis.
+
+    >>> _check_points("w", 100000)
+    Traceback (most recent call last):
+    ...
+    analysis.result.AnalysisError: 100000 points for w exceed the limit 257 per axis: use fewer, e.g. w=LO:HI:33, and --refine to add points where the verdicts change
+    """
+    if isinstance(n, int) and not isinstance(n, bool) and n > MAX_AXIS_POINTS:
+        raise AnalysisError(f"{n} points for {name} exceed the limit {MAX_AXIS_POINTS} per axis: use fewer, e.g. "
+                            f"{name}=LO:HI:33, and --refine to add points where the verdicts change")
 
 
 # --------------------------------------------------------------------------------------------
@@ -258,6 +279,8 @@ def _dask_address(executor: str) -> str:
 def _check_executor(executor, workers) -> str:
     if workers is not None and (not isinstance(workers, int) or isinstance(workers, bool) or workers < 1):
         raise AnalysisError(f"workers must be a positive integer, not {workers!r}")
+    if workers is not None and workers > MAX_WORKERS:
+        raise AnalysisError(f"{workers} workers exceed the limit {MAX_WORKERS}: use fewer (default: all cores)")
     if executor is None or executor in ("serial", "none"):
         return "serial"
     if executor == "local":
@@ -286,7 +309,7 @@ class _Runner:
         if self.kind == "local":
             from concurrent.futures import ProcessPoolExecutor
 
-            n = self.workers or os.cpu_count() or 1
+            n = min(self.workers or os.cpu_count() or 1, MAX_WORKERS)
             self._pool = ProcessPoolExecutor(max_workers=n)
             self.description = f"local processes ({n})"
         elif self.kind == "dask":
@@ -451,6 +474,10 @@ def holder_atlas(symbol: LaurentSymbol, p1: str, range1, p2: str, range2, *, n1:
             raise AnalysisError(f"one point for {p} needs low == high; use at least 2 points")
         if n > 1 and lo == hi:
             raise AnalysisError(f"the range of {p} is a single value: use 1 point or low < high")
+        _check_points(p, n)
+    if n1 * n2 > MAX_GRID_POINTS:
+        raise AnalysisError(f"a grid of {n1} x {n2} = {n1 * n2} points exceeds the limit {MAX_GRID_POINTS}: "
+                            "use fewer points per axis, and --refine to add points where the verdicts change")
     if not isinstance(refine_levels, int) or isinstance(refine_levels, bool) \
             or not 0 <= refine_levels <= MAX_REFINE_LEVELS:
         raise AnalysisError(f"refine_levels must be an integer between 0 and {MAX_REFINE_LEVELS}")

@@ -23,11 +23,11 @@ True
 from __future__ import annotations
 
 import html as _html
-import json
 from collections import Counter
 from pathlib import Path
 from typing import Mapping, Sequence
 
+from ..json_input import MAX_VERDICTS_BYTES, load_json
 from .files import atomic_write_text, inside
 
 __all__ = ["siblings", "render_index"]
@@ -35,7 +35,7 @@ __all__ = ["siblings", "render_index"]
 
 def _read(outdir: Path) -> dict:
     try:
-        data = json.loads(inside(outdir, "verdicts.json").read_text(encoding="utf-8"))
+        data = load_json(inside(outdir, "verdicts.json"), limit=MAX_VERDICTS_BYTES, what="the combined verdicts file")
     except (OSError, UnicodeDecodeError, ValueError, RecursionError):
         return {}
     papers = data.get("papers") if isinstance(data, dict) else None

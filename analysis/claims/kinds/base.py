@@ -334,6 +334,9 @@ class Kind:
         self.scheme: SchemeSpec | None = None
         if self.uses_scheme:
             s = self.fields["scheme"]
+            if not isinstance(s, str):
+                raise AnalysisError(f"{where}: scheme must be the name of one scheme in quotes, e.g. "
+                                    f"scheme = \"{next(iter(schemes), 'four-point')}\", not a {type(s).__name__}")
             if s not in schemes:
                 raise AnalysisError(f"{where}: unknown scheme {s!r} (the file defines: "
                                     f"{', '.join(sorted(schemes)) or 'no scheme'})")
