@@ -13,7 +13,8 @@ import json
 import pytest
 import sympy as sp
 
-from analysis.regularity.atlas import _disagree, evaluate_point, holder_atlas, parse_axis, plot_atlas
+from analysis.regularity.atlas import _disagree, evaluate_point, holder_atlas, plot_atlas
+from analysis.regularity.atlas_axes import parse_axis
 from analysis.cli import main
 from analysis.result import CERTIFIED, AnalysisError
 from analysis.algebra.symbol import LaurentSymbol

@@ -80,7 +80,7 @@ def test_a_matrix_file_is_read_within_its_byte_limit(capsys, tmp_path, monkeypat
 
 def test_a_golden_file_over_its_limit_is_refused(tmp_path, monkeypatch):
     import analysis.cli.report as report_cli
-    import analysis.json_input as json_input
+    import analysis.algebra.json_input as json_input
 
     g = tmp_path / "golden.json"
     g.write_text('{"papers": {}, "pad": "' + "x" * 200 + '"}', encoding="utf-8")

@@ -16,7 +16,7 @@ Examples
 >>> check_claim_id("<b>y</b>", "claim #3")  # doctest: +ELLIPSIS
 Traceback (most recent call last):
 ...
-analysis.result.AnalysisError: claim #3: id '<b>y</b>' ... letters, digits, spaces and . , : ; _ - + = ^ / ( ) > ' *, ...
+analysis.result.AnalysisError: claim #3: id '<b>y</b>' ... letters, digits, spaces and . , : ; _ - + = ^ / ( ) > ' * #, ...
 >>> check_slug("/tmp/evil", "[paper] id", '"900"')
 Traceback (most recent call last):
 ...
@@ -58,7 +58,7 @@ def check_slug(name, what: str, example: str, max_length: int = MAX_LENGTH) -> s
 #: the characters of a claim id (the paper's numbering: ``Theorem5.2(m=1)``, ``(3.9)-(3.10)/P2n+1``,
 #: ``Sect2.2(u>0)``): letters, digits, spaces and this punctuation — no ``<``, ``&``, ``|``, ``[``,
 #: backtick or quote that could become markup in a report, no control characters
-CLAIM_ID = re.compile(r"[\w(][\w .,:;+=^/()>'*-]*")
+CLAIM_ID = re.compile(r"[\w(][\w .,:;+=^/()>'*#-]*")
 #: the longest claim id
 MAX_CLAIM_ID = 120
 
@@ -70,6 +70,6 @@ def check_claim_id(cid, where: str) -> str:
             or cid != cid.strip() or ".." in cid):
         shown = repr(cid) if not isinstance(cid, str) or len(cid) <= 80 else repr(cid[:77] + "...")
         raise AnalysisError(f"{where}: id {shown} is not a claim id: write 1 to {MAX_CLAIM_ID} letters, digits, "
-                            "spaces and . , : ; _ - + = ^ / ( ) > ' *, starting with a letter, digit or '(', without "
+                            "spaces and . , : ; _ - + = ^ / ( ) > ' * #, starting with a letter, digit or '(', without "
                             "'..' (e.g. \"Theorem3.1\" or \"Lemma2(m=1)\")")
     return cid

@@ -60,7 +60,8 @@ def _ascii_map(result, js) -> list[str]:
 def cmd_atlas(args) -> None:
     import sympy as sp
 
-    from ..regularity.atlas import MAX_WORKERS, holder_atlas, parse_axis, plot_atlas
+    from ..regularity.atlas import MAX_WORKERS, holder_atlas, plot_atlas
+    from ..regularity.atlas_axes import parse_axis
     from .common import _emit, check_figure, scheme_arity, scheme_from_args
     from ..jsonable import fmt_lower, fmt_upper
 

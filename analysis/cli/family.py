@@ -64,7 +64,7 @@ def write_family(path: str, data: dict) -> None:
 def read_family(path: str) -> dict:
     """The family stored in ``path`` (checked: format, arity, start, mask); one-line errors."""
     try:
-        from ..json_input import load_json
+        from ..algebra.json_input import load_json
 
         doc = load_json(path, limit=MAX_FAMILY_BYTES, what="the family file")
     except OSError as exc:

@@ -58,7 +58,7 @@ def read_family(path: str) -> list:
     import sympy as sp
 
     from ..algebra.reader import InputError, exact_number
-    from ..json_input import load_json
+    from ..algebra.json_input import load_json
 
     try:
         size = os.path.getsize(path)

@@ -231,7 +231,7 @@ def _write_combined(outdir: Path, data: dict, merge: bool) -> None:
     combined = inside(outdir, "verdicts.json")
     if combined.exists() and merge:       # keep the other papers' entries
         try:
-            from ..json_input import MAX_VERDICTS_BYTES, load_json
+            from ..algebra.json_input import MAX_VERDICTS_BYTES, load_json
 
             old = load_json(combined, limit=MAX_VERDICTS_BYTES, what="the combined verdicts file")
         except (OSError, UnicodeDecodeError, json.JSONDecodeError, RecursionError):   # replaced by a fresh one
@@ -395,7 +395,7 @@ def _read_golden(path: Path) -> dict:
     if not path.is_file():
         raise AnalysisError(f"no golden file {path}: run `subdiv report ... --update-golden` and review it")
     try:
-        from ..json_input import MAX_VERDICTS_BYTES, load_json
+        from ..algebra.json_input import MAX_VERDICTS_BYTES, load_json
 
         golden = load_json(path, limit=MAX_VERDICTS_BYTES, what="the golden file")
     except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:

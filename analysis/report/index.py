@@ -27,7 +27,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Mapping, Sequence
 
-from ..json_input import MAX_VERDICTS_BYTES, load_json
+from ..algebra.json_input import MAX_VERDICTS_BYTES, load_json
 from .files import atomic_write_text, inside
 
 __all__ = ["siblings", "render_index"]

@@ -22,8 +22,8 @@ from __future__ import annotations
 import json
 import os
 
-from .algebra.limits import LIMITS, InputError
-from .result import AnalysisError
+from .limits import LIMITS, InputError
+from ..result import AnalysisError
 
 __all__ = ["read_text_limited", "load_json", "MIB", "MAX_VERDICTS_BYTES"]
 
