@@ -33,3 +33,20 @@ def run_cli(capfd, *argv: str) -> Ran:
         code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     out, err = capfd.readouterr()
     return Ran(code, out, err)
+
+
+def run_main(capsys, *argv) -> tuple[int, str, str]:
+    """``main(ARGV)`` (arguments turned into text) with ``capsys``: (exit code, stdout, stderr)."""
+    from analysis.cli import main
+
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def assert_one_line_error(code: int, err: str, *needles: str) -> None:
+    """Exit code 2 and one line ``subdiv: error: ...`` holding every needle."""
+    assert code == 2, err
+    assert err.startswith("subdiv: error: ") and err.count("\n") == 1, err
+    for n in needles:
+        assert n in err, err

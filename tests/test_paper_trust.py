@@ -16,6 +16,7 @@ import uuid
 import pytest
 
 from analysis.cli import main
+from tests.cli_run import assert_one_line_error, run_main
 
 HEAD = '''
 [paper]
@@ -53,17 +54,7 @@ def _paper(tmp_path, pid="666", evaluator=None, args=(), name="p.toml"):
     return f
 
 
-def _run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def _one_line_error(code, err, *needles):
-    assert code == 2, err
-    assert err.startswith("subdiv: error: ") and err.count("\n") == 1, err
-    for n in needles:
-        assert n in err, err
+_run, _one_line_error = run_main, assert_one_line_error
 
 
 @pytest.fixture

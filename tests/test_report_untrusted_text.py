@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from analysis.cli import main
+from tests.cli_run import assert_one_line_error, run_main
 
 PAPER = '''
 [paper]
@@ -39,17 +39,7 @@ def _paper(tmp_path, title='"<script>alert(1)</script> | x"', cid='"Factors(u>0)
     return f
 
 
-def _run(capsys, *argv):
-    code = main([str(a) for a in argv])
-    out, err = capsys.readouterr()
-    return code, out, err
-
-
-def _one_line_error(code, err, *needles):
-    assert code == 2, err
-    assert err.startswith("subdiv: error: ") and err.count("\n") == 1, err
-    for n in needles:
-        assert n in err, err
+_run, _one_line_error = run_main, assert_one_line_error
 
 
 def test_paper_text_cannot_become_markup_in_the_markdown_report(tmp_path, capsys):
