@@ -212,6 +212,8 @@ def vertex_results(rules: LocalRules, n: int, closed: dict | None = None) -> dic
             cm = dict(cm, injective=None)
             if not cm["regular"]:
                 cm["jacobian_sign_change"] = jacobian_sign_change(rules, n, ball, cm["precision_bits"])
+                if not cm["jacobian_sign_change"]:
+                    cm["regular"] = None            # not proven regular, not proven irregular either
         out["characteristic_map"] = Result(value=cm["injective"], status=cm["status"],
                                            witness={k: v for k, v in cm.items() if k not in ("status", "method")},
                                            provenance={"method": cm["method"], "precision_bits": cm["precision_bits"]})
